@@ -1,0 +1,1 @@
+//! sliding-ladder: the equations of "Torque Analyses of a Sliding Ladder" as checked code.
