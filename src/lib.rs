@@ -1,1 +1,7 @@
 //! sliding-ladder: the equations of "Torque Analyses of a Sliding Ladder" as checked code.
+
+pub mod ladder;
+pub mod registry;
+pub mod scalar;
+pub mod system;
+pub mod vector;

@@ -1,0 +1,1 @@
+//! Jensen (Appendix A), eqs. (42)-(63), as printed.

@@ -1,0 +1,262 @@
+//! Running the checks: floats against an error model, exact rationals with zero residual, and the
+//! Schwartz-Zippel bound of every exact check.
+//!
+//! Float verdict: a chain passes when every side differs from the first by at most
+//! `TOLERANCE_FACTOR · u · (e_side + e_first)`, where `e` is the running error bound of each side
+//! (see [`Bound`]); the reported residual is the largest difference in units of that bound.
+//! `TOLERANCE_FACTOR = 4`: the bounds are first-order, and the f64 values take their derivatives
+//! through num-dual while the bounds go through `Jet<Bound>`, whose operation order differs, so
+//! the two evaluations can each be off by up to their own bound (factor 2), doubled for the
+//! dropped second-order terms.
+
+use super::sample::{
+    exact_ladder, particle_system, LadderSample, ParticleSample, RawLadder, RawParticles,
+};
+use super::sample::{EXTRA, LADDER_DRAWS, PER_PARTICLE};
+use super::{Chain, Check, Eval, Role};
+use crate::scalar::{Bound, Degree, Rational, Scalar, UNIT_ROUNDOFF};
+use num_traits::Zero;
+use rand::Rng;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+/// A float chain passes when its scaled residual is at most this.
+pub const TOLERANCE_FACTOR: f64 = 4.0;
+/// Exact coordinates are drawn from integers of magnitude below 2^62 (masses, m, l, g positive):
+/// the smallest of those sets has 2^62 − 1 elements.
+pub const EXACT_SET_SIZE: f64 = 4_611_686_018_427_387_903.0;
+
+/// How much checking to do.
+#[derive(Clone, Copy, Debug)]
+pub struct Config {
+    /// Random float states per check.
+    pub float_cases: usize,
+    /// Random exact points per check.
+    pub exact_points: usize,
+    /// Seed of the random states (reproducible runs).
+    pub seed: u64,
+}
+
+impl Default for Config {
+    fn default() -> Self {
+        Config {
+            float_cases: 200,
+            exact_points: 3,
+            seed: 2019,
+        }
+    }
+}
+
+/// What one check found.
+#[derive(Clone, Debug, Default)]
+pub struct CheckReport {
+    /// The check's name.
+    pub name: &'static str,
+    /// Float states evaluated.
+    pub float_cases: usize,
+    /// Float states at which some chain exceeded its tolerance.
+    pub float_failures: usize,
+    /// Largest residual over all float states, in units of the error bound.
+    pub max_scaled_residual: f64,
+    /// Where the largest residual occurred (chain side label).
+    pub worst_side: &'static str,
+    /// Exact points evaluated.
+    pub exact_points: usize,
+    /// Exact points at which some chain had a nonzero residual.
+    pub exact_failures: usize,
+    /// Labels of misprinted sides, and whether each was shown to fail at every exact point.
+    pub misprints: Vec<(&'static str, bool)>,
+    /// Largest numerator degree of a residual (Schwartz-Zippel).
+    pub degree: u32,
+    /// Probability that a false identity passed all exact points: (degree/set size)^points.
+    pub sz_bound: f64,
+    /// For on-shell checks: whether every exact off-shell point failed, as it must.
+    pub off_shell_fails: Option<bool>,
+}
+
+impl CheckReport {
+    /// True when the check holds as it should.
+    pub fn passed(&self) -> bool {
+        self.float_failures == 0
+            && self.exact_failures == 0
+            && self.misprints.iter().all(|m| m.1)
+            && self.off_shell_fails != Some(false)
+    }
+}
+
+/// The largest scaled residual of float chains (f64 values, `Bound` errors), and its side label.
+pub fn float_residual(values: &[Chain<f64>], bounds: &[Chain<Bound>]) -> (f64, &'static str) {
+    let mut worst = (0.0, "");
+    for (cv, cb) in values.iter().zip(bounds) {
+        let Some(base) = cv.iter().position(|s| s.role != Role::Misprint) else {
+            continue;
+        };
+        for (i, (sv, sb)) in cv.iter().zip(cb).enumerate() {
+            if i == base || sv.role == Role::Misprint {
+                continue;
+            }
+            let diff = (sv.value - cv[base].value).abs();
+            let tol = UNIT_ROUNDOFF * (sb.value.e + cb[base].value.e);
+            let scaled = if diff == 0.0 {
+                0.0
+            } else if tol > 0.0 && diff.is_finite() {
+                diff / tol
+            } else {
+                f64::INFINITY
+            };
+            if !(scaled <= worst.0) {
+                worst = (scaled, sv.label);
+            }
+        }
+    }
+    worst
+}
+
+/// Exact verdict: (every non-misprint side equal to the first, per misprint side whether it differs).
+pub fn exact_residual(chains: &[Chain<Rational>]) -> (bool, Vec<(&'static str, bool)>) {
+    let mut all_equal = true;
+    let mut misprints = Vec::new();
+    for c in chains {
+        let Some(base) = c.iter().position(|s| s.role != Role::Misprint) else {
+            continue;
+        };
+        for s in c {
+            let differs = !(s.value.clone() - c[base].value.clone()).is_zero();
+            if s.role == Role::Misprint {
+                misprints.push((s.label, differs));
+            } else if differs {
+                all_equal = false;
+            }
+        }
+    }
+    (all_equal, misprints)
+}
+
+fn residual_degree(chains: &[Chain<Degree>]) -> u32 {
+    let mut d = 0;
+    for c in chains {
+        for s in c {
+            d = d.max((s.value - c[0].value).num);
+        }
+    }
+    d
+}
+
+fn exact_ladder_draw(rng: &mut impl Rng, sort: LadderSample) -> [Rational; LADDER_DRAWS] {
+    let big = 1i64 << 62;
+    let mut signed_nonzero = || loop {
+        let v = rng.gen_range(-big..=big);
+        if v != 0 {
+            break v;
+        }
+    };
+    let (t, rate) = (signed_nonzero(), signed_nonzero());
+    let _ = sort;
+    let mut positive = || rng.gen_range(1..big);
+    let (m, l, g) = (positive(), positive(), positive());
+    let mut signed = || rng.gen_range(-big..=big);
+    let (accel, jerk) = (signed(), signed());
+    [t, m, l, g, rate, accel, jerk].map(Rational::int)
+}
+
+fn exact_particle_draw(rng: &mut impl Rng) -> (usize, Vec<Rational>) {
+    let big = 1i64 << 62;
+    let n = rng.gen_range(1..=8);
+    let values = (0..n * PER_PARTICLE + EXTRA)
+        .map(|i| {
+            let v = if i < n * PER_PARTICLE && i % PER_PARTICLE == 0 {
+                rng.gen_range(1..big)
+            } else {
+                rng.gen_range(-big..=big)
+            };
+            Rational::int(v)
+        })
+        .collect();
+    (n, values)
+}
+
+/// Run one check.
+pub fn run_check(check: &Check, cfg: &Config) -> CheckReport {
+    let mut rng = ChaCha8Rng::seed_from_u64(cfg.seed ^ (check.name.len() as u64) << 32);
+    let mut rep = CheckReport {
+        name: check.name,
+        ..Default::default()
+    };
+    let mut misprint_ok: Vec<(&'static str, bool)> = Vec::new();
+    let mut note_misprints = |found: Vec<(&'static str, bool)>| {
+        for (k, (label, differs)) in found.into_iter().enumerate() {
+            match misprint_ok.get_mut(k) {
+                Some(m) => m.1 &= differs,
+                None => misprint_ok.push((label, differs)),
+            }
+        }
+    };
+    match check.eval {
+        Eval::Ladder(sort, f) => {
+            for _ in 0..cfg.float_cases {
+                let ((l, s), (lb, sb)) = RawLadder::draw(&mut rng).build(sort);
+                record_float(&mut rep, (f.float)(&l, &s), (f.bound)(&lb, &sb));
+            }
+            let degree_chains = {
+                let (l, s) = exact_ladder(sort, [Degree::variable(); LADDER_DRAWS]);
+                (f.degree)(&l, &s)
+            };
+            rep.degree = residual_degree(&degree_chains);
+            let mut off_shell_all_fail = true;
+            for _ in 0..cfg.exact_points {
+                let draw = exact_ladder_draw(&mut rng, sort);
+                let (l, s) = exact_ladder(sort, draw.clone());
+                let (ok, mis) = exact_residual(&(f.exact)(&l, &s));
+                rep.exact_failures += usize::from(!ok);
+                note_misprints(mis);
+                if sort.on_shell() {
+                    let (l, s) = exact_ladder(LadderSample::Kinematic, draw);
+                    let (ok_off, _) = exact_residual(&(f.exact)(&l, &s));
+                    off_shell_all_fail &= !ok_off;
+                }
+            }
+            if sort.on_shell() {
+                rep.off_shell_fails = Some(off_shell_all_fail);
+            }
+        }
+        Eval::Particles(sort, f) => {
+            for _ in 0..cfg.float_cases {
+                let raw = RawParticles::draw(&mut rng);
+                let ((sys, p), (sysb, pb)) = super::sample::float_particles(sort, &raw);
+                record_float(&mut rep, (f.float)(&sys, &p), (f.bound)(&sysb, &pb));
+            }
+            for _ in 0..cfg.exact_points {
+                let (n, values) = exact_particle_draw(&mut rng);
+                let (sys, p) = particle_system(sort, n, &values);
+                let (ok, mis) = exact_residual(&(f.exact)(&sys, &p));
+                rep.exact_failures += usize::from(!ok);
+                note_misprints(mis);
+                let vars = vec![Degree::variable(); values.len()];
+                let (sd, pd) = particle_system(sort, n, &vars);
+                rep.degree = rep.degree.max(residual_degree(&(f.degree)(&sd, &pd)));
+            }
+            let _: Option<ParticleSample> = None;
+        }
+    }
+    rep.exact_points = cfg.exact_points;
+    rep.misprints = misprint_ok;
+    rep.sz_bound = (f64::from(rep.degree.max(1)) / EXACT_SET_SIZE).powi(cfg.exact_points as i32);
+    rep
+}
+
+fn record_float(rep: &mut CheckReport, values: Vec<Chain<f64>>, bounds: Vec<Chain<Bound>>) {
+    rep.float_cases += 1;
+    let (scaled, label) = float_residual(&values, &bounds);
+    if !(scaled <= TOLERANCE_FACTOR) {
+        rep.float_failures += 1;
+    }
+    if !(scaled <= rep.max_scaled_residual) {
+        rep.max_scaled_residual = scaled;
+        rep.worst_side = label;
+    }
+}
+
+/// Convenience for tests: the value of a side as f64.
+pub fn side_f64<S: Scalar>(s: &super::Side<S>) -> f64 {
+    s.value.to_f64()
+}

@@ -1,0 +1,214 @@
+//! The registry: one entry per numbered equation (1)-(90) of the note.
+//!
+//! An entry names the equation (number, section, title, kind, printed LaTeX), the functions that
+//! encode it, and its checks. A check is a generic function that evaluates the printed forms of
+//! the display, side by side with independent references, as *chains* of values that must all be
+//! equal; it is instantiated for every scalar type by the [`ladder_fns`] and [`particle_fns`]
+//! macros, so the same code runs in f64, with running error bounds, in exact rationals and in
+//! degree-counting mode. [`check`] runs the checks; [`sample`] draws the states.
+
+pub mod check;
+mod general_eqs;
+mod jensen_eqs;
+mod ladder_eqs;
+mod latex;
+mod milne_eqs;
+pub mod sample;
+pub mod side;
+
+pub use latex::printed_latex;
+pub use sample::{LadderSample, ParticleSample};
+pub use side::{corrected, misprint, printed, reference, vector_chains, Chain, Role, Side};
+
+use crate::ladder::{Ladder, State};
+use crate::scalar::{Bound, Degree, Rational};
+use crate::system::{Point, System};
+use serde::Serialize;
+
+/// What sort of statement an equation is, which decides how it is checked.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Kind {
+    /// Introduces a symbol; checked against an independent model of the same quantity.
+    Definition,
+    /// Holds for any θ, θ̇, θ̈ (and any m, l, g).
+    Kinematic,
+    /// Holds only on the equation of motion (5) (and, where stated, the energy (10)); also shown
+    /// to fail off it.
+    OnShell,
+    /// Holds for any system of particles and any reference point P.
+    General,
+    /// Milne's name for one of ours; checked by evaluating Milne's expression.
+    Notation,
+}
+
+impl Kind {
+    /// The kebab-case name used in the docs and the JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Definition => "definition",
+            Kind::Kinematic => "kinematic",
+            Kind::OnShell => "on-shell",
+            Kind::General => "general",
+            Kind::Notation => "notation",
+        }
+    }
+}
+
+/// The chains of one ladder check, in one scalar type.
+pub type LadderChains<S> = fn(&Ladder<S>, &State<S>) -> Vec<Chain<S>>;
+/// The chains of one particle-system check, in one scalar type.
+pub type ParticleChains<S> = fn(&System<S>, &Point<S>) -> Vec<Chain<S>>;
+
+/// A ladder check instantiated in every scalar type.
+#[derive(Clone, Copy)]
+pub struct LadderFns {
+    /// In f64 (derivatives by num-dual).
+    pub float: LadderChains<f64>,
+    /// With running error bounds.
+    pub bound: LadderChains<Bound>,
+    /// In exact rationals.
+    pub exact: LadderChains<Rational>,
+    /// In degree-counting mode (Schwartz-Zippel).
+    pub degree: LadderChains<Degree>,
+}
+
+/// A particle-system check instantiated in every scalar type.
+#[derive(Clone, Copy)]
+pub struct ParticleFns {
+    /// In f64 (derivatives by num-dual).
+    pub float: ParticleChains<f64>,
+    /// With running error bounds.
+    pub bound: ParticleChains<Bound>,
+    /// In exact rationals.
+    pub exact: ParticleChains<Rational>,
+    /// In degree-counting mode (Schwartz-Zippel).
+    pub degree: ParticleChains<Degree>,
+}
+
+/// Instantiate a generic ladder check `fn f<S: Scalar>(&Ladder<S>, &State<S>) -> Vec<Chain<S>>`.
+#[macro_export]
+macro_rules! ladder_fns {
+    ($f:path) => {
+        $crate::registry::LadderFns {
+            float: $f,
+            bound: $f,
+            exact: $f,
+            degree: $f,
+        }
+    };
+}
+
+/// Instantiate a generic particle check `fn f<S: Scalar>(&System<S>, &Point<S>) -> Vec<Chain<S>>`.
+#[macro_export]
+macro_rules! particle_fns {
+    ($f:path) => {
+        $crate::registry::ParticleFns {
+            float: $f,
+            bound: $f,
+            exact: $f,
+            degree: $f,
+        }
+    };
+}
+
+/// How one check evaluates.
+#[derive(Clone, Copy)]
+pub enum Eval {
+    /// At ladder states of the given sort.
+    Ladder(LadderSample, LadderFns),
+    /// At particle systems of the given sort.
+    Particles(ParticleSample, ParticleFns),
+}
+
+/// One check of an equation.
+#[derive(Clone, Copy)]
+pub struct Check {
+    /// What it checks, in a few words.
+    pub name: &'static str,
+    /// How it evaluates.
+    pub eval: Eval,
+}
+
+/// A misprint of the note: the printed form fails; the corrected form is checked in its place.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct Erratum {
+    /// The printed form, LaTeX.
+    pub printed: &'static str,
+    /// The corrected form, LaTeX.
+    pub corrected: &'static str,
+    /// Why, in a sentence.
+    pub why: &'static str,
+}
+
+/// One numbered equation of the note.
+#[derive(Clone)]
+pub struct Equation {
+    /// Its number, 1..=90.
+    pub number: u32,
+    /// The section of the note ("2.1", "A.1", "B.7", ...).
+    pub section: &'static str,
+    /// A one-line title.
+    pub title: &'static str,
+    /// Its kind.
+    pub kind: Kind,
+    /// The Rust functions that encode it (paths below the crate root).
+    pub functions: &'static [&'static str],
+    /// Its checks.
+    pub checks: Vec<Check>,
+    /// Present when the printed form is wrong.
+    pub erratum: Option<Erratum>,
+}
+
+impl Equation {
+    /// The printed LaTeX, as in the note.
+    pub fn latex(&self) -> &'static str {
+        printed_latex(self.number)
+    }
+}
+
+/// Shorthand used by the equation tables.
+pub(crate) fn eq(
+    number: u32,
+    section: &'static str,
+    title: &'static str,
+    kind: Kind,
+    functions: &'static [&'static str],
+    checks: Vec<Check>,
+) -> Equation {
+    Equation {
+        number,
+        section,
+        title,
+        kind,
+        functions,
+        checks,
+        erratum: None,
+    }
+}
+
+/// A ladder check.
+pub(crate) fn on_ladder(name: &'static str, sample: LadderSample, f: LadderFns) -> Check {
+    Check {
+        name,
+        eval: Eval::Ladder(sample, f),
+    }
+}
+
+/// A particle-system check.
+pub(crate) fn on_particles(name: &'static str, sample: ParticleSample, f: ParticleFns) -> Check {
+    Check {
+        name,
+        eval: Eval::Particles(sample, f),
+    }
+}
+
+/// Every equation of the note, in order.
+pub fn equations() -> Vec<Equation> {
+    let mut all = ladder_eqs::equations();
+    all.extend(general_eqs::equations());
+    all.extend(jensen_eqs::equations());
+    all.extend(milne_eqs::equations());
+    all.sort_by_key(|e| e.number);
+    all
+}

@@ -1,0 +1,326 @@
+//! The random states every check is evaluated at, in floats and in exact integers.
+//!
+//! A float sample is drawn in plain f64 (what a user would compute with) and carried both as f64
+//! and as [`Bound`], whose error bound gives the check its tolerance. An exact sample is a set of
+//! random integers, turned into a state by the same generic builder in [`Rational`] (to evaluate)
+//! and in [`Degree`] (to bound the degree for the Schwartz-Zippel lemma). Exact points on the
+//! unit circle come from sin θ = 2t/(1+t²), cos θ = (1−t²)/(1+t²).
+
+use crate::ladder::{Ladder, State};
+use crate::scalar::{Bound, Scalar};
+use crate::system::{Particle, Point, Spin, System};
+use crate::vector::Vec3;
+use rand::Rng;
+
+/// The sorts of ladder state.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LadderSample {
+    /// Any θ, θ̇, θ̈: the identity must hold for all motions.
+    Kinematic,
+    /// θ̈ from (5), θ̇ free (any start, any energy).
+    OnShell,
+    /// θ̈ from (5) and θ̇² from (10): the note's start at rest upright.
+    OnShellFromRest,
+}
+
+impl LadderSample {
+    /// True for the on-shell sorts (checked also off shell, where they must fail).
+    pub fn on_shell(self) -> bool {
+        self != LadderSample::Kinematic
+    }
+}
+
+/// The sorts of particle system and reference point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ParticleSample {
+    /// Any particles, any moving point P.
+    General,
+    /// P rides on the centre of mass.
+    PAtCm,
+    /// P at rest (v_P = a_P = 0) somewhere.
+    PFixed,
+    /// P passing through the origin at this instant (x_P = 0), moving.
+    PAtOrigin,
+    /// The centre of mass at the origin at this instant and P on it.
+    CmAtOriginPAtCm,
+    /// No total force: Σ m_i a_i = 0.
+    ForceFree,
+    /// No total torque about the origin: every a_i parallel to x_i.
+    TorqueFree,
+    /// A planar rigid body turning about the moving contact point P (rolling, eq. 42).
+    RollingAboutP,
+    /// A planar rigid body with spin ω, ω̇ (eq. 58); P at rest.
+    PlanarRigid,
+}
+
+/// Number of random f64 draws a ladder sample uses.
+pub const LADDER_DRAWS: usize = 7;
+/// Number of random values a particle sample uses per particle and for the rest.
+pub const PER_PARTICLE: usize = 13;
+/// Values after the particles: P's motion (12) and ω, ω̇ (2).
+pub const EXTRA: usize = 14;
+
+/// Raw random inputs of a float ladder sample: θ ∈ [0, π/2), m, l, g > 0, and three numbers in
+/// [−1, 1] that scale θ̇, θ̈, θ⃛ to the ladder's own time scale √(l/g).
+#[derive(Clone, Debug)]
+pub struct RawLadder {
+    /// θ, rad.
+    pub theta: f64,
+    /// m, l, g.
+    pub mlg: [f64; 3],
+    /// Unit-free rate, acceleration and jerk.
+    pub unit: [f64; 3],
+}
+
+impl RawLadder {
+    /// Draw one: m, l, g log-uniform over [1e-6, 1e6].
+    pub fn draw(rng: &mut impl Rng) -> Self {
+        let mut logu = || 10f64.powf(rng.gen_range(-6.0..6.0));
+        let mlg = [logu(), logu(), logu()];
+        RawLadder {
+            theta: rng.gen_range(0.0..std::f64::consts::FRAC_PI_2),
+            mlg,
+            unit: [
+                rng.gen_range(-1.0..1.0),
+                rng.gen_range(-1.0..1.0),
+                rng.gen_range(-1.0..1.0),
+            ],
+        }
+    }
+
+    /// The state in f64 and with error bounds (same values).
+    pub fn build(
+        &self,
+        sort: LadderSample,
+    ) -> ((Ladder<f64>, State<f64>), (Ladder<Bound>, State<Bound>)) {
+        let [m, l, g] = self.mlg;
+        let rate_unit = (g / l).sqrt();
+        let (s, c) = self.theta.sin_cos();
+        let rate = match sort {
+            // θ̇² = (3g/2l)(1 − cos θ) = (3g/l) sin²(θ/2): no cancellation near θ = 0.
+            LadderSample::OnShellFromRest => (3.0 * g / l).sqrt() * (self.theta / 2.0).sin(),
+            _ => 3.0 * self.unit[0] * rate_unit,
+        };
+        let accel = 3.0 * self.unit[1] * g / l;
+        let jerk = 3.0 * self.unit[2] * (g / l) * rate_unit;
+        // libm's sin, cos and sqrt are within one ulp (two roundoffs); θ̇ from rest is a product
+        // of three such results.
+        let float = float_state(sort, [m, l, g], [s, c, rate, accel, jerk], |x, _| x);
+        let bound = float_state(sort, [m, l, g], [s, c, rate, accel, jerk], Bound::inexact);
+        let rate_units = if sort == LadderSample::OnShellFromRest {
+            7.0
+        } else {
+            0.0
+        };
+        let mut bound = bound;
+        bound.1.rate = Bound::inexact(rate, rate_units);
+        (float, bound)
+    }
+}
+
+fn float_state<S: Scalar>(
+    sort: LadderSample,
+    [m, l, g]: [f64; 3],
+    [s, c, rate, accel, jerk]: [f64; 5],
+    mk: impl Fn(f64, f64) -> S,
+) -> (Ladder<S>, State<S>) {
+    let ladder = Ladder {
+        m: mk(m, 0.0),
+        l: mk(l, 0.0),
+        g: mk(g, 0.0),
+    };
+    let mut st = State {
+        sin: mk(s, 2.0),
+        cos: mk(c, 2.0),
+        rate: mk(rate, 0.0),
+        accel: mk(accel, 0.0),
+        jerk: mk(jerk, 0.0),
+    };
+    if sort.on_shell() {
+        st.accel = crate::ladder::energy::angular_acceleration(&ladder, &st);
+    }
+    (ladder, st)
+}
+
+/// Build an exact ladder state from seven random integers (t, m, l, g, θ̇, θ̈, θ⃛) given in any
+/// scalar type. From rest, g is solved from (10) so that θ̇ stays rational: g = 2lθ̇²/(3(1−cos θ)).
+pub fn exact_ladder<S: Scalar>(sort: LadderSample, v: [S; LADDER_DRAWS]) -> (Ladder<S>, State<S>) {
+    let [t, m, l, g, rate, accel, jerk] = v;
+    let one = S::int(1);
+    let den = one.clone() + t.clone() * t.clone();
+    let sin = S::int(2) * t.clone() / den.clone();
+    let cos = (one.clone() - t.clone() * t) / den;
+    let g = match sort {
+        LadderSample::OnShellFromRest => {
+            S::int(2) * l.clone() * rate.clone() * rate.clone() / (S::int(3) * (one - cos.clone()))
+        }
+        _ => g,
+    };
+    let ladder = Ladder { m, l, g };
+    let mut st = State {
+        sin,
+        cos,
+        rate,
+        accel,
+        jerk,
+    };
+    if sort.on_shell() {
+        st.accel = crate::ladder::energy::angular_acceleration(&ladder, &st);
+    }
+    (ladder, st)
+}
+
+/// Raw random inputs of a particle sample: the number of particles and their values in order
+/// (per particle: m, x, v, a, j; then P's x, v, a, j; then ω, ω̇).
+#[derive(Clone, Debug)]
+pub struct RawParticles {
+    /// Number of particles, 1..=8.
+    pub n: usize,
+    /// `n·PER_PARTICLE + EXTRA` values.
+    pub values: Vec<f64>,
+}
+
+impl RawParticles {
+    /// Draw one: masses log-uniform over [1e-3, 1e3], everything else uniform in [−10, 10].
+    pub fn draw(rng: &mut impl Rng) -> Self {
+        let n = rng.gen_range(1..=8);
+        let values = (0..n * PER_PARTICLE + EXTRA)
+            .map(|i| {
+                if i < n * PER_PARTICLE && i % PER_PARTICLE == 0 {
+                    10f64.powf(rng.gen_range(-3.0..3.0))
+                } else {
+                    rng.gen_range(-10.0..10.0)
+                }
+            })
+            .collect();
+        RawParticles { n, values }
+    }
+}
+
+/// Reads sample values in order.
+struct Reader<'a, S> {
+    values: &'a [S],
+    at: usize,
+}
+
+impl<S: Scalar> Reader<'_, S> {
+    fn scalar(&mut self) -> S {
+        let v = self.values[self.at].clone();
+        self.at += 1;
+        v
+    }
+    fn vec(&mut self, planar: bool) -> Vec3<S> {
+        let (x, y, z) = (self.scalar(), self.scalar(), self.scalar());
+        Vec3::new(x, y, if planar { S::int(0) } else { z })
+    }
+}
+
+/// Build a particle system and reference point of the given sort from values in any scalar type
+/// (f64 and `Bound` from a [`RawParticles`], rationals and degrees from random integers).
+/// `values` holds `n·PER_PARTICLE + EXTRA` numbers.
+pub fn particle_system<S: Scalar>(
+    sort: ParticleSample,
+    n: usize,
+    values: &[S],
+) -> (System<S>, Point<S>) {
+    use ParticleSample::*;
+    let planar = matches!(sort, RollingAboutP | PlanarRigid);
+    let mut r = Reader { values, at: 0 };
+    let mut particles: Vec<Particle<S>> = (0..n)
+        .map(|_| Particle {
+            m: r.scalar(),
+            x: r.vec(planar),
+            v: r.vec(planar),
+            a: r.vec(planar),
+            j: r.vec(planar),
+        })
+        .collect();
+    let mut p = Point {
+        x: r.vec(planar),
+        v: r.vec(planar),
+        a: r.vec(planar),
+        j: r.vec(planar),
+    };
+    let (omega, omega_dot) = (r.scalar(), r.scalar());
+    let mut spin_of = None;
+    let z = Vec3::along_z(S::int(1));
+    match sort {
+        General => {}
+        PAtCm | CmAtOriginPAtCm | PFixed | PAtOrigin | ForceFree | TorqueFree => {}
+        RollingAboutP => {
+            // Rolling without slipping: the body's material point at P is at rest, so every
+            // particle moves as v_i = ω ẑ × (x_i − x_P); P itself (the contact) moves with v_P.
+            let w = z.scale(&omega);
+            for q in &mut particles {
+                q.v = w.cross(&(q.x.clone() - p.x.clone()));
+            }
+            spin_of = Some(Spin {
+                omega: omega.clone(),
+                omega_dot: omega_dot.clone(),
+            });
+        }
+        PlanarRigid => {
+            // A rigid body: v_i = v_c + ω ẑ × r_i, a_i = a_c + ω̇ ẑ × r_i − ω² r_i, and the jerk
+            // that follows with ω̈ = 0; the centre's motion is P's random motion, P then fixed.
+            let sys = System {
+                particles: particles.clone(),
+                spin: None,
+            };
+            let cm = sys.centre_of_mass();
+            for q in &mut particles {
+                let r_i = q.x.clone() - cm.clone();
+                let r_dot = z.scale(&omega).cross(&r_i);
+                let w2 = omega.clone() * omega.clone();
+                q.v = p.v.clone() + r_dot.clone();
+                q.a = p.a.clone() + z.scale(&omega_dot).cross(&r_i) - r_i.scale(&w2);
+                q.j = p.j.clone() + z.scale(&omega_dot).cross(&r_dot)
+                    - r_i.scale(&(S::int(2) * omega.clone() * omega_dot.clone()))
+                    - r_dot.scale(&w2);
+            }
+            p = Point::fixed(p.x);
+            spin_of = Some(Spin { omega, omega_dot });
+        }
+    }
+    let mut sys = System {
+        particles,
+        spin: spin_of,
+    };
+    match sort {
+        PAtCm => p = sys.cm_point(),
+        PFixed => p = Point::fixed(p.x),
+        PAtOrigin => p.x = Vec3::zero(),
+        CmAtOriginPAtCm => {
+            let cm = sys.centre_of_mass();
+            for q in &mut sys.particles {
+                q.x = q.x.clone() - cm.clone();
+            }
+            p = sys.cm_point();
+        }
+        ForceFree => {
+            let a_cm = sys.cm_acceleration();
+            for q in &mut sys.particles {
+                q.a = q.a.clone() - a_cm.clone();
+            }
+        }
+        TorqueFree => {
+            // a_i = λ_i x_i, with λ_i the first random component of a_i: x_i × m_i a_i = 0.
+            for q in &mut sys.particles {
+                q.a = q.x.scale(&q.a.x);
+            }
+        }
+        _ => {}
+    }
+    (sys, p)
+}
+
+/// The float sample of a raw particle draw, as f64 and with (zero) input error bounds.
+pub fn float_particles(
+    sort: ParticleSample,
+    raw: &RawParticles,
+) -> ((System<f64>, Point<f64>), (System<Bound>, Point<Bound>)) {
+    let bounds: Vec<Bound> = raw.values.iter().map(|&v| Bound::exact(v)).collect();
+    (
+        particle_system(sort, raw.n, &raw.values),
+        particle_system(sort, raw.n, &bounds),
+    )
+}
