@@ -7,10 +7,10 @@
 //! | operation | bound on the error, in units of u           |
 //! |-----------|---------------------------------------------|
 //! | a ± b     | e_a + e_b + \|a ± b\|                        |
-//! | a · b     | \|b\| e_a + \|a\| e_b + \|a b\|               |
+//! | a · b     | \|b\| e_a + \|a\| e_b + u e_a e_b + \|a b\|     |
 //! | a / b     | (e_a + \|a/b\| e_b)/\|b\| + \|a/b\|           |
 //!
-//! These are first-order bounds (terms in u² are dropped). Evaluating both sides of an identity
+//! These are first-order bounds (terms in u² are dropped, except in the product, where an operand that is exactly zero would otherwise hide its own error). Evaluating both sides of an identity
 //! in `Bound` gives the size of the terms that cancel, which is what a float check's tolerance
 //! must be made of. A hand-written type because no crate offers running error bounds over a
 //! user-supplied expression.

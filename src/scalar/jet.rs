@@ -1,5 +1,9 @@
 //! `Jet<T>`: first-order dual numbers `re + eps ε` (ε² = 0) over any [`Scalar`].
 //!
+//! The operations follow num-dual's `Dual` step by step (same formulas, same order), so that a
+//! `Jet<Bound>` evaluation is a running error bound of exactly the float operations a
+//! `num_dual::Dual64` evaluation performs.
+//!
 //! Used for exact time derivatives (`Jet<Rational>`), for the error bound of a derivative
 //! (`Jet<Bound>`), for the degree of a derivative (`Jet<Degree>`) and nested (`Jet<Jet<T>>`) for
 //! second derivatives and Lagrange's equation.
@@ -40,8 +44,8 @@ impl<T: Scalar> Sub for Jet<T> {
 impl<T: Scalar> Mul for Jet<T> {
     type Output = Self;
     fn mul(self, o: Self) -> Self {
-        // (a + a'ε)(b + b'ε) = ab + (a b' + a' b) ε
-        let eps = self.re.clone() * o.eps + self.eps * o.re.clone();
+        // (a + a'ε)(b + b'ε) = ab + (a' b + b' a) ε, in num-dual's operation order
+        let eps = self.eps * o.re.clone() + o.eps * self.re.clone();
         Jet::new(self.re * o.re, eps)
     }
 }
@@ -49,9 +53,11 @@ impl<T: Scalar> Mul for Jet<T> {
 impl<T: Scalar> Div for Jet<T> {
     type Output = Self;
     fn div(self, o: Self) -> Self {
-        // (a + a'ε)/(b + b'ε) = a/b + (a' b - a b')/b² ε
-        let re = self.re.clone() / o.re.clone();
-        let eps = (self.eps - re.clone() * o.eps) / o.re;
+        // (a + a'ε)/(b + b'ε) = a/b + (a' b − b' a)/b² ε, in num-dual's operation order
+        // (through 1/b), so that a `Jet<Bound>` bounds exactly what `Dual64` computes.
+        let inv = T::int(1) / o.re.clone();
+        let re = self.re.clone() * inv.clone();
+        let eps = (self.eps * o.re.clone() - o.eps * self.re) * inv.clone() * inv;
         Jet::new(re, eps)
     }
 }

@@ -97,6 +97,9 @@ where
     fn int(n: i64) -> Self {
         Dual::from_re(T::int(n))
     }
+    fn ratio(n: i64, d: i64) -> Self {
+        Dual::from_re(T::ratio(n, d))
+    }
     fn lift(re: Self, eps: Self) -> Dual<Dual<T>> {
         Dual::new(re, eps)
     }
