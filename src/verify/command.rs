@@ -1,0 +1,84 @@
+//! The `verify` and `errata` subcommands: printing and exit codes.
+
+use super::errata::errata;
+use super::{counts, table, verify_all, EquationResult, Status};
+use crate::registry::check::Config;
+use serde_json::json;
+use std::process::ExitCode;
+use std::time::Instant;
+
+/// Run `ladder verify`; exit 0 when every equation is verified, a definition or a recorded
+/// erratum, 1 otherwise.
+pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
+    let t = Instant::now();
+    let results = verify_all(cfg);
+    let docs = crate::docs::check_book(&crate::docs::default_dir());
+    let seconds = t.elapsed().as_secs_f64();
+    let (v, e, d, f) = counts(&results);
+    if json_out {
+        let out = json!({
+            "equations": results,
+            "summary": {"verified": v, "erratum": e, "definition": d, "failed": f,
+                         "float_cases_per_check": cfg.float_cases, "exact_points_per_check": cfg.exact_points,
+                         "seed": cfg.seed, "seconds": seconds},
+            "docs": {"problems": docs.problems, "sections": docs.equations_found, "examples_run": docs.examples_run},
+        });
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&out).expect("JSON of plain data")
+        );
+    } else {
+        print!("{}", table(&results));
+        println!("{}", summary_line(&results, cfg, seconds));
+        println!(
+            "docs: {} equations found in equations/*.md, {} example rows run, {} problems",
+            docs.equations_found,
+            docs.examples_run,
+            docs.problems.len()
+        );
+        for p in &docs.problems {
+            println!("  ! {p}");
+        }
+    }
+    if f == 0 && docs.problems.is_empty() && results.len() == 90 {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
+}
+
+/// One line: the counts and the work done.
+pub fn summary_line(results: &[EquationResult], cfg: &Config, seconds: f64) -> String {
+    let (v, e, d, f) = counts(results);
+    let checks: usize = results.iter().map(|r| r.checks.len()).sum();
+    let exact = results.iter().filter(|r| r.exact).count();
+    let worst_sz = results.iter().map(|r| r.sz_bound).fold(0.0, f64::max);
+    format!(
+        "{} equations: {v} verified, {e} erratum, {d} definition, {f} failed; {checks} checks, {} float cases each, {exact} exact (Schwartz-Zippel bound ≤ {worst_sz:.1e}); {seconds:.2} s",
+        results.len(),
+        cfg.float_cases
+    )
+}
+
+/// Run `ladder errata`.
+pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
+    let list = errata(cfg);
+    if json_out {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&json!({"errata": list})).expect("JSON of plain data")
+        );
+    } else {
+        for r in &list {
+            println!("({}) printed:   {}", r.number, r.printed);
+            println!("     corrected: {}", r.corrected);
+            println!("     why: {}", r.why);
+            println!(
+                "     residual at an exact point: printed {} (= {:.6e}), corrected {}",
+                r.printed_residual_exact, r.printed_residual, r.corrected_residual
+            );
+        }
+    }
+    let _ = Status::Erratum;
+    ExitCode::SUCCESS
+}
