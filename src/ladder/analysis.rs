@@ -134,7 +134,7 @@ pub fn solve_angular_acceleration<T: Scalar>(
     ladder: &Ladder<T>,
     st: &State<T>,
 ) -> T {
-    solve_for_accel(st, |s| {
+    solve_for_accel(ladder, st, |s| {
         let (lhs, rhs) = torque_equation(p, def, ladder, s);
         lhs - rhs
     })

@@ -107,9 +107,15 @@ impl<T: Scalar> State<T> {
 }
 
 /// Solve `r(θ̈) = 0` for θ̈, where `r` is affine in θ̈ (every torque analysis and Lagrange's
-/// equation are): θ̈ = −r(0) / (r(1) − r(0)).
-pub fn solve_for_accel<T: Scalar>(state: &State<T>, r: impl Fn(&State<T>) -> T) -> T {
+/// equation are): θ̈ = −a·r(0) / (r(a) − r(0)). The second point is the ladder's own scale
+/// a = g/l, so that r(a) − r(0) does not cancel whatever the units.
+pub fn solve_for_accel<T: Scalar>(
+    ladder: &Ladder<T>,
+    state: &State<T>,
+    r: impl Fn(&State<T>) -> T,
+) -> T {
+    let a = ladder.g.clone() / ladder.l.clone();
     let r0 = r(&state.with_accel(T::int(0)));
-    let r1 = r(&state.with_accel(T::int(1)));
-    -r0.clone() / (r1 - r0)
+    let r1 = r(&state.with_accel(a.clone()));
+    -(a * r0.clone()) / (r1 - r0)
 }

@@ -84,11 +84,11 @@ fn eq5_from_lagrange<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Vec<Chain<S>> {
         printed("(3g/4l) sin θ", angular_acceleration(l, s)),
         reference(
             "θ̈ solving (4) with the note's ℒ",
-            solve_for_accel(s, |x| lagrange_residual(&NoteLagrangian, l, x)),
+            solve_for_accel(l, s, |x| lagrange_residual(&NoteLagrangian, l, x)),
         ),
         reference(
             "θ̈ solving (4) with the particle ℒ",
-            solve_for_accel(s, |x| lagrange_residual(&ParticleLagrangian, l, x)),
+            solve_for_accel(l, s, |x| lagrange_residual(&ParticleLagrangian, l, x)),
         ),
     ]]
 }

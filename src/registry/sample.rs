@@ -53,6 +53,11 @@ pub enum ParticleSample {
     PlanarRigid,
 }
 
+/// A float ladder sample: as f64 and with error bounds.
+pub type FloatLadder = ((Ladder<f64>, State<f64>), (Ladder<Bound>, State<Bound>));
+/// A float particle sample: as f64 and with error bounds.
+pub type FloatParticles = ((System<f64>, Point<f64>), (System<Bound>, Point<Bound>));
+
 /// Number of random f64 draws a ladder sample uses.
 pub const LADDER_DRAWS: usize = 7;
 /// Number of random values a particle sample uses per particle and for the rest.
@@ -89,10 +94,7 @@ impl RawLadder {
     }
 
     /// The state in f64 and with error bounds (same values).
-    pub fn build(
-        &self,
-        sort: LadderSample,
-    ) -> ((Ladder<f64>, State<f64>), (Ladder<Bound>, State<Bound>)) {
+    pub fn build(&self, sort: LadderSample) -> FloatLadder {
         let [m, l, g] = self.mlg;
         let rate_unit = (g / l).sqrt();
         let (s, c) = self.theta.sin_cos();
@@ -143,20 +145,14 @@ fn float_state<S: Scalar>(
 }
 
 /// Build an exact ladder state from seven random integers (t, m, l, g, θ̇, θ̈, θ⃛) given in any
-/// scalar type. From rest, g is solved from (10) so that θ̇ stays rational: g = 2lθ̇²/(3(1−cos θ)).
+/// scalar type. From rest upright, g is solved from the energy of the three-particle model (not
+/// from the note's (9) or (10)) so that θ̇ stays rational: m g l = Σ m_i v_i²/2 + g Σ m_i y_i.
 pub fn exact_ladder<S: Scalar>(sort: LadderSample, v: [S; LADDER_DRAWS]) -> (Ladder<S>, State<S>) {
     let [t, m, l, g, rate, accel, jerk] = v;
     let one = S::int(1);
     let den = one.clone() + t.clone() * t.clone();
     let sin = S::int(2) * t.clone() / den.clone();
     let cos = (one.clone() - t.clone() * t) / den;
-    let g = match sort {
-        LadderSample::OnShellFromRest => {
-            S::int(2) * l.clone() * rate.clone() * rate.clone() / (S::int(3) * (one - cos.clone()))
-        }
-        _ => g,
-    };
-    let ladder = Ladder { m, l, g };
     let mut st = State {
         sin,
         cos,
@@ -164,6 +160,30 @@ pub fn exact_ladder<S: Scalar>(sort: LadderSample, v: [S; LADDER_DRAWS]) -> (Lad
         accel,
         jerk,
     };
+    let g = match sort {
+        LadderSample::OnShellFromRest => {
+            let sys = crate::ladder::particles::as_system(
+                &Ladder {
+                    m: m.clone(),
+                    l: l.clone(),
+                    g: one,
+                },
+                &st,
+            );
+            let (kinetic, height) =
+                sys.particles
+                    .iter()
+                    .fold((S::int(0), S::int(0)), |(k, h), p| {
+                        (
+                            k + p.m.clone() * p.v.dot(&p.v) / S::int(2),
+                            h + p.m.clone() * p.x.y.clone(),
+                        )
+                    });
+            kinetic / (m.clone() * l.clone() - height)
+        }
+        _ => g,
+    };
+    let ladder = Ladder { m, l, g };
     if sort.on_shell() {
         st.accel = crate::ladder::energy::angular_acceleration(&ladder, &st);
     }
@@ -314,10 +334,7 @@ pub fn particle_system<S: Scalar>(
 }
 
 /// The float sample of a raw particle draw, as f64 and with (zero) input error bounds.
-pub fn float_particles(
-    sort: ParticleSample,
-    raw: &RawParticles,
-) -> ((System<f64>, Point<f64>), (System<Bound>, Point<Bound>)) {
+pub fn float_particles(sort: ParticleSample, raw: &RawParticles) -> FloatParticles {
     let bounds: Vec<Bound> = raw.values.iter().map(|&v| Bound::exact(v)).collect();
     (
         particle_system(sort, raw.n, &raw.values),

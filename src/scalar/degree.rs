@@ -45,6 +45,8 @@ impl Add for Degree {
 
 impl Sub for Degree {
     type Output = Self;
+    // A difference has the same degree bound as a sum.
+    #[allow(clippy::suspicious_arithmetic_impl)]
     fn sub(self, o: Self) -> Self {
         self + o
     }

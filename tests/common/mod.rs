@@ -1,0 +1,73 @@
+//! Strategies shared by the property suites.
+#![allow(dead_code)]
+
+use proptest::prelude::*;
+use sliding_ladder::registry::sample::{RawLadder, RawParticles, EXTRA, PER_PARTICLE};
+
+/// Cases per property: at least 1000 (`PROPTEST_CASES` or `LADDER_CASES` raise it).
+pub fn cases(minimum: u32) -> u32 {
+    let env = |k: &str| std::env::var(k).ok().and_then(|v| v.parse::<u32>().ok());
+    minimum
+        .max(env("LADDER_CASES").unwrap_or(0))
+        .max(env("PROPTEST_CASES").unwrap_or(0))
+}
+
+/// θ ∈ [0, π/2), m, l, g log-uniform over 1e-6..1e6, unit-free θ̇, θ̈, θ⃛ in [−1, 1].
+pub fn raw_ladder() -> impl Strategy<Value = RawLadder> {
+    (
+        0.0..std::f64::consts::FRAC_PI_2,
+        [-6.0..6.0f64, -6.0..6.0f64, -6.0..6.0f64],
+        [-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64],
+    )
+        .prop_map(|(theta, e, unit)| RawLadder {
+            theta,
+            mlg: e.map(|x| 10f64.powf(x)),
+            unit,
+        })
+}
+
+/// 1 to 8 particles, masses log-uniform over 1e-3..1e3, everything else in [−10, 10].
+pub fn raw_particles() -> impl Strategy<Value = RawParticles> {
+    (1usize..=8).prop_flat_map(|n| {
+        (
+            prop::collection::vec(-10.0..10.0f64, n * PER_PARTICLE + EXTRA),
+            prop::collection::vec(-3.0..3.0f64, n),
+        )
+            .prop_map(move |(mut values, logm)| {
+                for (i, lm) in logm.iter().enumerate() {
+                    values[i * PER_PARTICLE] = 10f64.powf(*lm);
+                }
+                RawParticles { n, values }
+            })
+    })
+}
+
+/// Seven exact integers (t, m, l, g, θ̇, θ̈, θ⃛): t and θ̇ nonzero, m, l, g positive.
+pub fn exact_ladder_ints() -> impl Strategy<Value = [i64; 7]> {
+    let big = 1i64 << 62;
+    let nz = prop_oneof![-big..=-1i64, 1..=big];
+    (
+        nz.clone(),
+        1..big,
+        1..big,
+        1..big,
+        nz,
+        -big..=big,
+        -big..=big,
+    )
+        .prop_map(|(t, m, l, g, w, a, j)| [t, m, l, g, w, a, j])
+}
+
+/// Exact integers for a particle sample: (n, values), masses positive.
+pub fn exact_particle_ints() -> impl Strategy<Value = (usize, Vec<i64>)> {
+    let big = 1i64 << 62;
+    (1usize..=8).prop_flat_map(move |n| {
+        prop::collection::vec(-big..=big, n * PER_PARTICLE + EXTRA).prop_map(move |mut v| {
+            for i in 0..n {
+                v[i * PER_PARTICLE] =
+                    v[i * PER_PARTICLE].unsigned_abs().max(1).min(big as u64) as i64;
+            }
+            (n, v)
+        })
+    })
+}

@@ -1,0 +1,184 @@
+//! Checks that can fail: every side of every chain, perturbed, is caught; every on-shell check
+//! fails off the equation of motion; every misprint fails.
+
+use rand::SeedableRng;
+use sliding_ladder::registry::check::{
+    exact_residual, float_residual, ladder_exact_chains, particle_exact_chains, run_check, Config,
+    TOLERANCE_FACTOR,
+};
+use sliding_ladder::registry::sample::{
+    float_particles, RawLadder, RawParticles, EXTRA, PER_PARTICLE,
+};
+use sliding_ladder::registry::{equations, Chain, Eval, Role};
+use sliding_ladder::scalar::{Bound, Rational, Scalar};
+
+/// Add δ·(largest magnitude in the chain, or 1) to side `k` of chain `c`.
+fn perturb_exact(chains: &[Chain<Rational>], c: usize, k: usize) -> Vec<Chain<Rational>> {
+    let mut out = chains.to_vec();
+    let zero = Rational::int(0);
+    let size = chains[c]
+        .iter()
+        .map(|s| {
+            if s.value < zero {
+                -s.value.clone()
+            } else {
+                s.value.clone()
+            }
+        })
+        .max()
+        .unwrap_or(zero.clone());
+    let size = if size == zero { Rational::int(1) } else { size };
+    out[c][k].value = out[c][k].value.clone() + size * Rational::ratio(1, 1 << 30);
+    out
+}
+
+fn exact_chains_of_every_check() -> Vec<(u32, &'static str, Vec<Chain<Rational>>)> {
+    let ints = [3, 7, 2, 11, -5, 13, 4];
+    let n = 3;
+    let pints: Vec<i64> = (0..n * PER_PARTICLE + EXTRA)
+        .map(|i| {
+            if i % PER_PARTICLE == 0 {
+                2 + i as i64 % 5
+            } else {
+                (i as i64 * 37) % 19 - 9
+            }
+        })
+        .collect();
+    let mut out = Vec::new();
+    for e in equations() {
+        for c in &e.checks {
+            let chains = match c.eval {
+                Eval::Ladder(sort, f) => ladder_exact_chains(sort, &f, ints),
+                Eval::Particles(sort, f) => particle_exact_chains(sort, &f, n, &pints),
+            };
+            out.push((e.number, c.name, chains));
+        }
+    }
+    out
+}
+
+#[test]
+fn every_perturbed_side_fails_exactly() {
+    let mut sides = 0;
+    for (number, name, chains) in exact_chains_of_every_check() {
+        assert!(
+            exact_residual(&chains).0,
+            "({number}) {name} must hold before perturbation"
+        );
+        for c in 0..chains.len() {
+            for k in 0..chains[c].len() {
+                if chains[c][k].role == Role::Misprint {
+                    continue;
+                }
+                let (ok, _) = exact_residual(&perturb_exact(&chains, c, k));
+                assert!(
+                    !ok,
+                    "({number}) {name}: perturbing '{}' went unnoticed",
+                    chains[c][k].label
+                );
+                sides += 1;
+            }
+        }
+    }
+    assert!(sides > 400, "only {sides} sides perturbed");
+}
+
+/// The side with the largest value relative to its error bound (a chain whose exact value is
+/// zero, like dE/dt = 0, has nothing to scale and is skipped: the exact test covers it).
+fn resolvable_side(values: &[Chain<f64>], bounds: &[Chain<Bound>]) -> Option<(usize, usize)> {
+    let mut best: Option<(f64, usize, usize)> = None;
+    for (c, (cv, cb)) in values.iter().zip(bounds).enumerate() {
+        for (k, (sv, sb)) in cv.iter().zip(cb).enumerate() {
+            let ratio = sv.value.abs() / (sb.value.abs_error() + f64::MIN_POSITIVE);
+            if sv.role != Role::Misprint && best.is_none_or(|b| ratio > b.0) {
+                best = Some((ratio, c, k));
+            }
+        }
+    }
+    best.filter(|b| b.0 > 1e3).map(|b| (b.1, b.2))
+}
+
+/// In floats a perturbation of 1e-9 relative to a side's value must exceed the error-model
+/// tolerance at nearly every state: the tolerance is tight, not a loose constant.
+#[test]
+fn float_checks_reject_a_relative_perturbation_of_one_in_a_billion() {
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+    let mut zero_only = Vec::new();
+    for e in equations() {
+        for check in &e.checks {
+            let (mut tried, mut caught) = (0, 0);
+            for _ in 0..40 {
+                let (mut values, bounds): (Vec<Chain<f64>>, Vec<Chain<Bound>>) = match check.eval {
+                    Eval::Ladder(sort, f) => {
+                        let ((l, s), (lb, sb)) = RawLadder::draw(&mut rng).build(sort);
+                        ((f.float)(&l, &s), (f.bound)(&lb, &sb))
+                    }
+                    Eval::Particles(sort, f) => {
+                        let ((sys, p), (sb, pb)) =
+                            float_particles(sort, &RawParticles::draw(&mut rng));
+                        ((f.float)(&sys, &p), (f.bound)(&sb, &pb))
+                    }
+                };
+                let Some((c, k)) = resolvable_side(&values, &bounds) else {
+                    continue;
+                };
+                values[c][k].value *= 1.0 + 1e-9;
+                tried += 1;
+                caught += usize::from(float_residual(&values, &bounds).0 > TOLERANCE_FACTOR);
+            }
+            if tried == 0 {
+                zero_only.push(e.number);
+                continue;
+            }
+            assert!(
+                caught * 10 >= tried * 9,
+                "({}) {}: a 1e-9 perturbation was caught at only {caught} of {tried} states",
+                e.number,
+                check.name
+            );
+        }
+    }
+    // Only identities whose every side is exactly zero may be skipped (dE/dt = 0, and the like).
+    assert!(
+        zero_only.len() <= 3,
+        "no resolvable side in the checks of {zero_only:?}"
+    );
+}
+
+#[test]
+fn on_shell_checks_fail_off_shell_and_misprints_fail() {
+    let cfg = Config {
+        float_cases: 0,
+        exact_points: 2,
+        seed: 11,
+    };
+    let mut on_shell = 0;
+    for e in equations() {
+        for c in &e.checks {
+            let r = run_check(c, &cfg);
+            if let Some(fails) = r.off_shell_fails {
+                assert!(
+                    fails,
+                    "({}) {} holds off the equation of motion",
+                    e.number, c.name
+                );
+                on_shell += 1;
+            }
+            for (label, failed) in &r.misprints {
+                assert!(failed, "({}) misprint '{label}' did not fail", e.number);
+            }
+        }
+        if e.erratum.is_some() {
+            let any = e
+                .checks
+                .iter()
+                .any(|c| !run_check(c, &cfg).misprints.is_empty());
+            assert!(
+                any,
+                "({}) is recorded as an erratum but no check holds its printed form",
+                e.number
+            );
+        }
+    }
+    assert!(on_shell >= 19, "only {on_shell} on-shell checks");
+}
