@@ -3,7 +3,9 @@
 //! Lagrange's equation by automatic differentiation. Exact arithmetic: the residual is zero.
 
 use rstest::rstest;
-use sliding_ladder::ladder::analysis::{solve_angular_acceleration, AngularMomentum, Reference};
+use sliding_ladder::ladder::analysis::{
+    solve_angular_acceleration, AngularMomentum, Reference, ReferencePoint,
+};
 use sliding_ladder::ladder::energy::{
     angular_acceleration, lagrange_residual, NoteLagrangian, ParticleLagrangian,
 };
@@ -91,7 +93,7 @@ fn first_principles_analysis_gives_the_equation_of_motion(
 ) {
     let (l, s) = state(t);
     assert_eq!(
-        solve_angular_acceleration(Reference::Corner(k), def, &l, &s),
+        solve_angular_acceleration(&Reference::Corner(k), def, &l, &s),
         angular_acceleration(&l, &s)
     );
 }
@@ -120,7 +122,7 @@ fn jensen_methods_at_c_give_the_equation_of_motion(#[case] method: u8) {
         Reference::Corner(Corner::C).position(&l, &s)
     );
     assert_eq!(
-        solve_angular_acceleration(reference, def, &l, &s),
+        solve_angular_acceleration(&reference, def, &l, &s),
         angular_acceleration(&l, &s),
         "method {method}"
     );

@@ -103,7 +103,7 @@ pub fn analysis_about(x: &[f64]) -> Result<f64, String> {
         jerk: 0.0,
     };
     Ok(solve_angular_acceleration(
-        Reference::Corner(corner),
+        &Reference::Corner(corner),
         AngularMomentum::Relative,
         &ladder,
         &st,

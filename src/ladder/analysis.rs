@@ -33,9 +33,31 @@ pub enum Reference {
     Combination([(i64, i64); 4]),
 }
 
-impl Reference {
+/// Anything that names a point as a function of the ladder's state. Implement `position`; the
+/// motion (velocity, acceleration, jerk) follows by automatic differentiation.
+pub trait ReferencePoint {
     /// The point's position.
-    pub fn position<T: Scalar>(&self, ladder: &Ladder<T>, st: &State<T>) -> Vec3<T> {
+    fn position<T: Scalar>(&self, ladder: &Ladder<T>, st: &State<T>) -> Vec3<T>;
+
+    /// The point's motion: position, and velocity, acceleration, jerk by automatic differentiation.
+    fn motion<T: Scalar>(&self, ladder: &Ladder<T>, st: &State<T>) -> Point<T> {
+        let l1 = ladder.constant();
+        let s1 = st.along_motion();
+        let x1 = self.position(&l1, &s1);
+        let x2 = self.position(&l1.constant(), &s1.along_motion());
+        let x3 = self.position(&l1.constant().constant(), &s1.along_motion().along_motion());
+        let j3 = Vec3::<<T::Dual as Scalar>::Dual>::derivative_of(&x3);
+        Point {
+            x: self.position(ladder, st),
+            v: Vec3::<T>::derivative_of(&x1),
+            a: Vec3::<T>::derivative_of(&Vec3::<T::Dual>::derivative_of(&x2)),
+            j: Vec3::<T>::derivative_of(&Vec3::<T::Dual>::derivative_of(&j3)),
+        }
+    }
+}
+
+impl ReferencePoint for Reference {
+    fn position<T: Scalar>(&self, ladder: &Ladder<T>, st: &State<T>) -> Vec3<T> {
         match *self {
             Reference::Corner(k) => corner_position(k, ladder, st),
             Reference::OnLadder(n, d) => {
@@ -54,22 +76,6 @@ impl Reference {
                 }),
         }
     }
-
-    /// The point's motion: position, and velocity, acceleration, jerk by automatic differentiation.
-    pub fn motion<T: Scalar>(&self, ladder: &Ladder<T>, st: &State<T>) -> Point<T> {
-        let l1 = ladder.constant();
-        let s1 = st.along_motion();
-        let x1 = self.position(&l1, &s1);
-        let x2 = self.position(&l1.constant(), &s1.along_motion());
-        let x3 = self.position(&l1.constant().constant(), &s1.along_motion().along_motion());
-        let j3 = Vec3::<<T::Dual as Scalar>::Dual>::derivative_of(&x3);
-        Point {
-            x: self.position(ladder, st),
-            v: Vec3::<T>::derivative_of(&x1),
-            a: Vec3::<T>::derivative_of(&Vec3::<T::Dual>::derivative_of(&x2)),
-            j: Vec3::<T>::derivative_of(&Vec3::<T::Dual>::derivative_of(&j3)),
-        }
-    }
 }
 
 /// Which of Jensen's two angular momenta about a moving point.
@@ -83,7 +89,7 @@ pub enum AngularMomentum {
 
 /// The angular momentum of the ladder about P (z component), from the particle model.
 pub fn angular_momentum_about<T: Scalar>(
-    p: Reference,
+    p: &impl ReferencePoint,
     def: AngularMomentum,
     ladder: &Ladder<T>,
     st: &State<T>,
@@ -99,7 +105,7 @@ pub fn angular_momentum_about<T: Scalar>(
 /// Both sides of the torque equation about P: (dL/dt by automatic differentiation, the torque
 /// side of eq. (38) or (40)).
 pub fn torque_equation<T: Scalar>(
-    p: Reference,
+    p: &impl ReferencePoint,
     def: AngularMomentum,
     ladder: &Ladder<T>,
     st: &State<T>,
@@ -129,7 +135,7 @@ pub fn torque_equation<T: Scalar>(
 
 /// The torque equation about P solved for θ̈ (it is affine in θ̈).
 pub fn solve_angular_acceleration<T: Scalar>(
-    p: Reference,
+    p: &impl ReferencePoint,
     def: AngularMomentum,
     ladder: &Ladder<T>,
     st: &State<T>,

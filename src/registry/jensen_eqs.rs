@@ -7,7 +7,7 @@ use super::{
     Erratum, Kind,
 };
 use crate::ladder::analysis::{
-    angular_momentum_about, torque_equation, AngularMomentum, Reference,
+    angular_momentum_about, torque_equation, AngularMomentum, Reference, ReferencePoint,
 };
 use crate::ladder::geometry::*;
 use crate::ladder::jensen::*;
@@ -103,7 +103,7 @@ fn eq49<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Chains<S> {
     vec![vec![
         reference(
             "particles: L_C (37)",
-            angular_momentum_about(C, AngularMomentum::Absolute, l, s),
+            angular_momentum_about(&C, AngularMomentum::Absolute, l, s),
         ),
         printed("L_cm + (x_cm − x_P) × m v_cm with (46)", a),
         misprint("ml²θ̇/3 + l²θ̇(cos²θ − sin²θ) (as printed)", b),
@@ -139,7 +139,7 @@ fn eq51<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Chains<S> {
 
 fn eq52<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Chains<S> {
     let [a, b] = eq52_modified_torque_c(l, s);
-    let (_, rhs38) = torque_equation(C, AngularMomentum::Absolute, l, s);
+    let (_, rhs38) = torque_equation(&C, AngularMomentum::Absolute, l, s);
     vec![vec![
         printed("τ_C − 2ml² cos θ sin θ θ̇²", a),
         printed("expanded", b),
@@ -149,7 +149,7 @@ fn eq52<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Chains<S> {
 
 fn eq53<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Chains<S> {
     let [a, b] = eq53_method_one_c(l, s);
-    let (d_l, _) = torque_equation(C, AngularMomentum::Absolute, l, s);
+    let (d_l, _) = torque_equation(&C, AngularMomentum::Absolute, l, s);
     vec![vec![
         reference("dL_C/dt (particles; AD)", d_l),
         printed("ml²θ̈/3 + ml²θ̈(cos²θ − sin²θ) − 4ml²θ̇² cos θ sin θ", a),
@@ -184,7 +184,7 @@ fn eq55<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Chains<S> {
     ];
     let mut c = vec![reference(
         "particles: L'_C (39)",
-        angular_momentum_about(C, AngularMomentum::Relative, l, s),
+        angular_momentum_about(&C, AngularMomentum::Relative, l, s),
     )];
     c.extend(labels.iter().zip(f).map(|(&n, v)| printed(n, v)));
     vec![c]

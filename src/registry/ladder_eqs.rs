@@ -4,7 +4,7 @@ use super::sample::LadderSample;
 use super::{
     eq, misprint, on_ladder, printed, reference, vector_chains, Chain, Equation, Erratum, Kind,
 };
-use crate::ladder::analysis::{AngularMomentum, Reference};
+use crate::ladder::analysis::{AngularMomentum, Reference, ReferencePoint};
 use crate::ladder::energy::*;
 use crate::ladder::forces::*;
 use crate::ladder::geometry::{cm_acceleration, cm_position, Corner};
@@ -186,7 +186,7 @@ fn eq10_value<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Vec<Chain<S>> {
 /// coordinate force (17) on the centre of mass: the right side of eq. (40).
 fn torque_with_coordinate_force<S: Scalar>(k: Corner, l: &Ladder<S>, s: &State<S>) -> S {
     let (_, rhs) = crate::ladder::analysis::torque_equation(
-        Reference::Corner(k),
+        &Reference::Corner(k),
         AngularMomentum::Relative,
         l,
         s,
@@ -364,7 +364,7 @@ fn eq20<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Vec<Chain<S>> {
 
 fn relative_l<S: Scalar>(k: Corner, l: &Ladder<S>, s: &State<S>) -> S {
     crate::ladder::analysis::angular_momentum_about(
-        Reference::Corner(k),
+        &Reference::Corner(k),
         AngularMomentum::Relative,
         l,
         s,
