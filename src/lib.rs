@@ -1,6 +1,7 @@
 //! sliding-ladder: the equations of "Torque Analyses of a Sliding Ladder" as checked code.
 
 pub mod ladder;
+pub mod milne;
 pub mod registry;
 pub mod scalar;
 pub mod system;
