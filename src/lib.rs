@@ -2,6 +2,7 @@
 
 pub mod docs;
 pub mod ladder;
+pub mod milne;
 pub mod registry;
 pub mod scalar;
 pub mod system;
