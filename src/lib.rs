@@ -1,1 +1,4 @@
 //! sliding-ladder: the equations of "Torque Analyses of a Sliding Ladder" as checked code.
+
+pub mod report;
+pub mod sim;
