@@ -143,7 +143,8 @@ impl<const N: usize> Stepper<N> for Dopri5<N> {
         k[0] = f0;
         loop {
             let mut h = self.h.min(h_max);
-            let last = t + h >= t_stop;
+            // A remainder below 1e-8 h would only be a rounding-sized extra step: take it now.
+            let last = t + h >= t_stop || t_stop - (t + h) <= 1e-8 * h;
             if last {
                 h = t_stop - t;
             }
