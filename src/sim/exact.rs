@@ -60,8 +60,10 @@ impl PhaseOne {
     /// theta0 in [0, π/2), rate0 >= 0, omega2 = 3g/(4l) > 0.
     pub fn new(theta0: f64, rate0: f64, omega2: f64) -> Result<PhaseOne, String> {
         if !(0.0..std::f64::consts::FRAC_PI_2).contains(&theta0)
-            || !(rate0 >= 0.0)
-            || !(omega2 > 0.0)
+            || rate0.is_nan()
+            || rate0 < 0.0
+            || omega2.is_nan()
+            || omega2 <= 0.0
         {
             return Err(format!(
                 "bad start: θ0 = {theta0}, θ̇0 = {rate0}, ω² = {omega2}"

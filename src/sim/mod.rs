@@ -16,3 +16,4 @@ pub mod output;
 pub mod rigid;
 pub mod run;
 pub mod scene;
+mod scene_checks;

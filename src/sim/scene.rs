@@ -5,9 +5,10 @@
 //! angular_velocity`, `[contact] model (stiffness damping)`, `[integrator] method tolerance|step`,
 //! `[end] at (time)`, `[outputs] want`. Unknown keys are errors.
 
-use super::integrators::{is_adaptive, Control, METHODS};
+use super::integrators::Control;
 use super::output::Output;
 use super::rigid::Ladder;
+use super::scene_checks::{check_contact, check_integrator, check_outputs};
 use serde::Deserialize;
 use std::fmt;
 use std::path::Path;
@@ -69,51 +70,51 @@ pub struct Scene {
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct Raw {
-    ladder: Spanned<RawLadder>,
-    start: Spanned<RawStart>,
-    contact: Spanned<RawContact>,
-    integrator: Spanned<RawIntegrator>,
-    end: Spanned<RawEnd>,
-    outputs: Spanned<RawOutputs>,
+pub(super) struct Raw {
+    pub(super) ladder: Spanned<RawLadder>,
+    pub(super) start: Spanned<RawStart>,
+    pub(super) contact: Spanned<RawContact>,
+    pub(super) integrator: Spanned<RawIntegrator>,
+    pub(super) end: Spanned<RawEnd>,
+    pub(super) outputs: Spanned<RawOutputs>,
 }
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawLadder {
-    mass: Spanned<f64>,
-    half_length: Spanned<f64>,
-    gravity: Spanned<f64>,
+pub(super) struct RawLadder {
+    pub(super) mass: Spanned<f64>,
+    pub(super) half_length: Spanned<f64>,
+    pub(super) gravity: Spanned<f64>,
 }
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawStart {
-    angle: Spanned<f64>,
-    angular_velocity: Spanned<f64>,
+pub(super) struct RawStart {
+    pub(super) angle: Spanned<f64>,
+    pub(super) angular_velocity: Spanned<f64>,
 }
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawContact {
-    model: Spanned<String>,
-    stiffness: Option<Spanned<f64>>,
-    damping: Option<Spanned<f64>>,
+pub(super) struct RawContact {
+    pub(super) model: Spanned<String>,
+    pub(super) stiffness: Option<Spanned<f64>>,
+    pub(super) damping: Option<Spanned<f64>>,
 }
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawIntegrator {
-    method: Spanned<String>,
-    tolerance: Option<Spanned<f64>>,
-    step: Option<Spanned<f64>>,
+pub(super) struct RawIntegrator {
+    pub(super) method: Spanned<String>,
+    pub(super) tolerance: Option<Spanned<f64>>,
+    pub(super) step: Option<Spanned<f64>>,
 }
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawEnd {
-    at: Spanned<String>,
-    time: Option<Spanned<f64>>,
+pub(super) struct RawEnd {
+    pub(super) at: Spanned<String>,
+    pub(super) time: Option<Spanned<f64>>,
 }
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawOutputs {
-    want: Spanned<Vec<Spanned<String>>>,
+pub(super) struct RawOutputs {
+    pub(super) want: Spanned<Vec<Spanned<String>>>,
 }
 
 /// Smallest tolerance accepted (below it f64 rounding dominates any error estimate).
@@ -123,7 +124,7 @@ pub const MIN_STEP: f64 = 1e-6;
 /// Longest end time accepted, s.
 pub const MAX_END_TIME: f64 = 1e4;
 
-struct Ctx<'a> {
+pub(super) struct Ctx<'a> {
     file: &'a str,
     text: &'a str,
 }
@@ -136,7 +137,7 @@ impl Ctx<'_> {
             .count()
             + 1
     }
-    fn err(
+    pub(super) fn err(
         &self,
         span: Option<std::ops::Range<usize>>,
         field: &str,
@@ -150,7 +151,7 @@ impl Ctx<'_> {
         }
     }
     /// A finite number in the range `ok`, described by `allowed`.
-    fn number(
+    pub(super) fn number(
         &self,
         v: &Spanned<f64>,
         field: &str,
@@ -158,6 +159,11 @@ impl Ctx<'_> {
         allowed: &str,
     ) -> Result<f64, SceneError> {
         let x = *v.get_ref();
+        let x_text = if x != 0.0 && (x.abs() < 1e-4 || x.abs() >= 1e6) {
+            format!("{x:e}")
+        } else {
+            format!("{x}")
+        };
         if !x.is_finite() {
             return Err(self.err(
                 Some(v.span()),
@@ -169,7 +175,7 @@ impl Ctx<'_> {
             return Err(self.err(
                 Some(v.span()),
                 field,
-                format!("{x} is out of range; allowed: {allowed}"),
+                format!("{x_text} is out of range; allowed: {allowed}"),
             ));
         }
         Ok(x)
@@ -303,157 +309,4 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
         end,
         outputs,
     })
-}
-
-fn check_contact(cx: &Ctx, c: &RawContact) -> Result<(), SceneError> {
-    match c.model.get_ref().as_str() {
-        "rigid" => {
-            for (k, v) in [
-                ("contact.stiffness", &c.stiffness),
-                ("contact.damping", &c.damping),
-            ] {
-                if let Some(v) = v {
-                    return Err(cx.err(
-                        Some(v.span()),
-                        k,
-                        "only for contact.model = \"penalty\"; remove it for \"rigid\"",
-                    ));
-                }
-            }
-            Ok(())
-        }
-        "penalty" => {
-            let Some(k) = &c.stiffness else {
-                return Err(cx.err(
-                    Some(c.model.span()),
-                    "contact.stiffness",
-                    "the penalty model needs stiffness (N/m, > 0)",
-                ));
-            };
-            cx.number(k, "contact.stiffness", |x| x > 0.0, "a number > 0 (N/m)")?;
-            if let Some(d) = &c.damping {
-                cx.number(d, "contact.damping", |x| x >= 0.0, "a number >= 0 (N·s/m)")?;
-            }
-            Err(cx.err(
-                Some(c.model.span()),
-                "contact.model",
-                "\"penalty\" is not yet implemented; allowed now: \"rigid\"",
-            ))
-        }
-        other => Err(cx.err(
-            Some(c.model.span()),
-            "contact.model",
-            format!("unknown model \"{other}\"; allowed: \"rigid\", \"penalty\""),
-        )),
-    }
-}
-
-fn check_integrator(cx: &Ctx, i: &RawIntegrator) -> Result<(String, Option<Control>), SceneError> {
-    let method = i.method.get_ref().as_str();
-    if method == "exact" {
-        if let Some(v) = i.tolerance.as_ref().or(i.step.as_ref()) {
-            return Err(cx.err(
-                Some(v.span()),
-                "integrator",
-                "method \"exact\" takes neither tolerance nor step",
-            ));
-        }
-        return Ok((method.into(), None));
-    }
-    if !METHODS.contains(&method) {
-        return Err(cx.err(
-            Some(i.method.span()),
-            "integrator.method",
-            format!(
-                "unknown method \"{method}\"; allowed: {}, exact",
-                METHODS.join(", ")
-            ),
-        ));
-    }
-    let control = if is_adaptive(method) {
-        if let Some(s) = &i.step {
-            return Err(cx.err(
-                Some(s.span()),
-                "integrator.step",
-                format!("\"{method}\" is adaptive: give tolerance, not step"),
-            ));
-        }
-        let Some(t) = &i.tolerance else {
-            return Err(cx.err(
-                Some(i.method.span()),
-                "integrator.tolerance",
-                format!("\"{method}\" needs a tolerance in [1e-16, 0.1]"),
-            ));
-        };
-        Control::Tolerance(cx.number(
-            t,
-            "integrator.tolerance",
-            |x| (MIN_TOLERANCE..=0.1).contains(&x),
-            "a tolerance in [1e-16, 0.1]",
-        )?)
-    } else {
-        if let Some(t) = &i.tolerance {
-            return Err(cx.err(
-                Some(t.span()),
-                "integrator.tolerance",
-                format!("\"{method}\" has a fixed step: give step, not tolerance"),
-            ));
-        }
-        let Some(s) = &i.step else {
-            return Err(cx.err(
-                Some(i.method.span()),
-                "integrator.step",
-                format!("\"{method}\" needs a step in [1e-6, 1] s"),
-            ));
-        };
-        Control::Fixed(cx.number(
-            s,
-            "integrator.step",
-            |x| (MIN_STEP..=1.0).contains(&x),
-            "a step in [1e-6, 1] s",
-        )?)
-    };
-    Ok((method.into(), Some(control)))
-}
-
-fn check_outputs(
-    cx: &Ctx,
-    o: &RawOutputs,
-    method: &str,
-    end: End,
-) -> Result<Vec<Output>, SceneError> {
-    if o.want.get_ref().is_empty() {
-        return Err(cx.err(
-            Some(o.want.span()),
-            "outputs.want",
-            format!("empty; allowed: {}", Output::names()),
-        ));
-    }
-    let mut out = Vec::new();
-    for w in o.want.get_ref() {
-        let name = w.get_ref().as_str();
-        let Some(x) = Output::from_name(name) else {
-            return Err(cx.err(
-                Some(w.span()),
-                "outputs.want",
-                format!("unknown output \"{name}\"; allowed: {}", Output::names()),
-            ));
-        };
-        if out.contains(&x) {
-            return Err(cx.err(
-                Some(w.span()),
-                "outputs.want",
-                format!("\"{name}\" is listed twice"),
-            ));
-        }
-        if let Err(why) = x.producible(method, end) {
-            return Err(cx.err(
-                Some(w.span()),
-                "outputs.want",
-                format!("\"{name}\" cannot be produced: {why}"),
-            ));
-        }
-        out.push(x);
-    }
-    Ok(out)
 }

@@ -14,8 +14,12 @@
 //! Models implement [`Ode`] once, generic over the scalar, so the same right-hand side runs in
 //! `f64` and in `num_dual::Dual64` (the implicit method's Jacobian, column by column).
 
+// Index loops mirror the formulas (a_ij k_j, J_ij) and are kept on purpose.
+#![allow(clippy::needless_range_loop)]
+
 pub mod any;
 pub mod dop853;
+mod dop853_tables;
 pub mod dopri5;
 pub mod euler;
 pub mod fixed;
@@ -147,6 +151,7 @@ pub fn error_norm<const N: usize, S: Ode<N>>(
 
 /// Initial step size (Hairer, Nørsett & Wanner, *Solving ODEs I*, sec. II.4, "Starting step
 /// size"; the `hinit` routine of dopri5.f / dop853.f), for a method of order `order`.
+#[allow(clippy::too_many_arguments)]
 pub fn initial_step<const N: usize, S: Ode<N>>(
     sys: &S,
     t: f64,
