@@ -1,10 +1,29 @@
 //! sliding-ladder: the equations of "Torque Analyses of a Sliding Ladder" as checked code.
+//!
+//! # Map
+//! * [`scalar`], [`vector`]: the number types every equation is evaluated in (f64 with num-dual
+//!   derivatives, running error bounds, exact rationals, jets, degrees) and 3-vectors over them.
+//! * [`system`]: systems of particles and moving reference points, Appendix A (29)-(41).
+//! * [`ladder`]: the note's ladder: geometry, energy, forces, torque analyses about A-E and any
+//!   point, Jensen's methods; plus the three-particle model used as the independent reference.
+//! * [`milne`]: Appendix B, Milne's names for ours.
+//! * [`registry`]: one entry per equation (1)-(90) with its checks; [`verify`] runs them and
+//!   lists the errata; [`docs`] holds the book `equations/*.md` against the registry.
+//! * [`method`]: the trait a new derivation of the equation of motion implements to be checked.
+//! * [`sim`], [`report`]: the simulator (scenes, models, integrators, exact reference) and its
+//!   reports (work-precision, plots).
+//!
+//! Dependencies flow one way: scalar, vector → system, ladder → milne → registry → docs, verify;
+//! sim → report. The physics modules know nothing of tests, markdown or the command line.
 
 pub mod docs;
 pub mod ladder;
+pub mod method;
 pub mod milne;
 pub mod registry;
+pub mod report;
 pub mod scalar;
+pub mod sim;
 pub mod system;
 pub mod vector;
 pub mod verify;

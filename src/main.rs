@@ -1,15 +1,17 @@
-//! The `ladder` command: verify the note's equations, list its errata, simulate the fall.
+//! The `ladder` command: parse the arguments, call the library.
 
 use clap::{Parser, Subcommand};
 use sliding_ladder::registry::check::Config;
-use sliding_ladder::verify::command;
+use sliding_ladder::sim::command as sim;
+use sliding_ladder::verify::command as verify;
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 #[derive(Parser)]
 #[command(
     name = "ladder",
     version,
-    about = "The equations of 'Torque Analyses of a Sliding Ladder', checked"
+    about = "The sliding ladder: the note's equations checked, the fall simulated"
 )]
 struct Cli {
     #[command(subcommand)]
@@ -39,18 +41,56 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Simulate a scene (TOML) and print the outputs it asks for.
+    Simulate {
+        /// The scene file.
+        scene: PathBuf,
+        /// Print JSON instead of a summary.
+        #[arg(long)]
+        json: bool,
+        /// Write CSV and SVG files here (when the scene asks for a trajectory or forces).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+    /// Error against run time for every integrator (CSV + SVG with --out).
+    WorkPrecision {
+        /// The scene (default: the built-in from-rest scene θ0 = 0.3).
+        scene: Option<PathBuf>,
+        /// Print JSON (runs[]) instead of a table.
+        #[arg(long)]
+        json: bool,
+        /// Write runs.csv and work_precision.svg here.
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { 2 } else { 0 };
+            let _ = e.print();
+            return ExitCode::from(code);
+        }
+    };
     match cli.command {
-        None => command::verify(false, &Config::default()),
+        None => {
+            let verified = verify::verify(false, &Config::default());
+            println!();
+            let simulated = sim::simulate_builtin_classic();
+            if verified == ExitCode::SUCCESS {
+                simulated
+            } else {
+                verified
+            }
+        }
         Some(Command::Verify {
             json,
             cases,
             exact_points,
             seed,
-        }) => command::verify(
+        }) => verify::verify(
             json,
             &Config {
                 float_cases: cases,
@@ -58,6 +98,10 @@ fn main() -> ExitCode {
                 seed,
             },
         ),
-        Some(Command::Errata { json }) => command::errata_command(json, &Config::default()),
+        Some(Command::Errata { json }) => verify::errata_command(json, &Config::default()),
+        Some(Command::Simulate { scene, json, out }) => sim::simulate(&scene, json, out.as_deref()),
+        Some(Command::WorkPrecision { scene, json, out }) => {
+            sim::work_precision(scene.as_deref(), json, out.as_deref())
+        }
     }
 }

@@ -1,0 +1,5 @@
+//! Reports: the work-precision sweep, output files written all-or-nothing, SVG plots.
+
+pub mod files;
+pub mod plot;
+pub mod work_precision;

@@ -1,0 +1,226 @@
+//! DOPRI5: the Dormand-Prince Runge-Kutta pair of order 5(4) with a free dense output of order 4.
+//!
+//! Source: J. R. Dormand and P. J. Prince, "A family of embedded Runge-Kutta formulae",
+//! J. Comput. Appl. Math. 6 (1980); Hairer, Nørsett & Wanner, *Solving ODEs I*, Table II.5.2
+//! (coefficients) and sec. II.6 (dense output), and the Fortran code `dopri5.f` (parameters
+//! `D1`..`D7` of its dense output, the PI step-size control with `BETA = 0.04`).
+
+use super::{all_finite, error_norm, eval, initial_step, Ode, Stats, StepError, Stepper};
+
+const C2: f64 = 1.0 / 5.0;
+const C3: f64 = 3.0 / 10.0;
+const C4: f64 = 4.0 / 5.0;
+const C5: f64 = 8.0 / 9.0;
+const A21: f64 = 1.0 / 5.0;
+const A3: [f64; 2] = [3.0 / 40.0, 9.0 / 40.0];
+const A4: [f64; 3] = [44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0];
+const A5: [f64; 4] = [
+    19372.0 / 6561.0,
+    -25360.0 / 2187.0,
+    64448.0 / 6561.0,
+    -212.0 / 729.0,
+];
+const A6: [f64; 5] = [
+    9017.0 / 3168.0,
+    -355.0 / 33.0,
+    46732.0 / 5247.0,
+    49.0 / 176.0,
+    -5103.0 / 18656.0,
+];
+/// Weights of the 5th-order solution (stage 2 has weight 0); also the 7th stage's row (FSAL).
+const B: [f64; 6] = [
+    35.0 / 384.0,
+    0.0,
+    500.0 / 1113.0,
+    125.0 / 192.0,
+    -2187.0 / 6784.0,
+    11.0 / 84.0,
+];
+/// Difference between the 5th- and 4th-order weights, stages 1..7.
+const E: [f64; 7] = [
+    71.0 / 57600.0,
+    0.0,
+    -71.0 / 16695.0,
+    71.0 / 1920.0,
+    -17253.0 / 339200.0,
+    22.0 / 525.0,
+    -1.0 / 40.0,
+];
+/// Dense output weights (dopri5.f `D1`..`D7`).
+const D: [f64; 7] = [
+    -12715105075.0 / 11282082432.0,
+    0.0,
+    87487479700.0 / 32700410799.0,
+    -10690763975.0 / 1880347072.0,
+    701980252875.0 / 199316789632.0,
+    -1453857185.0 / 822651844.0,
+    69997945.0 / 29380423.0,
+];
+
+#[inline(always)]
+fn combine<const N: usize>(y: &[f64; N], h: f64, a: &[f64], k: &[[f64; N]; 7]) -> [f64; N] {
+    std::array::from_fn(|i| {
+        let mut s = 0.0;
+        for (j, aj) in a.iter().enumerate() {
+            s += aj * k[j][i];
+        }
+        y[i] + h * s
+    })
+}
+
+/// The DOPRI5 integrator (adaptive, dense output of order 4).
+#[derive(Clone, Debug)]
+pub struct Dopri5<const N: usize> {
+    rtol: f64,
+    t: f64,
+    y: [f64; N],
+    f: Option<[f64; N]>,
+    h: f64,
+    facold: f64,
+    last_rejected: bool,
+    t_prev: f64,
+    y_prev: [f64; N],
+    k: [[f64; N]; 7],
+    stats: Stats,
+}
+
+impl<const N: usize> Dopri5<N> {
+    /// Start at `(t0, y0)` with relative tolerance `rtol`.
+    pub fn new(t0: f64, y0: [f64; N], rtol: f64) -> Self {
+        Dopri5 {
+            rtol,
+            t: t0,
+            y: y0,
+            f: None,
+            h: 0.0,
+            facold: 1e-4,
+            last_rejected: false,
+            t_prev: t0,
+            y_prev: y0,
+            k: [[0.0; N]; 7],
+            stats: Stats::default(),
+        }
+    }
+}
+
+impl<const N: usize> Stepper<N> for Dopri5<N> {
+    fn t(&self) -> f64 {
+        self.t
+    }
+    fn y(&self) -> [f64; N] {
+        self.y
+    }
+    fn t_prev(&self) -> f64 {
+        self.t_prev
+    }
+
+    fn step<S: Ode<N>>(&mut self, sys: &S, t_stop: f64) -> Result<(), StepError> {
+        let (t, y) = (self.t, self.y);
+        let f0 = match self.f {
+            Some(f) => f,
+            None => {
+                self.stats.rhs_evals += 1;
+                eval(sys, t, &y)
+            }
+        };
+        if !all_finite(&f0) {
+            return Err(StepError::NotFinite { t });
+        }
+        let h_max = sys.max_step(&y);
+        if self.h == 0.0 {
+            self.h = initial_step(
+                sys,
+                t,
+                &y,
+                &f0,
+                self.rtol,
+                5,
+                h_max,
+                &mut self.stats.rhs_evals,
+            );
+        }
+        let mut k = [[0.0; N]; 7];
+        k[0] = f0;
+        loop {
+            let mut h = self.h.min(h_max);
+            // A remainder below 1e-8 h would only be a rounding-sized extra step: take it now.
+            let last = t + h >= t_stop || t_stop - (t + h) <= 1e-8 * h;
+            if last {
+                h = t_stop - t;
+            }
+            if h <= 10.0 * f64::EPSILON * t.abs().max(1e-300) || h <= 0.0 {
+                return Err(StepError::StepTooSmall { t, h });
+            }
+            k[1] = eval(sys, t + C2 * h, &combine(&y, h, &[A21], &k));
+            k[2] = eval(sys, t + C3 * h, &combine(&y, h, &A3, &k));
+            k[3] = eval(sys, t + C4 * h, &combine(&y, h, &A4, &k));
+            k[4] = eval(sys, t + C5 * h, &combine(&y, h, &A5, &k));
+            k[5] = eval(sys, t + h, &combine(&y, h, &A6, &k));
+            let y1 = combine(&y, h, &B, &k);
+            k[6] = eval(sys, t + h, &y1);
+            self.stats.rhs_evals += 6;
+            let e: [f64; N] =
+                std::array::from_fn(|i| h * (0..7).map(|j| E[j] * k[j][i]).sum::<f64>());
+            let err = error_norm(sys, &e, &y, &y1, self.rtol);
+            if !err.is_finite() || !all_finite(&y1) {
+                self.stats.rejected += 1;
+                self.h = h * 0.1;
+                self.last_rejected = true;
+                continue;
+            }
+            // PI control of dopri5.f: expo1 = 0.2 - 0.75 * beta, beta = 0.04.
+            let fac11 = err.powf(0.2 - 0.75 * 0.04);
+            if err <= 1.0 {
+                let fac = (fac11 / self.facold.powf(0.04) / 0.9).clamp(0.1, 5.0);
+                self.facold = err.max(1e-4);
+                let mut h_new = h / fac;
+                if self.last_rejected {
+                    h_new = h_new.min(h);
+                }
+                self.last_rejected = false;
+                self.k = k;
+                self.t_prev = t;
+                self.y_prev = y;
+                self.t = if last { t_stop } else { t + h };
+                self.y = y1;
+                self.f = Some(k[6]);
+                if !last {
+                    self.h = h_new;
+                }
+                self.stats.steps += 1;
+                return Ok(());
+            }
+            self.stats.rejected += 1;
+            self.last_rejected = true;
+            self.h = h / (fac11 / 0.9).min(5.0);
+        }
+    }
+
+    fn prepare_dense<S: Ode<N>>(&mut self, _sys: &S) {}
+
+    fn interpolate(&self, t: f64) -> [f64; N] {
+        let h = self.t - self.t_prev;
+        let s = if h == 0.0 { 1.0 } else { (t - self.t_prev) / h };
+        let s1 = 1.0 - s;
+        let k = &self.k;
+        // dopri5.f, function CONTD5.
+        std::array::from_fn(|i| {
+            let ydiff = self.y[i] - self.y_prev[i];
+            let bspl = h * k[0][i] - ydiff;
+            let r4 = ydiff - h * k[6][i] - bspl;
+            let r5 = h * (0..7).map(|j| D[j] * k[j][i]).sum::<f64>();
+            self.y_prev[i] + s * (ydiff + s1 * (bspl + s * (r4 + s1 * r5)))
+        })
+    }
+
+    fn restart(&mut self, t: f64, y: [f64; N]) {
+        let (rtol, stats, h) = (self.rtol, self.stats, self.h);
+        *self = Dopri5::new(t, y, rtol);
+        self.stats = stats;
+        self.h = h;
+    }
+
+    fn stats(&self) -> Stats {
+        self.stats
+    }
+}

@@ -1,0 +1,367 @@
+//! RADAU5: the 3-stage Radau IIA collocation method of order 5, implicit and L-stable, for stiff
+//! problems (the penalty contact model of a later task); simplified Newton iterations with the
+//! Jacobian by automatic differentiation (`num_dual::Dual64`, one column per dual evaluation).
+//!
+//! Source: E. Hairer and G. Wanner, *Solving Ordinary Differential Equations II*, 2nd ed.,
+//! sec. IV.5 (Table 5.6: the Radau IIA tableau), IV.8 (Newton iteration, error estimate with the
+//! constants `DD1..DD3` and `U1` of the Fortran code `radau5.f`, step-size rule). Unlike
+//! radau5.f, the stage system is solved directly as one real 3N x 3N system (no transformation
+//! to a real and a complex system): for the ladder N is 2 or 4, where that is simplest and fast.
+//! The dense output is the collocation polynomial itself.
+
+use super::{all_finite, error_norm, eval, initial_step, Ode, Stats, StepError, Stepper};
+use num_dual::Dual64;
+
+const SQ6: f64 = 2.449_489_742_783_178;
+/// Collocation nodes c1, c2, c3 = 1.
+const C: [f64; 3] = [(4.0 - SQ6) / 10.0, (4.0 + SQ6) / 10.0, 1.0];
+/// The Radau IIA(5) matrix (Hairer-Wanner II, Table IV.5.6).
+const A: [[f64; 3]; 3] = [
+    [
+        (88.0 - 7.0 * SQ6) / 360.0,
+        (296.0 - 169.0 * SQ6) / 1800.0,
+        (-2.0 + 3.0 * SQ6) / 225.0,
+    ],
+    [
+        (296.0 + 169.0 * SQ6) / 1800.0,
+        (88.0 + 7.0 * SQ6) / 360.0,
+        (-2.0 - 3.0 * SQ6) / 225.0,
+    ],
+    [(16.0 - SQ6) / 36.0, (16.0 + SQ6) / 36.0, 1.0 / 9.0],
+];
+/// Error-estimate weights of radau5.f (`DD1`, `DD2`, `DD3`).
+const DD: [f64; 3] = [
+    -(13.0 + 7.0 * SQ6) / 3.0,
+    (-13.0 + 7.0 * SQ6) / 3.0,
+    -1.0 / 3.0,
+];
+/// Newton iterations allowed per step.
+const MAX_NEWTON: usize = 7;
+
+/// The real eigenvalue of A⁻¹ (radau5.f `U1`), 30 / (6 + 81^(1/3) - 9^(1/3)).
+fn u1() -> f64 {
+    30.0 / (6.0 + 81f64.cbrt() - 9f64.cbrt())
+}
+
+/// LU factorisation with partial pivoting of the n x n row-major matrix `m` (in place).
+/// Returns false when singular.
+fn lu_factor(m: &mut [f64], piv: &mut [usize], n: usize) -> bool {
+    for k in 0..n {
+        let p = (k..n)
+            .max_by(|&a, &b| m[a * n + k].abs().total_cmp(&m[b * n + k].abs()))
+            .unwrap_or(k);
+        if m[p * n + k] == 0.0 || !m[p * n + k].is_finite() {
+            return false;
+        }
+        piv[k] = p;
+        if p != k {
+            for j in 0..n {
+                m.swap(k * n + j, p * n + j);
+            }
+        }
+        for i in k + 1..n {
+            let l = m[i * n + k] / m[k * n + k];
+            m[i * n + k] = l;
+            for j in k + 1..n {
+                m[i * n + j] -= l * m[k * n + j];
+            }
+        }
+    }
+    true
+}
+
+/// Solve with the factors of [`lu_factor`], overwriting `b`.
+fn lu_solve(m: &[f64], piv: &[usize], b: &mut [f64], n: usize) {
+    for k in 0..n {
+        b.swap(k, piv[k]);
+        for i in k + 1..n {
+            b[i] -= m[i * n + k] * b[k];
+        }
+    }
+    for k in (0..n).rev() {
+        for j in k + 1..n {
+            b[k] -= m[k * n + j] * b[j];
+        }
+        b[k] /= m[k * n + k];
+    }
+}
+
+/// The Jacobian ∂f/∂y at `(t, y)`, one column per dual-number evaluation.
+pub fn jacobian<const N: usize, S: Ode<N>>(sys: &S, t: f64, y: &[f64; N]) -> [[f64; N]; N] {
+    let mut jac = [[0.0; N]; N];
+    for j in 0..N {
+        let yd: [Dual64; N] =
+            std::array::from_fn(|i| Dual64::new(y[i], if i == j { 1.0 } else { 0.0 }));
+        let f = sys.rhs(t, &yd);
+        for i in 0..N {
+            jac[i][j] = f[i].eps;
+        }
+    }
+    jac
+}
+
+/// The Radau IIA(5) integrator.
+#[derive(Clone, Debug)]
+pub struct Radau5<const N: usize> {
+    rtol: f64,
+    newton_rtol: f64,
+    eta: f64,
+    t: f64,
+    y: [f64; N],
+    h: f64,
+    t_prev: f64,
+    y_prev: [f64; N],
+    z: [[f64; N]; 3],
+    have_prev: bool,
+    first: bool,
+    lu: Vec<f64>,
+    piv: Vec<usize>,
+    e1: Vec<f64>,
+    piv1: Vec<usize>,
+    stats: Stats,
+}
+
+impl<const N: usize> Radau5<N> {
+    /// Start at `(t0, y0)` with relative tolerance `rtol`.
+    pub fn new(t0: f64, y0: [f64; N], rtol: f64) -> Self {
+        Radau5 {
+            rtol,
+            newton_rtol: rtol,
+            eta: 1.0,
+            t: t0,
+            y: y0,
+            h: 0.0,
+            t_prev: t0,
+            y_prev: y0,
+            z: [[0.0; N]; 3],
+            have_prev: false,
+            first: true,
+            lu: vec![0.0; 9 * N * N],
+            piv: vec![0; 3 * N],
+            e1: vec![0.0; N * N],
+            piv1: vec![0; N],
+            stats: Stats::default(),
+        }
+    }
+
+    /// Solve the stage equations to `newton_rtol` instead of the step tolerance (for tests that
+    /// hold the step fixed with a loose tolerance and still want the method's own accuracy).
+    pub fn with_newton_rtol(mut self, newton_rtol: f64) -> Self {
+        self.newton_rtol = newton_rtol;
+        self
+    }
+
+    /// The collocation polynomial of the last step at `s = (t - t_prev) / h` (may extrapolate).
+    fn collocation(&self, s: f64) -> [f64; N] {
+        let mut out = self.y_prev;
+        for a in 0..3 {
+            let mut l = s / C[a];
+            for b in 0..3 {
+                if b != a {
+                    l *= (s - C[b]) / (C[a] - C[b]);
+                }
+            }
+            for (o, z) in out.iter_mut().zip(&self.z[a]) {
+                *o += l * z;
+            }
+        }
+        out
+    }
+}
+
+impl<const N: usize> Stepper<N> for Radau5<N> {
+    fn t(&self) -> f64 {
+        self.t
+    }
+    fn y(&self) -> [f64; N] {
+        self.y
+    }
+    fn t_prev(&self) -> f64 {
+        self.t_prev
+    }
+
+    fn step<S: Ode<N>>(&mut self, sys: &S, t_stop: f64) -> Result<(), StepError> {
+        let (t, y) = (self.t, self.y);
+        let f0 = eval(sys, t, &y);
+        self.stats.rhs_evals += 1;
+        if !all_finite(&f0) {
+            return Err(StepError::NotFinite { t });
+        }
+        let h_max = sys.max_step(&y);
+        if self.h == 0.0 {
+            self.h = initial_step(
+                sys,
+                t,
+                &y,
+                &f0,
+                self.rtol,
+                5,
+                h_max,
+                &mut self.stats.rhs_evals,
+            );
+        }
+        let jac = jacobian(sys, t, &y);
+        self.stats.jacobians += 1;
+        let n3 = 3 * N;
+        let fnewt = (10.0 * f64::EPSILON / self.newton_rtol).max(0.03);
+        let mut rejected = false;
+        loop {
+            let mut h = self.h.min(h_max);
+            // A remainder below 1e-8 h would only be a rounding-sized extra step: take it now.
+            let last = t + h >= t_stop || t_stop - (t + h) <= 1e-8 * h;
+            if last {
+                h = t_stop - t;
+            }
+            if h <= 10.0 * f64::EPSILON * t.abs().max(1e-300) || h <= 0.0 {
+                return Err(StepError::StepTooSmall { t, h });
+            }
+            // Iteration matrix I - h (A ⊗ J).
+            for a in 0..3 {
+                for i in 0..N {
+                    for b in 0..3 {
+                        for j in 0..N {
+                            let delta = if a == b && i == j { 1.0 } else { 0.0 };
+                            self.lu[(a * N + i) * n3 + b * N + j] = delta - h * A[a][b] * jac[i][j];
+                        }
+                    }
+                }
+            }
+            if !lu_factor(&mut self.lu, &mut self.piv, n3) {
+                self.h = h * 0.5;
+                self.stats.rejected += 1;
+                continue;
+            }
+            // Predictor: extrapolate the last collocation polynomial (zero after a restart).
+            let mut z = [[0.0; N]; 3];
+            if self.have_prev {
+                let hp = self.t - self.t_prev;
+                for (a, za) in z.iter_mut().enumerate() {
+                    let u = self.collocation(1.0 + C[a] * h / hp);
+                    *za = std::array::from_fn(|i| u[i] - y[i]);
+                }
+            }
+            let mut converged = false;
+            let mut prev_norm = f64::INFINITY;
+            let mut eta = self.eta.max(f64::EPSILON).powf(0.8);
+            for _ in 0..MAX_NEWTON {
+                let mut fz = [[0.0; N]; 3];
+                for a in 0..3 {
+                    let ya: [f64; N] = std::array::from_fn(|i| y[i] + z[a][i]);
+                    fz[a] = eval(sys, t + C[a] * h, &ya);
+                }
+                self.stats.rhs_evals += 3;
+                let mut rhs = vec![0.0; n3];
+                for a in 0..3 {
+                    for i in 0..N {
+                        let hf: f64 = (0..3).map(|b| A[a][b] * fz[b][i]).sum();
+                        rhs[a * N + i] = h * hf - z[a][i];
+                    }
+                }
+                lu_solve(&self.lu, &self.piv, &mut rhs, n3);
+                let mut norm = 0.0f64;
+                for a in 0..3 {
+                    let dz: [f64; N] = std::array::from_fn(|i| rhs[a * N + i]);
+                    norm = norm.max(error_norm(sys, &dz, &y, &y, self.newton_rtol));
+                    for i in 0..N {
+                        z[a][i] += dz[i];
+                    }
+                }
+                if !norm.is_finite() {
+                    break;
+                }
+                // Convergence test of radau5.f: η ‖Δz‖ ≤ κ with η = θ/(1−θ) from the observed
+                // contraction θ; the first iteration uses the last step's η (damped), as there.
+                if prev_norm.is_finite() {
+                    let rate = norm / prev_norm;
+                    if rate >= 1.0 {
+                        break;
+                    }
+                    eta = rate / (1.0 - rate);
+                }
+                if norm == 0.0 || eta * norm <= fnewt {
+                    self.eta = eta;
+                    converged = true;
+                    break;
+                }
+                prev_norm = norm;
+            }
+            if !converged {
+                rejected = true;
+                self.h = h * 0.5;
+                self.stats.rejected += 1;
+                if self.h < 1e-14 * t.abs().max(1.0) {
+                    return Err(StepError::NewtonFailed { t });
+                }
+                continue;
+            }
+            let y1: [f64; N] = std::array::from_fn(|i| y[i] + z[2][i]);
+            // Embedded error estimate (radau5.f, ESTRAD): (U1/h I - J)^-1 (f0 + Σ DD_a z_a / h).
+            let fac1 = u1() / h;
+            for i in 0..N {
+                for j in 0..N {
+                    self.e1[i * N + j] = if i == j { fac1 } else { 0.0 } - jac[i][j];
+                }
+            }
+            let ok = lu_factor(&mut self.e1, &mut self.piv1, N);
+            let f2: [f64; N] =
+                std::array::from_fn(|i| (0..3).map(|a| DD[a] * z[a][i]).sum::<f64>() / h);
+            let mut est: Vec<f64> = (0..N).map(|i| f0[i] + f2[i]).collect();
+            let mut err = f64::INFINITY;
+            if ok {
+                lu_solve(&self.e1, &self.piv1, &mut est, N);
+                let e: [f64; N] = std::array::from_fn(|i| est[i]);
+                err = error_norm(sys, &e, &y, &y1, self.rtol).max(1e-10);
+                if err >= 1.0 && (self.first || rejected) {
+                    // Second estimate on the first or a rejected step (stiff components).
+                    let yt: [f64; N] = std::array::from_fn(|i| y[i] + e[i]);
+                    let ft = eval(sys, t, &yt);
+                    self.stats.rhs_evals += 1;
+                    let mut est2: Vec<f64> = (0..N).map(|i| ft[i] + f2[i]).collect();
+                    lu_solve(&self.e1, &self.piv1, &mut est2, N);
+                    let e2: [f64; N] = std::array::from_fn(|i| est2[i]);
+                    err = error_norm(sys, &e2, &y, &y1, self.rtol).max(1e-10);
+                }
+            }
+            let quot = (err.powf(0.25) / 0.9).clamp(0.125, 5.0);
+            let h_new = h / quot;
+            if err < 1.0 && all_finite(&y1) {
+                self.t_prev = t;
+                self.y_prev = y;
+                self.z = z;
+                self.have_prev = true;
+                self.first = false;
+                self.t = if last { t_stop } else { t + h };
+                self.y = y1;
+                if !last {
+                    self.h = h_new;
+                }
+                self.stats.steps += 1;
+                return Ok(());
+            }
+            self.stats.rejected += 1;
+            rejected = true;
+            self.h = if err.is_finite() { h_new } else { h * 0.1 };
+        }
+    }
+
+    fn prepare_dense<S: Ode<N>>(&mut self, _sys: &S) {}
+
+    fn interpolate(&self, t: f64) -> [f64; N] {
+        let h = self.t - self.t_prev;
+        if h == 0.0 {
+            return self.y;
+        }
+        self.collocation((t - self.t_prev) / h)
+    }
+
+    fn restart(&mut self, t: f64, y: [f64; N]) {
+        let (rtol, newton_rtol, stats, h) = (self.rtol, self.newton_rtol, self.stats, self.h);
+        *self = Radau5::new(t, y, rtol).with_newton_rtol(newton_rtol);
+        self.stats = stats;
+        self.h = h;
+    }
+
+    fn stats(&self) -> Stats {
+        self.stats
+    }
+}

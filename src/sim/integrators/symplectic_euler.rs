@@ -1,0 +1,34 @@
+//! Symplectic Euler, order 1 (Hairer, Lubich & Wanner, *Geometric Numerical Integration*,
+//! sec. I.1.2, variant "kick then drift"): v1 = v0 + h a(q0, v0), q1 = q0 + h v1.
+//!
+//! For a separable model (acceleration independent of velocity, the wall phase) it is
+//! symplectic, so the energy error stays bounded instead of drifting as with explicit Euler.
+
+use super::fixed::{FixedMethod, FixedStep};
+use super::Ode;
+
+/// The symplectic Euler step for a second-order state `[q, v]`.
+#[derive(Clone, Copy, Debug)]
+pub struct SymplecticEulerStep;
+
+impl<const N: usize> FixedMethod<N> for SymplecticEulerStep {
+    fn advance<S: Ode<N>>(
+        _sys: &S,
+        _t: f64,
+        y: &[f64; N],
+        f0: &[f64; N],
+        h: f64,
+        _evals: &mut u64,
+    ) -> ([f64; N], Option<[f64; N]>) {
+        let d = N / 2;
+        let mut y1 = *y;
+        for i in 0..d {
+            y1[d + i] = y[d + i] + h * f0[d + i];
+            y1[i] = y[i] + h * y1[d + i];
+        }
+        (y1, None)
+    }
+}
+
+/// Symplectic Euler with a fixed step.
+pub type SymplecticEuler<const N: usize> = FixedStep<SymplecticEulerStep, N>;

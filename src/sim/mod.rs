@@ -1,0 +1,19 @@
+//! The simulator: scene files, the two phases of the fall (wall and floor), an exact reference
+//! of the wall phase, hand-written integrators with dense output, and event location.
+//!
+//! Contents: [`scene`] (TOML scenes and their errors), [`output`] (what a scene may ask for),
+//! [`rigid`] (phase 1, the note's sec. 2.1), [`floor`] (phase 2, beyond the note), [`exact`]
+//! (reference), [`integrators`], [`event`] (crossings refined on the interpolant), [`run`] (the
+//! phase driver), [`fall`] (a whole scene), [`command`] (what the `ladder` CLI calls).
+
+pub mod command;
+pub mod event;
+pub mod exact;
+pub mod fall;
+pub mod floor;
+pub mod integrators;
+pub mod output;
+pub mod rigid;
+pub mod run;
+pub mod scene;
+mod scene_checks;

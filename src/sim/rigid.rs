@@ -1,0 +1,106 @@
+//! Phase 1 of the fall: the ladder held by the wall and the floor (rigid, frictionless contacts),
+//! one degree of freedom θ. The note's sec. 2.1: equation of motion (5), wall force (6)/(14),
+//! floor force (15), energy (2)-(3), (9)-(10) and footnote 4.
+//!
+//! State layout for the integrators: `[θ, θ̇]`.
+
+use super::integrators::Ode;
+use num_dual::DualNum;
+
+/// The ladder of the note: mass m, half length l (the ladder is 2l long), gravity g.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ladder {
+    /// m, kg.
+    pub mass: f64,
+    /// l, m (half the ladder's length; the centre of mass is at distance l from either end).
+    pub half_length: f64,
+    /// g, m/s².
+    pub gravity: f64,
+}
+
+impl Ladder {
+    /// ω² = 3g/(4l), the coefficient of eq. (5).
+    pub fn omega2(&self) -> f64 {
+        3.0 * self.gravity / (4.0 * self.half_length)
+    }
+}
+
+/// Eq. (5): θ̈ = (3g/4l) sin θ = ω² sin θ.
+pub fn angular_acceleration<D: DualNum<Primitive = f64> + Copy>(omega2: f64, theta: D) -> D {
+    theta.sin() * omega2
+}
+
+/// The factor of the wall force that changes sign at separation: g(θ, θ̇) = ω² cos θ − θ̇².
+///
+/// From eqs. (5) and (14), F_w = m l (cos θ θ̈ − sin θ θ̇²) = m l sin θ (ω² cos θ − θ̇²): the
+/// factor sin θ vanishes at θ = 0 and π, which are not separations, so events watch this factor.
+pub fn separation_factor(omega2: f64, theta: f64, rate: f64) -> f64 {
+    omega2 * theta.cos() - rate * rate
+}
+
+/// Eq. (14) on the motion (5): the wall force F_w = m l sin θ (ω² cos θ − θ̇²), along +x at C.
+pub fn wall_force(ladder: &Ladder, theta: f64, rate: f64) -> f64 {
+    ladder.mass * ladder.half_length * theta.sin() * separation_factor(ladder.omega2(), theta, rate)
+}
+
+/// Eq. (15) on the motion (5): the floor force F_f = m g − m l (sin θ θ̈ + cos θ θ̇²), along +y at D.
+pub fn floor_force(ladder: &Ladder, theta: f64, rate: f64) -> f64 {
+    let acc = angular_acceleration(ladder.omega2(), theta);
+    ladder.mass
+        * (ladder.gravity - ladder.half_length * (theta.sin() * acc + theta.cos() * rate * rate))
+}
+
+/// Eqs. (2)-(3): E = T + V = (2/3) m l² θ̇² + m g l cos θ.
+pub fn energy(ladder: &Ladder, theta: f64, rate: f64) -> f64 {
+    let (m, l) = (ladder.mass, ladder.half_length);
+    2.0 / 3.0 * m * l * l * rate * rate + m * ladder.gravity * l * theta.cos()
+}
+
+/// Footnote 4, generalised to a start with θ̇0 ≠ 0 by the energy integral (9):
+/// cos θ_s = (2 ω² cos θ0 + θ̇0²) / (3 ω²). Above 1 the wall would have to pull at the start.
+pub fn separation_cosine(omega2: f64, theta0: f64, rate0: f64) -> f64 {
+    (2.0 * omega2 * theta0.cos() + rate0 * rate0) / (3.0 * omega2)
+}
+
+/// The wall phase as an ODE for the integrators: y = [θ, θ̇], y' = [θ̇, ω² sin θ].
+#[derive(Clone, Copy, Debug)]
+pub struct WallPhase {
+    /// ω² = 3g/(4l).
+    pub omega2: f64,
+    omega: f64,
+}
+
+impl WallPhase {
+    /// The wall phase of `ladder`.
+    pub fn new(ladder: &Ladder) -> Self {
+        let omega2 = ladder.omega2();
+        WallPhase {
+            omega2,
+            omega: omega2.sqrt(),
+        }
+    }
+}
+
+/// Longest step that keeps |Δθ| ≤ 0.625 rad when |θ̈| ≤ ω²: h (|θ̇| + ω) ≤ 1/2 gives
+/// |Δθ| ≤ h|θ̇| + h²ω²/2 ≤ 1/2 + 1/8. Used by both phases (see `sim::event` for why).
+pub fn event_safe_step(omega: f64, rate: f64) -> f64 {
+    0.5 / (rate.abs() + omega)
+}
+
+impl Ode<2> for WallPhase {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 2]) -> [D; 2] {
+        [y[1], angular_acceleration(self.omega2, y[0])]
+    }
+    fn max_step(&self, y: &[f64; 2]) -> f64 {
+        event_safe_step(self.omega, y[1])
+    }
+    /// θ and θ̇/ω are both angles: one relative scale for the pair, so that a start at θ = 0
+    /// (or θ̇ = 0) is measured against the motion's size, not against an absolute tolerance.
+    fn scale(&self, y: &[f64; 2]) -> [f64; 2] {
+        let s = y[0].abs().max(y[1].abs() / self.omega);
+        [s, self.omega * s]
+    }
+    fn accel_uses_velocity(&self) -> bool {
+        false
+    }
+}

@@ -1,0 +1,180 @@
+//! The phase driver: step, watch the events, refine the first crossing on the interpolant,
+//! feed an observer. Nothing is stored here; what is kept is the observer's business, so a run
+//! that asks for nothing but the separation keeps O(1) memory.
+
+use super::event::{brent, crosses, Event};
+use super::integrators::{Ode, StepError, Stepper};
+use std::fmt;
+
+/// Receives the accepted states of a run (and, if it asks, dense samples inside each step).
+pub trait Observer<const N: usize> {
+    /// Interior dense-output samples wanted per step (0: step ends only).
+    fn samples_per_step(&self) -> usize {
+        0
+    }
+    /// One state of the motion, in time order.
+    fn observe(&mut self, t: f64, y: &[f64; N]);
+}
+
+/// The observer that keeps nothing.
+impl<const N: usize> Observer<N> for () {
+    fn observe(&mut self, _t: f64, _y: &[f64; N]) {}
+}
+
+/// Why a run stopped early.
+#[derive(Clone, Debug, PartialEq)]
+pub enum RunError {
+    /// The integrator failed.
+    Step(StepError),
+    /// The hard step limit was reached before the end.
+    TooManySteps {
+        /// The limit.
+        limit: u64,
+        /// Time reached.
+        t: f64,
+    },
+    /// The floor force reached zero in the floor phase: the foot would leave the floor.
+    LiftOff {
+        /// Time of lift-off.
+        t: f64,
+        /// Angle there.
+        theta: f64,
+    },
+    /// The run cannot start (e.g. at equilibrium nothing ever happens).
+    Start(String),
+}
+
+impl fmt::Display for RunError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            RunError::Step(e) => write!(f, "integration failed: {e}"),
+            RunError::TooManySteps { limit, t } => write!(
+                f,
+                "stopped after the step limit of {limit} steps at t = {t}: use a larger step or tolerance"
+            ),
+            RunError::LiftOff { t, theta } => write!(
+                f,
+                "the floor force reaches zero at t = {t}, θ = {theta}: the foot would lift off the floor, which this model does not follow"
+            ),
+            RunError::Start(m) => f.write_str(m),
+        }
+    }
+}
+
+impl From<StepError> for RunError {
+    fn from(e: StepError) -> Self {
+        RunError::Step(e)
+    }
+}
+
+/// Where a phase ended.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PhaseEnd<const N: usize> {
+    /// Time.
+    pub t: f64,
+    /// State.
+    pub y: [f64; N],
+    /// Index of the event that ended the phase, None when `t_end` was reached.
+    pub event: Option<usize>,
+}
+
+/// Most events a phase watches.
+pub const MAX_EVENTS: usize = 4;
+
+/// Integrate until the first event crossing or `t_end`, at most `max_steps` steps.
+/// The observer sees the state at every accepted step end (and dense samples if it asks), the
+/// last one at the end of the phase; the caller reports the initial state.
+pub fn integrate_phase<const N: usize, S: Ode<N>, St: Stepper<N>, O: Observer<N>>(
+    sys: &S,
+    stepper: &mut St,
+    events: &[&dyn Event<N>],
+    t_end: f64,
+    max_steps: u64,
+    observer: &mut O,
+) -> Result<PhaseEnd<N>, RunError> {
+    assert!(events.len() <= MAX_EVENTS, "too many events");
+    let mut prev = [0.0; MAX_EVENTS];
+    for (i, ev) in events.iter().enumerate() {
+        prev[i] = ev.value(stepper.t(), &stepper.y());
+    }
+    let mut steps = 0u64;
+    loop {
+        if steps >= max_steps {
+            return Err(RunError::TooManySteps {
+                limit: max_steps,
+                t: stepper.t(),
+            });
+        }
+        steps += 1;
+        let t0 = stepper.t();
+        stepper.step(sys, t_end)?;
+        let (t1, y1) = (stepper.t(), stepper.y());
+        // The earliest crossing among the events: (root time, event index).
+        let mut first: Option<(f64, usize)> = None;
+        for (i, ev) in events.iter().enumerate() {
+            let v1 = ev.value(t1, &y1);
+            let value_at = |s: &St, t: f64| ev.value(t, &s.interpolate(t));
+            let (mut ta, mut va) = (t0, prev[i]);
+            let mut bracket = None;
+            let k = ev.interior_samples();
+            if k > 0 {
+                stepper.prepare_dense(sys);
+                for j in 1..=k {
+                    let tj = t0 + (t1 - t0) * j as f64 / (k + 1) as f64;
+                    let vj = value_at(stepper, tj);
+                    if crosses(ev.direction(), va, vj) {
+                        bracket = Some((ta, va, tj, vj));
+                        break;
+                    }
+                    (ta, va) = (tj, vj);
+                }
+            }
+            if bracket.is_none() && crosses(ev.direction(), va, v1) {
+                bracket = Some((ta, va, t1, v1));
+            }
+            prev[i] = v1;
+            if let Some((a, fa, b, fb)) = bracket {
+                if first.is_some_and(|(r, _)| r <= a) {
+                    continue;
+                }
+                stepper.prepare_dense(sys);
+                // Refine on the interpolant; its end values may differ from the step's by a
+                // rounding, so fall back to the step's values where they disagree in sign.
+                let (ia, ib) = (value_at(stepper, a), value_at(stepper, b));
+                let (fa, fb) = if ia * ib <= 0.0 { (ia, ib) } else { (fa, fb) };
+                let root = brent(|t| value_at(stepper, t), a, b, fa, fb);
+                if first.is_none_or(|(r, _)| root < r) {
+                    first = Some((root, i));
+                }
+            }
+        }
+        let t_stop = first.map_or(t1, |(r, _)| r);
+        let k = observer.samples_per_step();
+        if k > 0 {
+            stepper.prepare_dense(sys);
+            for j in 1..=k {
+                let tj = t0 + (t1 - t0) * j as f64 / (k + 1) as f64;
+                if tj < t_stop {
+                    observer.observe(tj, &stepper.interpolate(tj));
+                }
+            }
+        }
+        if let Some((root, i)) = first {
+            let y = stepper.interpolate(root);
+            observer.observe(root, &y);
+            return Ok(PhaseEnd {
+                t: root,
+                y,
+                event: Some(i),
+            });
+        }
+        observer.observe(t1, &y1);
+        if t1 >= t_end {
+            return Ok(PhaseEnd {
+                t: t1,
+                y: y1,
+                event: None,
+            });
+        }
+    }
+}

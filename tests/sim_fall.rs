@@ -1,0 +1,232 @@
+//! The wall phase against the exact reference (`sim::exact`, an independent quadrature of the
+//! energy integral), separation found on the interpolant, never stepped over, and the classic
+//! start θ0 = 0, θ̇0 = 1e-6 to 1e-12 relative in time.
+
+use sliding_ladder::report::work_precision::scene_at;
+use sliding_ladder::sim::event::{Direction, Event};
+use sliding_ladder::sim::exact::PhaseOne;
+use sliding_ladder::sim::fall;
+use sliding_ladder::sim::integrators::dop853::Dop853;
+use sliding_ladder::sim::integrators::{Control, Ode, Stepper};
+use sliding_ladder::sim::rigid::{self, Ladder, WallPhase};
+use sliding_ladder::sim::run::{integrate_phase, Observer};
+
+const LADDER: Ladder = Ladder {
+    mass: 1.0,
+    half_length: 1.0,
+    gravity: 9.81,
+};
+
+fn separation(theta0: f64, rate0: f64, method: &str, control: Control) -> fall::SeparationState {
+    let mut sc = scene_at(theta0, rate0);
+    sc.method = method.into();
+    sc.control = Some(control);
+    fall::run(&sc, fall::MAX_STEPS).unwrap().separation.unwrap()
+}
+
+fn reference(theta0: f64, rate0: f64) -> (f64, f64) {
+    let s = PhaseOne::new(theta0, rate0, LADDER.omega2())
+        .unwrap()
+        .separation()
+        .unwrap();
+    (s.angle, s.time)
+}
+
+/// DOP853 at tolerance 1e-15: relative errors ≤ 1e-14 (angle) and ≤ 1e-13 (time) for the
+/// from-rest scenes (the project's accuracy target; the tolerance-proportional error is ~1e-15,
+/// the rest is rounding over a few dozen steps).
+#[test]
+fn dop853_meets_the_accuracy_target_from_rest() {
+    for theta0 in [0.1, 0.3, 1.0, 1.4] {
+        let s = separation(theta0, 0.0, "dop853", Control::Tolerance(1e-15));
+        let (a, t) = reference(theta0, 0.0);
+        let (ea, et) = ((s.angle - a).abs() / a, (s.time - t).abs() / t);
+        assert!(
+            ea <= 1e-14 && et <= 1e-13,
+            "θ0 = {theta0}: angle {ea:e}, time {et:e}"
+        );
+    }
+}
+
+/// The note's problem: θ0 = 0, θ̇0 = 1e-6. The separation time is ~(1/ω) ln(1/θ̇0), so its
+/// relative error is the relative error of θ in the early, exponentially growing phase; the
+/// error norm measures (θ, θ̇/ω) relative to the motion's own size (`WallPhase::scale`), not
+/// against an absolute tolerance, and the time comes out to 1e-12 relative.
+#[test]
+fn classic_start_separation_time_to_1e12() {
+    let s = separation(0.0, 1e-6, "dop853", Control::Tolerance(1e-14));
+    let (a, t) = reference(0.0, 1e-6);
+    assert!((s.time - t).abs() / t <= 1e-12, "time {} vs {}", s.time, t);
+    assert!(
+        (s.angle - a).abs() / a <= 1e-13,
+        "angle {} vs {}",
+        s.angle,
+        a
+    );
+    // The check can fail: a wrong start (θ̇0 off by 1e-9 relative) moves the time by ~2e-11.
+    let s2 = separation(
+        0.0,
+        1e-6 * (1.0 + 1e-9),
+        "dop853",
+        Control::Tolerance(1e-14),
+    );
+    assert!((s2.time - t).abs() / t > 1e-12);
+}
+
+/// A plain absolute-plus-relative error norm (what general-purpose solvers use) on the same
+/// problem loses digits: the early motion is far below the absolute tolerance.
+#[test]
+fn an_absolute_tolerance_loses_digits_on_the_classic_start() {
+    struct Plain(WallPhase);
+    impl Ode<2> for Plain {
+        fn rhs<D: num_dual::DualNum<Primitive = f64> + Copy>(&self, t: f64, y: &[D; 2]) -> [D; 2] {
+            self.0.rhs(t, y)
+        }
+        fn max_step(&self, y: &[f64; 2]) -> f64 {
+            self.0.max_step(y)
+        }
+        // weights rtol * (|y| + 1): atol = rtol, as in a default solver setup
+        fn scale(&self, y: &[f64; 2]) -> [f64; 2] {
+            y.map(|v| v.abs() + 1.0)
+        }
+    }
+    struct Sep(f64);
+    impl Event<2> for Sep {
+        fn value(&self, _t: f64, y: &[f64; 2]) -> f64 {
+            rigid::separation_factor(self.0, y[0], y[1])
+        }
+        fn direction(&self) -> Direction {
+            Direction::Falling
+        }
+    }
+    let sys = Plain(WallPhase::new(&LADDER));
+    let mut st = Dop853::new(0.0, [0.0, 1e-6], 1e-14);
+    let end = integrate_phase(
+        &sys,
+        &mut st,
+        &[&Sep(LADDER.omega2())],
+        100.0,
+        1_000_000,
+        &mut (),
+    )
+    .unwrap();
+    let (_, t) = reference(0.0, 1e-6);
+    let err = (end.t - t).abs() / t;
+    assert!(err > 1e-11, "mixed tolerance gave {err:e}");
+}
+
+struct StepWatch {
+    last: Option<f64>,
+    max_dtheta: f64,
+}
+impl Observer<2> for StepWatch {
+    fn observe(&mut self, _t: f64, y: &[f64; 2]) {
+        if let Some(prev) = self.last {
+            self.max_dtheta = self.max_dtheta.max((y[0] - prev).abs());
+        }
+        self.last = Some(y[0]);
+    }
+}
+
+struct Sep(f64);
+impl Event<2> for Sep {
+    fn value(&self, _t: f64, y: &[f64; 2]) -> f64 {
+        rigid::separation_factor(self.0, y[0], y[1])
+    }
+    fn direction(&self) -> Direction {
+        Direction::Falling
+    }
+}
+
+/// The root lies strictly inside the last step and g vanishes there to rounding: it was refined
+/// on the interpolant, not taken at a step boundary. No step moved θ by more than 5/8 rad.
+#[test]
+fn separation_is_refined_inside_a_step_and_no_step_is_long() {
+    let sys = WallPhase::new(&LADDER);
+    let mut st = Dop853::new(0.0, [0.3, 0.0], 1e-3);
+    let mut watch = StepWatch {
+        last: None,
+        max_dtheta: 0.0,
+    };
+    let end = integrate_phase(
+        &sys,
+        &mut st,
+        &[&Sep(sys.omega2)],
+        100.0,
+        10_000,
+        &mut watch,
+    )
+    .unwrap();
+    assert!(
+        st.t_prev() < end.t && end.t < st.t(),
+        "root {} not inside ({}, {})",
+        end.t,
+        st.t_prev(),
+        st.t()
+    );
+    let g = rigid::separation_factor(sys.omega2, end.y[0], end.y[1]);
+    // |g'| ~ 3ω² sin θ θ̇ ≈ 40 s⁻³; one ulp of t (~1e-16 s) moves g by ~4e-15; allow 4 ulps.
+    assert!(g.abs() <= 2e-14, "g at the root = {g:e}");
+    assert!(
+        watch.max_dtheta <= 0.625,
+        "a step moved θ by {}",
+        watch.max_dtheta
+    );
+    // The cap is what keeps steps short: without it the loose tolerance takes longer steps.
+    struct NoCap(WallPhase);
+    impl Ode<2> for NoCap {
+        fn rhs<D: num_dual::DualNum<Primitive = f64> + Copy>(&self, t: f64, y: &[D; 2]) -> [D; 2] {
+            self.0.rhs(t, y)
+        }
+        fn scale(&self, y: &[f64; 2]) -> [f64; 2] {
+            self.0.scale(y)
+        }
+    }
+    let mut st2 = Dop853::new(0.0, [0.3, 0.0], 1e-3);
+    let mut watch2 = StepWatch {
+        last: None,
+        max_dtheta: 0.0,
+    };
+    let _ = integrate_phase(&NoCap(sys), &mut st2, &[], 3.0, 10_000, &mut watch2).unwrap();
+    assert!(
+        watch2.max_dtheta > 0.625,
+        "uncapped steps were short anyway: {}",
+        watch2.max_dtheta
+    );
+}
+
+/// Every method finds the separation; its error shrinks with the step or tolerance.
+#[test]
+fn every_method_finds_the_separation() {
+    let (a, _) = reference(0.3, 0.0);
+    for (m, c) in [
+        ("euler", Control::Fixed(1e-3)),
+        ("symplectic-euler", Control::Fixed(1e-3)),
+        ("verlet", Control::Fixed(1e-3)),
+        ("rk4", Control::Fixed(1e-2)),
+        ("dopri5", Control::Tolerance(1e-8)),
+        ("radau5", Control::Tolerance(1e-8)),
+        // a fixed step far beyond the event-safety cap is shortened, the event still found
+        ("rk4", Control::Fixed(1.0)),
+    ] {
+        let s = separation(0.3, 0.0, m, c);
+        assert!((s.angle - a).abs() / a < 1e-2, "{m}: {}", s.angle);
+    }
+}
+
+/// On the motion, cos θ_s = (2/3) cos θ0 from rest (footnote 4): the simulated separation
+/// (an event on g) agrees with the closed form to the integration accuracy.
+#[test]
+fn footnote_4_from_the_simulation() {
+    for theta0 in [0.05, 0.3, 0.8] {
+        let s = separation(theta0, 0.0, "dop853", Control::Tolerance(1e-14));
+        let want = 2.0 / 3.0 * f64::cos(theta0);
+        assert!(
+            (s.angle.cos() - want).abs() <= 1e-14,
+            "θ0 = {theta0}: {} vs {want}",
+            s.angle.cos()
+        );
+        // and not the printed value for θ0 = 0 (2/3), which holds only at θ0 = 0
+        assert!((s.angle.cos() - 2.0 / 3.0).abs() > 1e-4);
+    }
+}

@@ -1,0 +1,128 @@
+//! The floor phase (beyond the note, equations/phase2.md): its equation of motion checked against
+//! energy conservation with dual numbers, continuity at separation, and the whole fall: energy
+//! and horizontal momentum conserved, the floor force positive, the top clear of the wall.
+
+use num_dual::{Dual64, DualNum};
+use sliding_ladder::report::work_precision::scene_at;
+use sliding_ladder::sim::fall;
+use sliding_ladder::sim::floor;
+use sliding_ladder::sim::integrators::Control;
+use sliding_ladder::sim::output::Output;
+use sliding_ladder::sim::rigid::{self, Ladder};
+use sliding_ladder::sim::scene::End;
+
+const LADDER: Ladder = Ladder {
+    mass: 1.3,
+    half_length: 0.7,
+    gravity: 9.81,
+};
+
+/// dE/dt along the floor-phase motion, by lifting (θ, θ̇) to dual numbers along the motion
+/// (θ → θ + θ̇ε, θ̇ → θ̇ + θ̈ε, Ẋ constant), with θ̈ from `floor::angular_acceleration` plus `bump`.
+fn energy_rate(theta: f64, rate: f64, vx: f64, bump: f64) -> f64 {
+    let g_over_l = LADDER.gravity / LADDER.half_length;
+    let acc = floor::angular_acceleration(g_over_l, theta, rate) + bump;
+    let (m, l, g) = (LADDER.mass, LADDER.half_length, LADDER.gravity);
+    let th = Dual64::new(theta, rate);
+    let w = Dual64::new(rate, acc);
+    let s = th.sin();
+    let e = (s * s + 1.0 / 3.0) * w * w * (0.5 * m * l * l)
+        + th.cos() * (m * g * l)
+        + 0.5 * m * vx * vx;
+    e.eps
+}
+
+/// Energy is conserved exactly by the phase-2 equation (to rounding), and a perturbed θ̈ breaks it.
+/// Scale of the cancelling terms: m l² θ̇ θ̈ ~ m g l θ̇, so allow 16 ulps of m g l (|θ̇| + 1).
+#[test]
+fn phase2_equation_conserves_energy_and_a_perturbed_one_does_not() {
+    let scale = LADDER.mass * LADDER.gravity * LADDER.half_length;
+    for &(theta, rate) in &[(0.2, 0.5), (0.9, 2.1), (1.3, 3.0), (1.55, 0.1)] {
+        let tol = 16.0 * f64::EPSILON * scale * (rate + 1.0);
+        assert!(energy_rate(theta, rate, 0.8, 0.0).abs() <= tol);
+        assert!(energy_rate(theta, rate, 0.8, 1e-6).abs() > tol);
+    }
+}
+
+/// At separation (θ̇² = ω² cos θ) the phase-2 θ̈ equals eq. (5)'s ω² sin θ and the floor force
+/// equals the wall phase's (mg/4 there); F_w is zero.
+#[test]
+fn phase2_continues_phase1_at_separation() {
+    let w2 = LADDER.omega2();
+    for theta in [0.5, 0.84, 1.2] {
+        let rate = (w2 * f64::cos(theta)).sqrt();
+        let a2 = floor::angular_acceleration(LADDER.gravity / LADDER.half_length, theta, rate);
+        let a1: f64 = rigid::angular_acceleration(w2, theta);
+        assert!(
+            (a2 - a1).abs() <= 8.0 * f64::EPSILON * a1.abs(),
+            "{a2} vs {a1}"
+        );
+        let f2 = floor::floor_force(&LADDER, theta, rate);
+        let f1 = rigid::floor_force(&LADDER, theta, rate);
+        let mg = LADDER.mass * LADDER.gravity;
+        assert!(
+            (f2 - f1).abs() <= 16.0 * f64::EPSILON * mg
+                && (f1 - mg / 4.0).abs() <= 16.0 * f64::EPSILON * mg
+        );
+        assert!(rigid::wall_force(&LADDER, theta, rate).abs() <= 16.0 * f64::EPSILON * mg);
+    }
+}
+
+fn full_fall(theta0: f64, rate0: f64) -> fall::Outcome {
+    let mut sc = scene_at(theta0, rate0);
+    sc.ladder = LADDER;
+    sc.control = Some(Control::Tolerance(1e-14));
+    sc.end = End::Flat;
+    sc.outputs = vec![
+        Output::FlatTime,
+        Output::FloorForceMin,
+        Output::TopClearanceMin,
+        Output::EnergyError,
+        Output::MomentumError,
+    ];
+    fall::run(&sc, fall::MAX_STEPS).unwrap()
+}
+
+/// Whole fall with DOP853 at 1e-14: energy to 1e-13 of m g l (tolerance-proportional, ~100
+/// steps), horizontal momentum exactly (Ẍ = 0 is integrated exactly by any Runge-Kutta method),
+/// the floor force positive, the top never back at the wall, and θ = π/2 at the end.
+#[test]
+fn the_whole_fall_conserves_and_stays_on_the_floor() {
+    for (theta0, rate0) in [(0.0, 1e-6), (0.3, 0.0), (1.4, 0.0)] {
+        let o = full_fall(theta0, rate0);
+        let flat = o.flat.expect("reaches flat");
+        assert!(flat.time > o.separation.unwrap().time);
+        assert!((o.last.1 - std::f64::consts::FRAC_PI_2).abs() <= 4.0 * f64::EPSILON);
+        assert!(
+            o.energy_error.unwrap() <= 1e-13,
+            "energy {:e}",
+            o.energy_error.unwrap()
+        );
+        assert_eq!(o.momentum_error.unwrap(), 0.0);
+        let r = o.floor_report.unwrap();
+        assert!(r.floor_force_min > 0.0, "floor force {}", r.floor_force_min);
+        assert!(
+            r.top_clearance_min > 0.0,
+            "top clearance {}",
+            r.top_clearance_min
+        );
+        assert!(o.work.force_evals > 0);
+    }
+}
+
+/// The flat state has Ẋ = l cos θ_s θ̇_s (kept from separation) and, from energy conservation,
+/// ½ m Ẋ² + (2/3) m l² θ̇² = m g l cos θ0 + (2/3) m l² θ̇0² at θ = π/2 (sin² + 1/3 = 4/3).
+#[test]
+fn flat_state_from_conservation_laws() {
+    let o = full_fall(0.3, 0.0);
+    let (s, f) = (o.separation.unwrap(), o.flat.unwrap());
+    let l = LADDER.half_length;
+    assert!(
+        (f.centre_velocity_x - l * s.angle.cos() * s.rate).abs()
+            <= 1e-15 * f.centre_velocity_x.abs() * 4.0
+    );
+    let (m, g) = (LADDER.mass, LADDER.gravity);
+    let lhs = 0.5 * m * f.centre_velocity_x.powi(2) + 2.0 / 3.0 * m * l * l * f.rate.powi(2);
+    let rhs = m * g * l * 0.3f64.cos();
+    assert!((lhs - rhs).abs() <= 1e-13 * rhs, "{lhs} vs {rhs}");
+}

@@ -1,0 +1,90 @@
+//! The outputs decide what is computed and kept: a separation-only scene evaluates no force, keeps
+//! no sample, never builds the floor phase, and its memory does not grow with the step count.
+
+use sliding_ladder::report::work_precision::scene_at;
+use sliding_ladder::sim::fall::{self, Plan};
+use sliding_ladder::sim::integrators::Control;
+use sliding_ladder::sim::output::Output;
+use sliding_ladder::sim::scene::End;
+
+fn run(outputs: Vec<Output>, end: End, control: Control) -> fall::Outcome {
+    let mut sc = scene_at(0.3, 0.0);
+    sc.method = if matches!(control, Control::Fixed(_)) {
+        "rk4".into()
+    } else {
+        "dop853".into()
+    };
+    sc.control = Some(control);
+    sc.end = end;
+    sc.outputs = outputs;
+    fall::run(&sc, fall::MAX_STEPS).unwrap()
+}
+
+#[test]
+fn separation_angle_only_computes_nothing_else() {
+    for h in [1e-3, 1e-4] {
+        let o = run(
+            vec![Output::SeparationAngle],
+            End::Separation,
+            Control::Fixed(h),
+        );
+        assert_eq!(o.plan, Plan::default());
+        assert_eq!(o.work.force_evals, 0);
+        assert_eq!(o.work.stored_samples, 0);
+        assert!(o.trace.is_none() && o.work.floor.is_none() && o.energy_error.is_none());
+        assert!(
+            o.work.wall.steps as f64 > 0.5 / h,
+            "{} steps",
+            o.work.wall.steps
+        );
+    }
+}
+
+#[test]
+fn a_trace_is_kept_only_when_asked_and_grows_with_the_steps() {
+    let few = run(
+        vec![Output::Trajectory],
+        End::Separation,
+        Control::Fixed(1e-2),
+    );
+    let many = run(
+        vec![Output::Trajectory],
+        End::Separation,
+        Control::Fixed(1e-3),
+    );
+    assert!(few.work.stored_samples > 0 && many.work.stored_samples > 5 * few.work.stored_samples);
+    assert_eq!(
+        few.work.force_evals, 0,
+        "a trajectory without forces evaluates no force"
+    );
+    let forces = run(vec![Output::Forces], End::Separation, Control::Fixed(1e-2));
+    assert_eq!(
+        forces.work.force_evals,
+        2 * forces.work.stored_samples as u64
+    );
+}
+
+#[test]
+fn the_floor_phase_is_built_only_for_its_outputs() {
+    let sep = run(
+        vec![Output::SeparationTime, Output::EnergyError],
+        End::Separation,
+        Control::Tolerance(1e-10),
+    );
+    assert!(sep.work.floor.is_none() && sep.flat.is_none());
+    let flat = run(vec![Output::FlatTime], End::Flat, Control::Tolerance(1e-10));
+    assert!(flat.work.floor.is_some() && flat.flat.is_some());
+    // flat without monitors: only the lift-off watch evaluates the floor force
+    assert!(flat.work.force_evals > 0 && flat.floor_report.is_none());
+}
+
+#[test]
+fn end_at_time_stops_there() {
+    let o = run(
+        vec![Output::FinalState],
+        End::Time(0.2),
+        Control::Tolerance(1e-12),
+    );
+    assert_eq!(o.last.0, 0.2);
+    assert!(o.separation.is_none());
+}
