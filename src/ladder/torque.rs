@@ -272,3 +272,32 @@ pub fn eq28_second_form_corrected<T: Scalar>(ladder: &Ladder<T>, st: &State<T>) 
     let f_e = eq26_coordinate_force_e(ladder, st)[1].clone();
     torque_about_e(ladder, st) + f_e.x * k.l() * k.c() - f_e.y * k.l() * k.s()
 }
+
+/// The note's analysis about one of A-E as a residual: d/dt of the printed angular momentum
+/// ((12), (18), (21), (24), (27), differentiated along the motion) minus the printed torque side
+/// ((16), (19), (22), (25) second form; (28) third form, since its second form is misprinted).
+pub fn analysis_residual<T: Scalar>(k: super::geometry::Corner, l: &Ladder<T>, s: &State<T>) -> T {
+    use super::geometry::Corner;
+    use crate::system::rate;
+    let (lc, sl) = (l.constant(), s.along_motion());
+    match k {
+        Corner::A => {
+            rate::<T>(angular_momentum_about_a(&lc, &sl)) - eq16_torque_analysis_a(l, s)[1].clone()
+        }
+        Corner::B => {
+            rate::<T>(angular_momentum_about_b(&lc, &sl)) - eq19_torque_analysis_b(l, s)[1].clone()
+        }
+        Corner::C => {
+            rate::<T>(eq21_angular_momentum_about_c(&lc, &sl)[1].clone())
+                - eq22_torque_analysis_c(l, s)[1].clone()
+        }
+        Corner::D => {
+            rate::<T>(eq24_angular_momentum_about_d(&lc, &sl)[1].clone())
+                - eq25_torque_analysis_d(l, s)[1].clone()
+        }
+        Corner::E => {
+            rate::<T>(eq27_angular_momentum_about_e(&lc, &sl)[1].clone())
+                - eq28_torque_analysis_e(l, s)[2].clone()
+        }
+    }
+}

@@ -13,6 +13,7 @@ pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
     let t = Instant::now();
     let results = verify_all(cfg);
     let docs = crate::docs::check_book(&crate::docs::default_dir());
+    let methods = crate::verify::check_methods(cfg);
     let seconds = t.elapsed().as_secs_f64();
     let (v, e, d, f) = counts(&results);
     if json_out {
@@ -22,6 +23,7 @@ pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
                          "float_cases_per_check": cfg.float_cases, "exact_points_per_check": cfg.exact_points,
                          "seed": cfg.seed, "seconds": seconds},
             "docs": {"problems": docs.problems, "sections": docs.equations_found, "examples_run": docs.examples_run},
+            "methods": methods,
         });
         println!(
             "{}",
@@ -30,6 +32,15 @@ pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
     } else {
         print!("{}", table(&results));
         println!("{}", summary_line(&results, cfg, seconds));
+        let failed_methods: Vec<_> = methods.iter().filter(|m| !m.passed).collect();
+        println!(
+            "methods: {} derivations of the equation of motion checked (θ̈ solved from each equals (5); each residual vanishes on the motion only), {} failed",
+            methods.len(),
+            failed_methods.len()
+        );
+        for m in failed_methods {
+            println!("  ! {}: {}", m.name, m.problems.join("; "));
+        }
         println!(
             "docs: {} equations found in equations/*.md, {} example rows run, {} problems",
             docs.equations_found,
@@ -40,7 +51,8 @@ pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
             println!("  ! {p}");
         }
     }
-    if f == 0 && docs.problems.is_empty() && results.len() == 90 {
+    if f == 0 && docs.problems.is_empty() && results.len() == 90 && methods.iter().all(|m| m.passed)
+    {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)

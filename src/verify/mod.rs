@@ -197,3 +197,43 @@ pub fn table(results: &[EquationResult]) -> String {
     }
     out
 }
+
+/// The verdict on one derivation of the equation of motion ([`crate::method`]).
+#[derive(Clone, Debug, Serialize)]
+pub struct MethodResult {
+    /// The method's name.
+    pub name: &'static str,
+    /// Every check passed.
+    pub passed: bool,
+    /// Float states evaluated.
+    pub cases: usize,
+    /// Largest float residual in units of its error bound.
+    pub max_residual: f64,
+    /// What went wrong, if anything.
+    pub problems: Vec<String>,
+}
+
+/// Check every method of the note ([`crate::method::methods`]).
+pub fn check_methods(cfg: &Config) -> Vec<MethodResult> {
+    crate::method::methods()
+        .into_iter()
+        .map(|(name, checks)| {
+            let reports: Vec<CheckReport> = checks.iter().map(|c| run_check(c, cfg)).collect();
+            let problems = reports
+                .iter()
+                .filter(|r| !r.passed())
+                .map(|r| format!("{} failed", r.name))
+                .collect();
+            MethodResult {
+                name,
+                passed: reports.iter().all(CheckReport::passed),
+                cases: reports.iter().map(|r| r.float_cases).sum(),
+                max_residual: reports
+                    .iter()
+                    .map(|r| r.max_scaled_residual)
+                    .fold(0.0, f64::max),
+                problems,
+            }
+        })
+        .collect()
+}
