@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Reference values for tests/exact_reference.rs (phase one of the sliding ladder).
 
-Regenerate with `python3 tools/exact_reference.py` (needs mpmath; `pip install mpmath`).
-The printed Rust rows are pasted into `tests/exact_reference.rs`.
+Regenerate with `python3 tools/exact_reference.py` (separation table) and
+`python3 tools/exact_reference.py --jacobi` (Jacobi table); needs mpmath (`pip install mpmath`).
+The printed Rust rows are pasted into `tests/exact_common/mod.rs`.
 
 Method (independent of src/sim/exact): every input is the exact binary64 value the Rust test
 passes, lifted to 60 significant digits.  The separation angle comes from the note's footnote 4
@@ -127,7 +128,27 @@ CASES = (
 )
 
 
+# Jacobi functions: (k', argument, 0 = u from zero / 1 = v back from K), values at u or K - v.
+JACOBI = [(0.5, 0.3, 0), (0.9, 1.2, 0), (1e-6, 3.0, 0), (1e-12, 5.0, 0), (0.3, -0.7, 0),
+          (1.0, 0.7, 0), (1e-100, 100.0, 0), (1e-12, 1.1, 1), (1e-6, 0.5, 1), (0.5, 0.2, 1),
+          (1e-100, 2.0, 1), (1e-12, 14.5, 1)]
+
+
+def jacobi_rows():
+    print("// (k', arg, from_quarter, K, sn, cn, dn), mpmath.ellipfun at m = 1 - k'^2")
+    for kc, arg, quarter in JACOBI:
+        with mp.workdps(mp.mp.dps + 220):  # m = 1 - 1e-200 must survive
+            m = 1 - mp.mpf(kc) ** 2
+            K = mp.ellipk(m)
+            u = K - mp.mpf(arg) if quarter else mp.mpf(arg)
+            vals = [K] + [mp.ellipfun(f, u, m=m) for f in ("sn", "cn", "dn")]
+        row = f"{kc!r}, {arg!r}, {float(quarter)!r}, " + ", ".join(mp.nstr(v, 25) for v in vals)
+        print(f"    [{row}],")
+
+
 def main():
+    if "--jacobi" in sys.argv:
+        return jacobi_rows()
     print("// (theta0, rate0, omega2, sep_angle, sep_time, sep_rate, t_mid, theta_mid, rate_mid)")
     for th0f, r0f, w2f in CASES:
         vals = case(th0f, r0f, w2f)

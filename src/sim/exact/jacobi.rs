@@ -40,19 +40,16 @@ use std::f64::consts::FRAC_PI_2;
 /// and b grows like the square root of itself before that (about 11 levels for 1e-300).
 const LEVELS: usize = 20;
 
-/// Below this |u| the Taylor polynomials sn = u, cn = 1 − u²/2, dn = 1 − k²u²/2 are exact to
-/// half an ulp (the next terms are below u³/6 ≤ 1.7e-28 |u|).
-const TAYLOR_BELOW: f64 = 1e-9;
-
 /// The AGM of (1, k') with its whole history: the descending Landen chain of modulus k.
 #[derive(Clone, Debug)]
 pub struct Agm {
     a: [f64; LEVELS],
     b: [f64; LEVELS],
+    /// a_n − b_n = 2c_{n+1} (DLMF 22.20.1), from d₀ = k²/(2a₁), d_{n+1} = d_n²/(8a_{n+2}):
+    /// no difference of nearly equal numbers is ever formed.
+    d: [f64; LEVELS],
     /// Index of the last level: a[last] = b[last] to working precision.
     last: usize,
-    /// k² = 1 − k'², passed in by the caller, who knows it without cancellation.
-    k2: f64,
 }
 
 /// sn, cn, dn at one argument, each with its relative accuracy (see the module docs).
@@ -65,8 +62,6 @@ pub struct Jacobi<D = f64> {
     pub cn: D,
     /// dn(u|k).
     pub dn: D,
-    /// cs(u|k) = cn/sn, the quantity the recurrence carries.
-    pub cs: D,
 }
 
 /// Which argument the caller knows accurately.
@@ -85,6 +80,7 @@ impl Agm {
         debug_assert!(kc > 0.0 && kc <= 1.0, "complementary modulus {kc} outside (0, 1]");
         let mut a = [0.0; LEVELS];
         let mut b = [0.0; LEVELS];
+        let mut d = [0.0; LEVELS];
         a[0] = 1.0;
         b[0] = kc;
         let mut last = 0;
@@ -94,7 +90,13 @@ impl Agm {
             b[last + 1] = (a[last] * b[last]).sqrt();
             last += 1;
         }
-        Agm { a, b, last, k2 }
+        if last > 0 {
+            d[0] = k2 / (2.0 * a[1]);
+        }
+        for n in 1..last {
+            d[n] = d[n - 1] * d[n - 1] / (8.0 * a[n + 1]);
+        }
+        Agm { a, b, d, last }
     }
 
     /// The arithmetic-geometric mean M(1, k') = π / (2K).
@@ -110,34 +112,87 @@ impl Agm {
     /// sn, cn, dn of modulus k at the argument `arg` (f64 or a dual number).
     pub fn eval<D: DualNum<Primitive = f64> + Copy>(&self, arg: Arg<D>) -> Jacobi<D> {
         let m = self.mean();
-        let one = D::from(1.0);
-        // cot(a_N u) and the sign of sin(a_N u), from whichever argument is accurate.
-        let (cs_last, sign) = match arg {
-            Arg::FromZero(u) if u.re().abs() < TAYLOR_BELOW => {
-                let u2 = u * u;
-                let (sn, cn, dn) = (u, one - u2 * 0.5, one - u2 * (0.5 * self.k2));
-                return Jacobi { sn, cn, dn, cs: cn / sn };
-            }
+        // cot(a_N u) as a quotient c/s of a sine and cosine, from whichever argument is accurate,
+        // and the sign of sin(a_N u), which is the sign of sn.
+        let (num, den, sign) = match arg {
             Arg::FromZero(u) => {
                 let (s, c) = (u * m).sin_cos();
-                (c / s, s.re().signum())
+                (c, s, s.re().signum())
             }
             Arg::FromQuarter(v) => {
                 let (s, c) = (v * m).sin_cos();
-                (s / c, c.re().signum())
+                (s, c, c.re().signum())
             }
         };
+        if num.re().abs() <= den.re().abs() {
+            self.descend_cs(num / den, sign)
+        } else {
+            self.descend_sc(den / num, sign)
+        }
+    }
+
+    /// The descent carried in X = a cs, for |cs_N| ≤ 1 (u at least halfway to K).
+    fn descend_cs<D: DualNum<Primitive = f64> + Copy>(&self, cs_last: D, sign: f64) -> Jacobi<D> {
         let mut cs = cs_last;
-        let mut x = cs * m;
-        let mut dn = one;
+        let mut x = cs * self.mean();
+        let mut dn = D::from(1.0);
         for n in (0..self.last).rev() {
-            let p = x * cs;
-            let dn_n = (p + self.b[n]) / (p + self.a[n]);
+            // p = X_{n+1} cs_{n+1} = X_{n+1}²/a_{n+1}.
+            let dn_n = self.landen_dn(n, x * cs);
             x *= dn;
             cs = x / self.a[n];
             dn = dn_n;
         }
+        finish(cs, None, dn, sign)
+    }
+
+    /// The same descent in Y = 1/X = sc/a, for |sc_N| < 1 (u less than halfway to K): no
+    /// reciprocal of a small quantity is formed, so values and derivatives stay smooth at u = 0.
+    fn descend_sc<D: DualNum<Primitive = f64> + Copy>(&self, sc_last: D, sign: f64) -> Jacobi<D> {
+        let mut y = sc_last / self.mean();
+        let mut dn = D::from(1.0);
+        for n in (0..self.last).rev() {
+            // p = 1/(a_{n+1} y²), passed as its reciprocal.
+            let dn_n = self.landen_dn_recip(n, y * y * self.a[n + 1]);
+            y /= dn;
+            dn = dn_n;
+        }
+        finish(y.recip(), Some(y), dn, sign) // a₀ = 1: sc₀ = Y₀
+    }
+
+    /// dn_n = (p + b_n)/(p + a_n), in whichever of two equal forms neither cancels in value
+    /// nor (for dual numbers) in the derivative: the quotient while p < a_n, where dn may be
+    /// small, else 1 − d_n/(p + a_n), where the quotient's derivative p'(p + a) − (p + b)p'
+    /// would cancel.
+    fn landen_dn<D: DualNum<Primitive = f64> + Copy>(&self, n: usize, p: D) -> D {
+        if p.re() < self.a[n] {
+            (p + self.b[n]) / (p + self.a[n])
+        } else {
+            D::from(1.0) - (p + self.a[n]).recip() * self.d[n]
+        }
+    }
+
+    /// [`Agm::landen_dn`] given q = 1/p.
+    fn landen_dn_recip<D: DualNum<Primitive = f64> + Copy>(&self, n: usize, q: D) -> D {
+        let one = D::from(1.0);
+        if q.re() * self.a[n] > 1.0 {
+            (q * self.b[n] + one) / (q * self.a[n] + one)
+        } else {
+            one - q * self.d[n] / (q * self.a[n] + one)
+        }
+    }
+}
+
+/// sn = ±1/√(1 + cs²), cn = cs·sn, written through whichever of cs, sc = 1/cs is at most 1 in
+/// size so that the derivatives of sn and cn do not cancel to the order of cs² or sc².
+fn finish<D: DualNum<Primitive = f64> + Copy>(cs: D, sc: Option<D>, dn: D, sign: f64) -> Jacobi<D> {
+    let one = D::from(1.0);
+    if cs.re().abs() <= 1.0 {
         let sn = (one + cs * cs).sqrt().recip() * sign;
-        Jacobi { sn, cn: cs * sn, dn, cs }
+        Jacobi { sn, cn: cs * sn, dn }
+    } else {
+        let sc = sc.unwrap_or_else(|| cs.recip());
+        let cn = (one + sc * sc).sqrt().recip() * (sign * sc.re().signum());
+        Jacobi { sn: cn * sc, cn, dn }
     }
 }

@@ -220,6 +220,18 @@ impl PhaseOne {
         }
     }
 
+    /// The same motion with the complementary modulus k' multiplied by `factor`: a deliberately
+    /// wrong closed form, for tests that must see their checks fail.
+    #[doc(hidden)]
+    pub fn with_modulus_factor(&self, factor: f64) -> PhaseOne {
+        let mut wrong = self.clone();
+        if let Orbit::Elliptic { kc, k, agm, .. } = &mut wrong.orbit {
+            *kc *= factor;
+            *agm = Agm::new(*kc, *k * *k);
+        }
+        wrong
+    }
+
     fn start(&self) -> End {
         End { s: self.s0, c: self.c0, r: self.rho }
     }
