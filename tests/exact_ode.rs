@@ -21,8 +21,11 @@ fn worst_ratio(p: &PhaseOne, omega2: f64, t_end: f64) -> f64 {
     // the formula has no phase), plus the start's own condition κu/ω.
     let omega = omega2.sqrt();
     let k = p.quarter_period();
-    let shift = if k.is_finite() { C * U * 2.0 * k / omega } else { 0.0 }
-        + input_condition(theta0, rate0, omega2) * U / omega;
+    let shift = if k.is_finite() {
+        C * U * 2.0 * k / omega
+    } else {
+        0.0
+    } + input_condition(theta0, rate0, omega2) * U / omega;
     let (theta_start, rate_start) = p.theta_rate(0.0);
     let r0 = (theta_start - theta0).abs() / (C * U * theta0 + rate0 * shift + f64::MIN_POSITIVE);
     let accel0 = omega2 * theta0.sin();
@@ -83,7 +86,10 @@ fn equation_of_motion_check_fails_for_wrong_omega() {
     for row in moving_rows() {
         let omega2 = row[2] * (1.0 + 1e-9) * (1.0 + 1e-9);
         let p = PhaseOne::new(row[0], row[1], omega2).unwrap();
-        assert!(worst_ratio(&p, row[2], row[4]) > 1.0, "ω(1 + 1e-9) passed for {row:?}");
+        assert!(
+            worst_ratio(&p, row[2], row[4]) > 1.0,
+            "ω(1 + 1e-9) passed for {row:?}"
+        );
     }
 }
 
@@ -93,7 +99,12 @@ fn equation_of_motion_check_fails_for_wrong_modulus() {
     // see; the initial conditions do, except at starts whose own condition κ (see
     // input_condition) already swamps 1e-6.
     for row in moving_rows().filter(|row| input_condition(row[0], row[1], row[2]) < 1e6) {
-        let p = PhaseOne::new(row[0], row[1], row[2]).unwrap().with_modulus_factor(1.0 - 1e-6);
-        assert!(worst_ratio(&p, row[2], row[4]) > 1.0, "k'(1 − 1e-6) passed for {row:?}");
+        let p = PhaseOne::new(row[0], row[1], row[2])
+            .unwrap()
+            .with_modulus_factor(1.0 - 1e-6);
+        assert!(
+            worst_ratio(&p, row[2], row[4]) > 1.0,
+            "k'(1 − 1e-6) passed for {row:?}"
+        );
     }
 }

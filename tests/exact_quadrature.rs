@@ -24,7 +24,11 @@ struct Sum {
 impl Sum {
     fn add(&mut self, x: f64) {
         let t = self.s + x;
-        self.c += if self.s.abs() >= x.abs() { (self.s - t) + x } else { (x - t) + self.s };
+        self.c += if self.s.abs() >= x.abs() {
+            (self.s - t) + x
+        } else {
+            (x - t) + self.s
+        };
         self.s = t;
     }
     fn value(&self) -> f64 {
@@ -43,7 +47,11 @@ fn tanh_sinh(g: impl Fn(f64) -> f64, len: f64) -> (f64, f64) {
         let d = if tau < 0.0 { near } else { len - near };
         let w = len * 0.5 * PI * tau.cosh() * e / ((1.0 + e) * (1.0 + e)) * 2.0;
         let f = g(d);
-        if f.is_finite() { w * f } else { 0.0 }
+        if f.is_finite() {
+            w * f
+        } else {
+            0.0
+        }
     };
     let mut h = 0.5;
     let mut total = Sum::default();
@@ -74,7 +82,10 @@ fn tanh_sinh(g: impl Fn(f64) -> f64, len: f64) -> (f64, f64) {
 }
 
 fn quadrature_time(theta0: f64, rate0: f64, omega2: f64, theta: f64) -> (f64, f64) {
-    tanh_sinh(|d| 1.0 / rate_at_offset(theta0, rate0, omega2, d), theta - theta0)
+    tanh_sinh(
+        |d| 1.0 / rate_at_offset(theta0, rate0, omega2, d),
+        theta - theta0,
+    )
 }
 
 /// Error model for |closed form − quadrature|: the quadrature's own estimate; 4u of the
@@ -83,7 +94,10 @@ fn quadrature_time(theta0: f64, rate0: f64, omega2: f64, theta: f64) -> (f64, f6
 /// the upper end θ₀ + (θ − θ₀), worth u·θ/θ̇(θ); and the start's own condition κu/ω.
 fn tolerance(theta0: f64, rate0: f64, omega2: f64, theta: f64, t: f64, estimate: f64) -> f64 {
     let end_rate = rate_at_offset(theta0, rate0, omega2, theta - theta0);
-    estimate + 16.0 * U * t + U * theta / end_rate + input_condition(theta0, rate0, omega2) * U / omega2.sqrt()
+    estimate
+        + 16.0 * U * t
+        + U * theta / end_rate
+        + input_condition(theta0, rate0, omega2) * U / omega2.sqrt()
 }
 
 /// Largest |closed − quadrature| / tolerance over the table, for separation times and for
@@ -96,7 +110,11 @@ fn worst_ratio(make: impl Fn(f64, f64, f64) -> PhaseOne) -> f64 {
         let s = p.separation().unwrap();
         for frac in [0.25, 0.5, 1.0] {
             let theta = theta0 + frac * (s.angle - theta0);
-            let closed = if frac == 1.0 { p.time_to_angle(s.angle) } else { p.time_to_angle(theta) };
+            let closed = if frac == 1.0 {
+                p.time_to_angle(s.angle)
+            } else {
+                p.time_to_angle(theta)
+            };
             let (quad, est) = quadrature_time(theta0, rate0, omega2, theta);
             let tol = tolerance(theta0, rate0, omega2, theta, quad, est);
             worst = worst.max((closed - quad).abs() / tol);
@@ -116,7 +134,10 @@ fn closed_form_times_match_quadrature() {
 fn quadrature_catches_a_wrong_modulus() {
     // t(θ) does not use the Jacobi modulus; perturb ω instead, by 1e-9 (as the issue asks).
     let worst = worst_ratio(|a, b, c| PhaseOne::new(a, b, c * (1.0 + 2e-9)).unwrap());
-    assert!(worst > 1.0, "a 1e-9 error in omega passed the quadrature check");
+    assert!(
+        worst > 1.0,
+        "a 1e-9 error in omega passed the quadrature check"
+    );
 }
 
 #[test]
@@ -126,9 +147,17 @@ fn random_starts_match_quadrature() {
     let mut worst = 0.0f64;
     let mut checked = 0;
     for _ in 0..300 {
-        let theta0 = if rng.gen_bool(0.2) { 0.0 } else { 10f64.powf(rng.gen_range(-12.0..0.19)) };
+        let theta0 = if rng.gen_bool(0.2) {
+            0.0
+        } else {
+            10f64.powf(rng.gen_range(-12.0..0.19))
+        };
         let omega2 = 10f64.powf(rng.gen_range(-2.0..2.0));
-        let rate0 = if rng.gen_bool(0.3) { 0.0 } else { omega2.sqrt() * 10f64.powf(rng.gen_range(-15.0..0.0)) };
+        let rate0 = if rng.gen_bool(0.3) {
+            0.0
+        } else {
+            omega2.sqrt() * 10f64.powf(rng.gen_range(-15.0..0.0))
+        };
         if theta0 >= FRAC_PI_2 || (theta0 == 0.0 && rate0 == 0.0) {
             continue;
         }
@@ -140,12 +169,19 @@ fn random_starts_match_quadrature() {
         let closed = p.time_to_angle(s.angle);
         let (quad, est) = quadrature_time(theta0, rate0, omega2, s.angle);
         let tol = tolerance(theta0, rate0, omega2, s.angle, quad, est);
-        assert!((closed - quad).abs() <= tol, "start ({theta0}, {rate0}, {omega2}): {closed} vs {quad} ± {tol}");
+        assert!(
+            (closed - quad).abs() <= tol,
+            "start ({theta0}, {rate0}, {omega2}): {closed} vs {quad} ± {tol}"
+        );
         // The separation time from δ must agree with t(θ_s) up to the error of θ_s (within 4
         // ulps, tests/exact_reference.rs), which t(θ) turns into 4 ulp(θ_s)/θ̇_s.
         let ulp = f64::from_bits(s.angle.to_bits() + 1) - s.angle;
         let tol2 = 8.0 * U * s.time + 4.0 * ulp / s.rate;
-        assert!((s.time - closed).abs() <= tol2, "({theta0}, {rate0}, {omega2}): {} vs {closed} ± {tol2}", s.time);
+        assert!(
+            (s.time - closed).abs() <= tol2,
+            "({theta0}, {rate0}, {omega2}): {} vs {closed} ± {tol2}",
+            s.time
+        );
         worst = worst.max((closed - quad).abs() / tol);
         checked += 1;
     }

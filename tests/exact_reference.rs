@@ -19,7 +19,11 @@ fn worst_separation_ulps(sep_of: impl Fn(&[f64; 9]) -> Separation) -> [f64; 3] {
         let s = sep_of(row);
         let allowance = input_condition(row[0], row[1], row[2]) * U / row[2].sqrt();
         let time_err = ((s.time - row[4]).abs() - allowance).max(0.0);
-        let errs = [ulps(s.angle, row[3]), ulps(row[4] + time_err, row[4]), ulps(s.rate, row[5])];
+        let errs = [
+            ulps(s.angle, row[3]),
+            ulps(row[4] + time_err, row[4]),
+            ulps(s.rate, row[5]),
+        ];
         for (w, e) in worst.iter_mut().zip(errs) {
             *w = w.max(e);
         }
@@ -30,9 +34,18 @@ fn worst_separation_ulps(sep_of: impl Fn(&[f64; 9]) -> Separation) -> [f64; 3] {
 #[test]
 fn separation_within_four_ulps_of_mpmath() {
     let worst = worst_separation_ulps(|row| phase(row).separation().expect("moves"));
-    println!("max ulps over {} starts: angle {}, time {}, rate {}", SEPARATION.len(), worst[0], worst[1], worst[2]);
+    println!(
+        "max ulps over {} starts: angle {}, time {}, rate {}",
+        SEPARATION.len(),
+        worst[0],
+        worst[1],
+        worst[2]
+    );
     for (name, w) in ["angle", "time", "rate"].iter().zip(worst) {
-        assert!(w <= TARGET_ULPS, "separation {name}: {w} ulps > {TARGET_ULPS}");
+        assert!(
+            w <= TARGET_ULPS,
+            "separation {name}: {w} ulps > {TARGET_ULPS}"
+        );
     }
 }
 
@@ -41,9 +54,15 @@ fn separation_check_fails_for_wrong_omega() {
     // ω·(1 + 1e-9): times scale by 1/ω, so the check must see some 4e6 ulps.
     let worst = worst_separation_ulps(|row| {
         let omega2 = row[2] * (1.0 + 1e-9) * (1.0 + 1e-9);
-        PhaseOne::new(row[0], row[1], omega2).unwrap().separation().unwrap()
+        PhaseOne::new(row[0], row[1], omega2)
+            .unwrap()
+            .separation()
+            .unwrap()
     });
-    assert!(worst[1] > TARGET_ULPS, "a 1e-9 error in omega went unnoticed: {worst:?}");
+    assert!(
+        worst[1] > TARGET_ULPS,
+        "a 1e-9 error in omega went unnoticed: {worst:?}"
+    );
 }
 
 /// Error model for θ(t), θ̇(t): the phase u₀ + Ωt (or v₀ − Ωt), of size at most 2K plus Ωt, is
@@ -57,7 +76,10 @@ fn theta_tolerance(p: &PhaseOne, t: f64, theta: f64, rate: f64, row: &[f64; 9]) 
         + input_condition(row[0], row[1], row[2]) * U / omega;
     let accel = row[2] * theta.sin();
     let jerk = row[2] * theta.cos() * rate;
-    (C * U * theta + rate * shift, C * U * rate + (accel + jerk.abs()) * shift)
+    (
+        C * U * theta + rate * shift,
+        C * U * rate + (accel + jerk.abs()) * shift,
+    )
 }
 
 #[test]
@@ -67,8 +89,16 @@ fn mid_course_state_matches_mpmath() {
         let p = phase(row);
         let (theta, rate) = p.theta_rate(row[6]);
         let (tol_theta, tol_rate) = theta_tolerance(&p, row[6], row[7], row[8], row);
-        assert!((theta - row[7]).abs() <= tol_theta, "θ({}) for {row:?}: {theta}", row[6]);
-        assert!((rate - row[8]).abs() <= tol_rate, "θ̇({}) for {row:?}: {rate}", row[6]);
+        assert!(
+            (theta - row[7]).abs() <= tol_theta,
+            "θ({}) for {row:?}: {theta}",
+            row[6]
+        );
+        assert!(
+            (rate - row[8]).abs() <= tol_rate,
+            "θ̇({}) for {row:?}: {rate}",
+            row[6]
+        );
         worst_theta = worst_theta.max(ulps(theta, row[7]));
         worst_rate = worst_rate.max(ulps(rate, row[8]));
     }
@@ -87,7 +117,10 @@ fn mid_course_check_fails_for_wrong_modulus() {
         let (tol_theta, tol_rate) = theta_tolerance(&p, row[6], row[7], row[8], row);
         (theta - row[7]).abs() > tol_theta || (rate - row[8]).abs() > tol_rate
     });
-    assert!(caught, "a wrong modulus passed the mid-course check for some start");
+    assert!(
+        caught,
+        "a wrong modulus passed the mid-course check for some start"
+    );
 }
 
 #[test]
@@ -100,7 +133,11 @@ fn time_to_separation_angle_is_separation_time() {
         let ulp = f64::from_bits(s.angle.to_bits() + 1) - s.angle;
         let tol = 8.0 * U * s.time + 4.0 * ulp / s.rate;
         let t = p.time_to_angle(s.angle);
-        assert!((t - s.time).abs() <= tol, "{row:?}: t(θ_s) = {t}, t_s = {}", s.time);
+        assert!(
+            (t - s.time).abs() <= tol,
+            "{row:?}: t(θ_s) = {t}, t_s = {}",
+            s.time
+        );
     }
 }
 
@@ -110,14 +147,28 @@ fn jacobi_functions_match_mpmath() {
     for &[kc, arg, quarter, k_ref, sn_ref, cn_ref, dn_ref] in JACOBI.iter() {
         let k2 = (1.0 - kc) * (1.0 + kc);
         let agm = Agm::new(kc, k2);
-        let j = agm.eval(if quarter == 0.0 { Arg::FromZero(arg) } else { Arg::FromQuarter(arg) });
+        let j = agm.eval(if quarter == 0.0 {
+            Arg::FromZero(arg)
+        } else {
+            Arg::FromQuarter(arg)
+        });
         // Model: relative error 38u (as above) plus the argument's own condition |arg|·|f'/f|,
         // with f' from DLMF 22.13.1–3 evaluated on the references.
         let k2r = 1.0 - kc * kc;
-        let conds = [cn_ref * dn_ref / sn_ref, sn_ref * dn_ref / cn_ref, k2r * sn_ref * cn_ref / dn_ref];
-        for ((got, want), cond) in [(j.sn, sn_ref), (j.cn, cn_ref), (j.dn, dn_ref)].into_iter().zip(conds) {
+        let conds = [
+            cn_ref * dn_ref / sn_ref,
+            sn_ref * dn_ref / cn_ref,
+            k2r * sn_ref * cn_ref / dn_ref,
+        ];
+        for ((got, want), cond) in [(j.sn, sn_ref), (j.cn, cn_ref), (j.dn, dn_ref)]
+            .into_iter()
+            .zip(conds)
+        {
             let tol = (38.0 + 4.0 * arg.abs() * cond.abs()) * U * want.abs();
-            assert!((got - want).abs() <= tol, "k' = {kc}, arg = {arg}: {got} vs {want}");
+            assert!(
+                (got - want).abs() <= tol,
+                "k' = {kc}, arg = {arg}: {got} vs {want}"
+            );
             worst = worst.max(ulps(got, want));
         }
         assert!(ulps(agm.quarter_period(), k_ref) <= TARGET_ULPS, "K({kc})");
@@ -135,11 +186,22 @@ fn scale_invariance_is_exact_for_powers_of_four() {
             let omega = 2f64.powi(j);
             let p = PhaseOne::new(row[0], row[1] * omega, omega * omega).unwrap();
             let s = p.separation().unwrap();
-            assert_eq!(s.angle, s1.angle, "angle depends on omega: {row:?}, j = {j}");
-            assert_eq!(s.time * omega, s1.time, "time not 1/omega: {row:?}, j = {j}");
+            assert_eq!(
+                s.angle, s1.angle,
+                "angle depends on omega: {row:?}, j = {j}"
+            );
+            assert_eq!(
+                s.time * omega,
+                s1.time,
+                "time not 1/omega: {row:?}, j = {j}"
+            );
             assert_eq!(s.rate / omega, s1.rate, "rate not omega: {row:?}, j = {j}");
             let t = 0.37 * s1.time;
-            assert_eq!(p.theta(t / omega), base.theta(t), "theta(t) not scale free: {row:?}");
+            assert_eq!(
+                p.theta(t / omega),
+                base.theta(t),
+                "theta(t) not scale free: {row:?}"
+            );
         }
     }
 }
@@ -158,13 +220,31 @@ fn equilibrium_never_separates_and_fast_starts_separate_at_once() {
     assert_eq!(rest.separation(), None);
     assert_eq!(rest.theta_rate(5.0), (0.0, 0.0));
     // θ̇₀² ≥ ω² cos θ₀: the wall force m l sin θ (ω² cos θ − θ̇²) is ≤ 0 at the start.
-    for (theta0, rate0) in [(0.0, 1.0), (0.0, 1.5), (0.5, 0.5f64.cos().sqrt() * 1.0000001), (1.2, 3.0)] {
-        let s = PhaseOne::new(theta0, rate0, 1.0).unwrap().separation().unwrap();
-        assert_eq!(s, Separation { angle: theta0, time: 0.0, rate: rate0 });
+    for (theta0, rate0) in [
+        (0.0, 1.0),
+        (0.0, 1.5),
+        (0.5, 0.5f64.cos().sqrt() * 1.0000001),
+        (1.2, 3.0),
+    ] {
+        let s = PhaseOne::new(theta0, rate0, 1.0)
+            .unwrap()
+            .separation()
+            .unwrap();
+        assert_eq!(
+            s,
+            Separation {
+                angle: theta0,
+                time: 0.0,
+                rate: rate0
+            }
+        );
         assert!(separation_cos(theta0, rate0, 1.0) >= theta0.cos());
     }
     // Just below the threshold the ladder still leans on the wall for a while.
-    let s = PhaseOne::new(0.5, 0.5f64.cos().sqrt() * 0.9999999, 1.0).unwrap().separation().unwrap();
+    let s = PhaseOne::new(0.5, 0.5f64.cos().sqrt() * 0.9999999, 1.0)
+        .unwrap()
+        .separation()
+        .unwrap();
     assert!(s.time > 0.0 && s.angle > 0.5);
 }
 
@@ -200,9 +280,42 @@ fn angle_at_separation_time_is_separation_angle() {
         // plus the 4-ulp errors of θ_s and θ̇_s themselves
         let tol_theta = tol_theta + 4.0 * (f64::from_bits(s.angle.to_bits() + 1) - s.angle);
         let tol_rate = tol_rate + 4.0 * (f64::from_bits(s.rate.to_bits() + 1) - s.rate);
-        assert!((theta - s.angle).abs() <= tol_theta, "{row:?}: θ(t_s) = {theta} vs {}", s.angle);
-        assert!((rate - s.rate).abs() <= tol_rate, "{row:?}: θ̇(t_s) = {rate} vs {}", s.rate);
+        assert!(
+            (theta - s.angle).abs() <= tol_theta,
+            "{row:?}: θ(t_s) = {theta} vs {}",
+            s.angle
+        );
+        assert!(
+            (rate - s.rate).abs() <= tol_rate,
+            "{row:?}: θ̇(t_s) = {rate} vs {}",
+            s.rate
+        );
         worst = worst.max(ulps(theta, s.angle));
     }
     println!("theta(t_s) vs theta_s: max {worst} ulps");
+}
+
+#[test]
+fn textbook_legendre_form_loses_the_digits_this_module_keeps() {
+    // The conditioning claim of the module docs, measured: t_s = F(ψ_s|m)/ω with m = 1 − k'²
+    // and ψ_s from arcsin, for starts from rest, against the same references.
+    let textbook = |theta0: f64| {
+        let kp2 = (0.5 * theta0).sin().powi(2);
+        let m = 1.0 - kp2;
+        let s2 = 0.5 * (1.0 - 2.0 / 3.0 * theta0.cos());
+        let psi = ((s2 - kp2) / (m * s2)).sqrt().asin();
+        ellip::ellipf(psi, m).unwrap_or(f64::INFINITY)
+    };
+    for row in SEPARATION
+        .iter()
+        .filter(|row| row[1] == 0.0 && row[2] == 1.0 && row[0] <= 1e-4)
+    {
+        let naive = ulps(textbook(row[0]), row[4]);
+        let ours = ulps(phase(row).separation().unwrap().time, row[4]);
+        println!(
+            "θ₀ = {:e}: textbook {naive:e} ulps, this module {ours} ulps",
+            row[0]
+        );
+        assert!(naive > 1e3 && ours <= TARGET_ULPS);
+    }
 }

@@ -6,9 +6,14 @@
 //! Legendre's F at 100 digits, the mid-course angle a Newton solve on that quadrature, and the
 //! Jacobi values come from mpmath.ellipfun (theta functions).
 #![allow(dead_code)]
+// The references keep the 25 digits mpmath printed: more than f64 holds, on purpose.
+#![allow(clippy::excessive_precision)]
+// K(0) = π/2 appears among them as printed.
+#![allow(clippy::approx_constant)]
 
 /// A row: θ₀, θ̇₀, ω², separation angle, time, rate, t_mid (binary64 nearest t_s/2),
 /// θ(t_mid), θ̇(t_mid). Immediate separations have time 0 and t_mid = 0.
+#[rustfmt::skip]
 pub const SEPARATION: [[f64; 9]; 31] = [
     [1e-12, 0.0, 1.0, 8.410686705679302557765255e-1, 2.816597770518608264762271e+1, 8.164965809277260327324278e-1, 14.082988852593042, 6.533326339371619025314188e-7, 6.533326339363849759727006e-7],
     [1e-08, 0.0, 1.0, 8.410686705679303004978846e-1, 1.895563733320990000744382e+1, 8.164965809277260123200135e-1, 9.47781866660495, 6.533326377052213872299693e-5, 6.533326299359557960022064e-5],
@@ -44,6 +49,7 @@ pub const SEPARATION: [[f64; 9]; 31] = [
 ];
 
 /// A row: k', argument, 0 (u from zero) or 1 (v = K − u), K, sn(u), cn(u), dn(u).
+#[rustfmt::skip]
 pub const JACOBI: [[f64; 7]; 12] = [
     [0.5, 0.3, 0.0, 2.156515647499643235438675, 0.2923617529890286758942905, 0.9563077984567427870580944, 0.9674158640635818292557386],
     [0.9, 1.2, 0.0, 1.654616667522526914545504, 0.9164222701993985672618878, 0.4002127217900257161569907, 0.916750970716524702853776],
@@ -84,6 +90,10 @@ pub fn ulps(got: f64, want: f64) -> f64 {
         return 0.0;
     }
     let w = want.abs();
-    let spacing = if w == 0.0 { f64::from_bits(1) } else { f64::from_bits(w.to_bits() + 1) - w };
+    let spacing = if w == 0.0 {
+        f64::from_bits(1)
+    } else {
+        f64::from_bits(w.to_bits() + 1) - w
+    };
     (got - want).abs() / spacing
 }

@@ -77,7 +77,10 @@ impl Agm {
     /// AGM chain for complementary modulus `kc` = k' in (0, 1] and k² = 1 − k'² given
     /// separately (the caller computes it without cancellation).
     pub fn new(kc: f64, k2: f64) -> Agm {
-        debug_assert!(kc > 0.0 && kc <= 1.0, "complementary modulus {kc} outside (0, 1]");
+        debug_assert!(
+            kc > 0.0 && kc <= 1.0,
+            "complementary modulus {kc} outside (0, 1]"
+        );
         let mut a = [0.0; LEVELS];
         let mut b = [0.0; LEVELS];
         let mut d = [0.0; LEVELS];
@@ -189,10 +192,18 @@ fn finish<D: DualNum<Primitive = f64> + Copy>(cs: D, sc: Option<D>, dn: D, sign:
     let one = D::from(1.0);
     if cs.re().abs() <= 1.0 {
         let sn = (one + cs * cs).sqrt().recip() * sign;
-        Jacobi { sn, cn: cs * sn, dn }
+        Jacobi {
+            sn,
+            cn: cs * sn,
+            dn,
+        }
     } else {
         let sc = sc.unwrap_or_else(|| cs.recip());
         let cn = (one + sc * sc).sqrt().recip() * (sign * sc.re().signum());
-        Jacobi { sn: cn * sc, cn, dn }
+        Jacobi {
+            sn: cn * sc,
+            cn,
+            dn,
+        }
     }
 }

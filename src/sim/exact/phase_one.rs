@@ -45,7 +45,15 @@ enum Orbit {
     Separatrix { tan_quarter0: f64 },
     /// a ≠ 0: the phase u = u0 + rate·t runs from the origin (turning point if a > 0, θ = 0 if
     /// a < 0) to the quarter period K, where θ = π; v = v0 − rate·t = K − u.
-    Elliptic { above: bool, kc: f64, k: f64, agm: Agm, u0: f64, v0: f64, phase_rate: f64 },
+    Elliptic {
+        above: bool,
+        kc: f64,
+        k: f64,
+        agm: Box<Agm>,
+        u0: f64,
+        v0: f64,
+        phase_rate: f64,
+    },
 }
 
 /// cos θ_s = (2/3) cos θ₀ + θ̇₀²/(3ω²): where the wall force m l sin θ (ω² cos θ − θ̇²) of
@@ -59,20 +67,35 @@ impl PhaseOne {
     /// The motion from θ₀ ∈ [0, π/2), θ̇₀ ≥ 0 with ω² = 3g/(4l) > 0 (eq. (5)).
     pub fn new(theta0: f64, rate0: f64, omega2: f64) -> Result<PhaseOne, String> {
         if !(theta0.is_finite() && (0.0..FRAC_PI_2).contains(&theta0)) {
-            return Err(format!("start angle theta0 = {theta0} rad is not in [0, pi/2)"));
+            return Err(format!(
+                "start angle theta0 = {theta0} rad is not in [0, pi/2)"
+            ));
         }
         if !(rate0.is_finite() && rate0 >= 0.0) {
-            return Err(format!("start rate theta0_dot = {rate0} rad/s is not finite and >= 0"));
+            return Err(format!(
+                "start rate theta0_dot = {rate0} rad/s is not finite and >= 0"
+            ));
         }
         if !(omega2.is_finite() && (1e-100..=1e100).contains(&omega2)) {
-            return Err(format!("omega^2 = 3g/(4l) = {omega2} 1/s^2 is not in [1e-100, 1e100]"));
+            return Err(format!(
+                "omega^2 = 3g/(4l) = {omega2} 1/s^2 is not in [1e-100, 1e100]"
+            ));
         }
         let omega = omega2.sqrt();
         let (s0, c0) = (0.5 * theta0).sin_cos();
         let rho = 0.5 * rate0 / omega;
         if theta0 == 0.0 && rho == 0.0 {
             let orbit = Orbit::Equilibrium;
-            return Ok(PhaseOne { theta0, rate0, omega2, omega, s0, c0, rho, orbit });
+            return Ok(PhaseOne {
+                theta0,
+                rate0,
+                omega2,
+                omega,
+                s0,
+                c0,
+                rho,
+                orbit,
+            });
         }
         if s0.max(rho) < MIN_OFFSET {
             return Err(format!(
@@ -84,7 +107,9 @@ impl PhaseOne {
         // a = s0² − ρ² as a product: no cancellation beyond that of s0 − ρ itself.
         let a = (s0 - rho) * (s0 + rho);
         let orbit = if a == 0.0 {
-            Orbit::Separatrix { tan_quarter0: (0.25 * theta0).tan() }
+            Orbit::Separatrix {
+                tan_quarter0: (0.25 * theta0).tan(),
+            }
         } else {
             // e = 1 − a = c0² + ρ², a sum: k² (above = false) or 1/k² (above = true).
             let e = c0 * c0 + rho * rho;
@@ -95,7 +120,7 @@ impl PhaseOne {
             } else {
                 (a.sqrt(), e.sqrt(), e)
             };
-            let agm = Agm::new(kc, k2);
+            let agm = Box::new(Agm::new(kc, k2));
             let (u0, v0, phase_rate) = if above {
                 // Phase w = (ω/k)(time since θ = 0); origin-to-start and start-to-bottom parts.
                 let h = (-a).sqrt();
@@ -108,9 +133,26 @@ impl PhaseOne {
                 let v0 = c0 * carlson_rf(s0 * s0 * e, e, rho * rho);
                 (u0, v0, omega)
             };
-            Orbit::Elliptic { above, kc, k, agm, u0, v0, phase_rate }
+            Orbit::Elliptic {
+                above,
+                kc,
+                k,
+                agm,
+                u0,
+                v0,
+                phase_rate,
+            }
         };
-        Ok(PhaseOne { theta0, rate0, omega2, omega, s0, c0, rho, orbit })
+        Ok(PhaseOne {
+            theta0,
+            rate0,
+            omega2,
+            omega,
+            s0,
+            c0,
+            rho,
+            orbit,
+        })
     }
 
     /// The start angle θ₀, rad.
@@ -146,9 +188,13 @@ impl PhaseOne {
         }
         // cos θ₀ − θ̇₀²/ω² in double-double: near immediate separation it is a small difference.
         let margin = cos_minus_ratio(self.theta0.cos(), self.rate0, self.omega2);
-        if !(margin > 0.0) {
+        if margin <= 0.0 || margin.is_nan() {
             let (angle, rate) = (self.theta0, self.rate0);
-            return Some(Separation { angle, time: 0.0, rate });
+            return Some(Separation {
+                angle,
+                time: 0.0,
+                rate,
+            });
         }
         // sin²(θ_s/2) − sin²(θ₀/2) = (cos θ₀ − cos θ_s)/2 = margin/6, a positive number.
         let d = margin / 6.0;
@@ -158,7 +204,11 @@ impl PhaseOne {
         let (q, q_lo) = two_prod(self.rate0, self.rate0);
         let cos_s = (2.0 * self.theta0.cos() + (q + q_lo) / self.omega2) / 3.0;
         let rate = (self.omega2 * cos_s).sqrt();
-        let to = End { s: ss, c: cs, r: (d + self.rho * self.rho).sqrt() };
+        let to = End {
+            s: ss,
+            c: cs,
+            r: (d + self.rho * self.rho).sqrt(),
+        };
         let time = omega_time(self.start(), to, d) / self.omega;
         Some(Separation { angle, time, rate })
     }
@@ -172,7 +222,11 @@ impl PhaseOne {
         let (s, c) = (0.5 * theta).sin_cos();
         // sin²(θ/2) − sin²(θ₀/2) = sin((θ − θ₀)/2) sin((θ + θ₀)/2): no cancellation.
         let d = (0.5 * (theta - self.theta0)).sin() * (0.5 * (theta + self.theta0)).sin();
-        let to = End { s, c, r: (d + self.rho * self.rho).sqrt() };
+        let to = End {
+            s,
+            c,
+            r: (d + self.rho * self.rho).sqrt(),
+        };
         omega_time(self.start(), to, d) / self.omega
     }
 
@@ -202,10 +256,22 @@ impl PhaseOne {
                 let theta = ((t * omega).exp() * *tan_quarter0).atan() * 4.0;
                 (theta, (theta * 0.5).sin() * (2.0 * omega))
             }
-            Orbit::Elliptic { above, kc, k, agm, u0, v0, phase_rate } => {
+            Orbit::Elliptic {
+                above,
+                kc,
+                k,
+                agm,
+                u0,
+                v0,
+                phase_rate,
+            } => {
                 let (u, v) = (t * *phase_rate + *u0, -(t * *phase_rate) + *v0);
                 // Evaluate from the nearer end of [0, K]: that argument is the accurate one.
-                let j = agm.eval(if u.re() <= v.re() { Arg::FromZero(u) } else { Arg::FromQuarter(v) });
+                let j = agm.eval(if u.re() <= v.re() {
+                    Arg::FromZero(u)
+                } else {
+                    Arg::FromQuarter(v)
+                });
                 let kc = D::from(*kc);
                 if *above {
                     // sin(θ/2) = k' sd(u), cos(θ/2) = cd(u), θ̇ = 2ω (k'/k)/dn(u).
@@ -227,12 +293,16 @@ impl PhaseOne {
         let mut wrong = self.clone();
         if let Orbit::Elliptic { kc, k, agm, .. } = &mut wrong.orbit {
             *kc *= factor;
-            *agm = Agm::new(*kc, *k * *k);
+            **agm = Agm::new(*kc, *k * *k);
         }
         wrong
     }
 
     fn start(&self) -> End {
-        End { s: self.s0, c: self.c0, r: self.rho }
+        End {
+            s: self.s0,
+            c: self.c0,
+            r: self.rho,
+        }
     }
 }
