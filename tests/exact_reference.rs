@@ -319,3 +319,23 @@ fn textbook_legendre_form_loses_the_digits_this_module_keeps() {
         assert!(naive > 1e3 && ours <= TARGET_ULPS);
     }
 }
+
+#[test]
+fn wall_force_pushes_until_separation_and_pulls_after() {
+    // F_w = m l sin θ (ω² cos θ − θ̇²) (eqs. (5), (6), (8)) must be > 0 before t_s and < 0 after:
+    // separation is the first and only sign change on the both-contacts motion.
+    for row in SEPARATION
+        .iter()
+        .filter(|row| row[4] > 0.0 && row[0] + row[1] > 0.0)
+    {
+        let p = phase(row);
+        let t_s = p.separation().unwrap().time;
+        for frac in [0.01, 0.25, 0.5, 0.75, 0.99] {
+            assert!(
+                p.wall_force_per_ml(frac * t_s) > 0.0,
+                "{row:?} at {frac} t_s"
+            );
+        }
+        assert!(p.wall_force_per_ml(1.01 * t_s) < 0.0, "{row:?} after t_s");
+    }
+}

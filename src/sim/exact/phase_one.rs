@@ -43,10 +43,11 @@ enum Orbit {
     Equilibrium,
     /// a = 0: tan(θ/4) = tan(θ₀/4) e^{ωt}.
     Separatrix { tan_quarter0: f64 },
-    /// a ≠ 0: the phase u = u0 + rate·t runs from the origin (turning point if a > 0, θ = 0 if
-    /// a < 0) to the quarter period K, where θ = π; v = v0 − rate·t = K − u.
+    /// a ≠ 0: the phase u = u0 + phase_rate·t runs from the origin (the turning point if a > 0;
+    /// θ = 0 if a < 0, `rotation`: the ladder passed upright) to the quarter period K, where
+    /// θ = π; v = v0 − phase_rate·t = K − u.
     Elliptic {
-        above: bool,
+        rotation: bool,
         kc: f64,
         k: f64,
         agm: Box<Agm>,
@@ -84,7 +85,7 @@ impl PhaseOne {
         let omega = omega2.sqrt();
         let (s0, c0) = (0.5 * theta0).sin_cos();
         let rho = 0.5 * rate0 / omega;
-        if theta0 == 0.0 && rho == 0.0 {
+        if theta0 == 0.0 && rate0 == 0.0 {
             let orbit = Orbit::Equilibrium;
             return Ok(PhaseOne {
                 theta0,
@@ -111,17 +112,17 @@ impl PhaseOne {
                 tan_quarter0: (0.25 * theta0).tan(),
             }
         } else {
-            // e = 1 − a = c0² + ρ², a sum: k² (above = false) or 1/k² (above = true).
+            // e = 1 − a = c0² + ρ², a sum: k² for a libration, 1/k² for a rotation.
             let e = c0 * c0 + rho * rho;
-            let above = a < 0.0;
-            let (kc, k, k2) = if above {
+            let rotation = a < 0.0;
+            let (kc, k, k2) = if rotation {
                 let h = (-a).sqrt();
                 (h / e.sqrt(), 1.0 / e.sqrt(), 1.0 / e)
             } else {
                 (a.sqrt(), e.sqrt(), e)
             };
             let agm = Box::new(Agm::new(kc, k2));
-            let (u0, v0, phase_rate) = if above {
+            let (u0, v0, phase_rate) = if rotation {
                 // Phase w = (ω/k)(time since θ = 0); origin-to-start and start-to-bottom parts.
                 let h = (-a).sqrt();
                 let u0 = e.sqrt() * s0 * carlson_rf(c0 * c0 * h * h, rho * rho, h * h);
@@ -134,7 +135,7 @@ impl PhaseOne {
                 (u0, v0, omega)
             };
             Orbit::Elliptic {
-                above,
+                rotation,
                 kc,
                 k,
                 agm,
@@ -241,6 +242,13 @@ impl PhaseOne {
         self.theta_rate(t).1
     }
 
+    /// The wall force over m l at time t, F_w/(m l) = sin θ (ω² cos θ − θ̇²): eq. (6) with a_x
+    /// from (8) and θ̈ from (5). Positive (the wall pushes) on 0 < t < t_s, zero at t_s.
+    pub fn wall_force_per_ml(&self, t: f64) -> f64 {
+        let (theta, rate) = self.theta_rate(t);
+        theta.sin() * (self.omega2 * theta.cos() - rate * rate)
+    }
+
     /// (θ(t), θ̇(t)) with one evaluation of the Jacobi functions.
     pub fn theta_rate(&self, t: f64) -> (f64, f64) {
         self.theta_rate_dual(t)
@@ -257,7 +265,7 @@ impl PhaseOne {
                 (theta, (theta * 0.5).sin() * (2.0 * omega))
             }
             Orbit::Elliptic {
-                above,
+                rotation,
                 kc,
                 k,
                 agm,
@@ -273,7 +281,7 @@ impl PhaseOne {
                     Arg::FromQuarter(v)
                 });
                 let kc = D::from(*kc);
-                if *above {
+                if *rotation {
                     // sin(θ/2) = k' sd(u), cos(θ/2) = cd(u), θ̇ = 2ω (k'/k)/dn(u).
                     let theta = (kc * j.sn).atan2(j.cn) * 2.0;
                     (theta, (kc / *k) / j.dn * (2.0 * omega))
