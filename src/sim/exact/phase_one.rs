@@ -10,6 +10,10 @@ use std::f64::consts::FRAC_PI_2;
 /// that carry the energy would leave the normal range of f64.
 const MIN_OFFSET: f64 = 1e-140;
 
+/// Largest θ̇₀/(2ω) accepted, so that its square (and 1 + its square) stay finite. Any start
+/// with θ̇₀ ≥ ω separates at once anyway.
+const MAX_RATE_RATIO: f64 = 1e140;
+
 /// The moment the wall force (6) = m a_x of the note, with a_x from (8), first vanishes.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Separation {
@@ -97,6 +101,13 @@ impl PhaseOne {
                 rho,
                 orbit,
             });
+        }
+        if rho > MAX_RATE_RATIO {
+            return Err(format!(
+                "start rate theta0_dot/omega = {} exceeds {MAX_RATE_RATIO:e}; its square \
+                 would overflow",
+                rate0 / omega
+            ));
         }
         if s0.max(rho) < MIN_OFFSET {
             return Err(format!(
