@@ -5,7 +5,8 @@
 //! [`PhaseOne::new`] takes a start (θ₀, θ̇₀) and ω²; [`PhaseOne::separation`] returns the angle,
 //! time and rate at which the wall lets go (footnote 4 of the note, generalised to a moving
 //! start); [`PhaseOne::theta`] / [`PhaseOne::rate`] give θ(t), θ̇(t) and
-//! [`PhaseOne::time_to_angle`] the inverse t(θ). Everything is closed form: Carlson's integral R_F
+//! [`PhaseOne::time_to_angle`] the inverse t(θ); [`PhaseOne::wall_force_per_ml`] the wall force
+//! along the motion. Everything is closed form: Carlson's integral R_F
 //! (from the `ellip` crate) for times, Jacobi's sn, cn, dn (hand-written in [`jacobi`], no crate
 //! has them) for angles. All of it keeps full relative accuracy near the separatrix, where the
 //! ladder starts almost upright and almost at rest (see the table below).
