@@ -1,0 +1,110 @@
+//! θ(t) of the exact phase-one solution obeys eq. (5), θ̈ = ω² sin θ, and the energy integral:
+//! derivatives come from automatic differentiation (num_dual) of the closed form itself, so no
+//! derivative is transcribed by hand. A perturbed ω or modulus must fail the same checks.
+mod exact_common;
+use exact_common::{input_condition, SEPARATION, U};
+use num_dual::{Dual, Dual64};
+use sliding_ladder::sim::exact::PhaseOne;
+
+/// Error model. θ and θ̇ come from one evaluation of the Jacobi functions: an error in the phase
+/// moves them together along the trajectory, which changes none of the identities below; what
+/// remains are relative errors of at most C·u in θ, θ̇ and their derivatives (≤ 4 roundings of
+/// positive terms per Landen level, ≤ 8 levels, 6 more for the final root, quotient and atan2).
+const C: f64 = 38.0;
+
+/// Largest residual/tolerance over the checks of one motion at times t = frac·t_s.
+/// `omega2` is the ω² the checks believe in (the motion may have been built with another).
+fn worst_ratio(p: &PhaseOne, omega2: f64, t_end: f64) -> f64 {
+    let (theta0, rate0) = (p.theta0(), p.rate0());
+    // Initial conditions: with eq. (5) they fix the solution. The start phase is an R_F value
+    // of relative error ≤ C·u, i.e. a time shift ≤ C·u·2K/ω (none on the separatrix, where
+    // the formula has no phase), plus the start's own condition κu/ω.
+    let omega = omega2.sqrt();
+    let k = p.quarter_period();
+    let shift = if k.is_finite() {
+        C * U * 2.0 * k / omega
+    } else {
+        0.0
+    } + input_condition(theta0, rate0, omega2) * U / omega;
+    let (theta_start, rate_start) = p.theta_rate(0.0);
+    let r0 = (theta_start - theta0).abs() / (C * U * theta0 + rate0 * shift + f64::MIN_POSITIVE);
+    let accel0 = omega2 * theta0.sin();
+    let r00 = (rate_start - rate0).abs() / (C * U * rate0 + accel0 * shift + f64::MIN_POSITIVE);
+    let mut worst = r0.max(r00);
+    for frac in [0.0, 0.1, 0.3, 0.6, 0.9, 1.0] {
+        let t = frac * t_end;
+        // First order: (θ, θ̇) with their t-derivatives.
+        let (th, rt) = p.theta_rate_dual(Dual64::new(t, 1.0));
+        let (theta, rate) = (th.re, rt.re);
+        let accel = omega2 * theta.sin();
+        // dθ/dt from the angle formula against the separate rate formula.
+        let r1 = (th.eps - rate).abs() / (C * U * rate.max(f64::MIN_POSITIVE));
+        // Eq. (5) on the rate formula: dθ̇/dt = ω² sin θ; δθ moves sin θ by cos θ δθ.
+        let scale = C * U * (accel + omega2 * theta * theta.cos());
+        let r2 = (rt.eps - accel).abs() / scale;
+        // Eq. (5) on the angle formula alone, by nested duals: d²θ/dt².
+        let t2 = Dual::new(Dual64::new(t, 1.0), Dual64::new(1.0, 0.0));
+        let (th2, _) = p.theta_rate_dual(t2);
+        let r3 = (th2.eps.eps - accel).abs() / scale;
+        // Energy: θ̇² = θ̇₀² + 2ω²(cos θ₀ − cos θ), the difference of cosines as a product.
+        let drop = 4.0 * omega2 * (0.5 * (theta - theta0)).sin() * (0.5 * (theta + theta0)).sin();
+        let residual = rate * rate - rate0 * rate0 - drop;
+        let tol = C * U * (2.0 * rate * rate + 2.0 * omega2 * theta * theta.sin())
+            + 4.0 * U * (rate * rate + rate0 * rate0 + drop.abs());
+        let r4 = residual.abs() / tol;
+        worst = worst.max(r1).max(r2).max(r3).max(r4);
+    }
+    worst
+}
+
+fn moving_rows() -> impl Iterator<Item = &'static [f64; 9]> {
+    SEPARATION.iter().filter(|row| row[4] > 0.0)
+}
+
+#[test]
+fn closed_form_obeys_equation_of_motion_and_energy() {
+    let mut worst = 0.0f64;
+    for row in moving_rows() {
+        let p = PhaseOne::new(row[0], row[1], row[2]).unwrap();
+        let ratio = worst_ratio(&p, row[2], row[4]);
+        assert!(ratio <= 1.0, "{row:?}: residual/tolerance = {ratio}");
+        worst = worst.max(ratio);
+    }
+    // The separatrix itself (a = 0 exactly): sin(θ₀/2) = θ̇₀/(2ω) with ω = 1.
+    let theta0 = 0.4f64;
+    let rate0 = 2.0 * (0.5 * theta0).sin();
+    let p = PhaseOne::new(theta0, rate0, 1.0).unwrap();
+    assert_eq!(p.quarter_period(), f64::INFINITY, "not on the separatrix");
+    let s = p.separation().unwrap();
+    worst = worst.max(worst_ratio(&p, 1.0, s.time));
+    assert!(worst <= 1.0, "separatrix: {worst}");
+    println!("worst residual/tolerance: {worst:.3}");
+}
+
+#[test]
+fn equation_of_motion_check_fails_for_wrong_omega() {
+    for row in moving_rows() {
+        let omega2 = row[2] * (1.0 + 1e-9) * (1.0 + 1e-9);
+        let p = PhaseOne::new(row[0], row[1], omega2).unwrap();
+        assert!(
+            worst_ratio(&p, row[2], row[4]) > 1.0,
+            "ω(1 + 1e-9) passed for {row:?}"
+        );
+    }
+}
+
+#[test]
+fn equation_of_motion_check_fails_for_wrong_modulus() {
+    // Near the separatrix a relative change of k' is nearly a time shift, which eq. (5) cannot
+    // see; the initial conditions do, except at starts whose own condition κ (see
+    // input_condition) already swamps 1e-6.
+    for row in moving_rows().filter(|row| input_condition(row[0], row[1], row[2]) < 1e6) {
+        let p = PhaseOne::new(row[0], row[1], row[2])
+            .unwrap()
+            .with_modulus_factor(1.0 - 1e-6);
+        assert!(
+            worst_ratio(&p, row[2], row[4]) > 1.0,
+            "k'(1 − 1e-6) passed for {row:?}"
+        );
+    }
+}

@@ -1,0 +1,39 @@
+//! Whatever the start, the exact phase-one solution either refuses it with a message or
+//! returns finite numbers: no NaN, infinity or panic reaches a caller (property test).
+use proptest::prelude::*;
+use sliding_ladder::sim::exact::PhaseOne;
+use std::f64::consts::FRAC_PI_2;
+
+fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
+    (lo.log10()..hi.log10()).prop_map(|e| 10f64.powf(e))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+    #[test]
+    fn finite_or_refused(
+        theta0 in prop_oneof![Just(0.0), log_uniform(1e-300, 1.0), 0.0..FRAC_PI_2],
+        rate0 in prop_oneof![Just(0.0), log_uniform(1e-300, 1e300)],
+        omega2 in log_uniform(1e-100, 1e100),
+        frac in 0.0..=1.0f64,
+    ) {
+        let Ok(p) = PhaseOne::new(theta0, rate0, omega2) else { return Ok(()); };
+        let Some(s) = p.separation() else {
+            prop_assert!(theta0 == 0.0 && rate0 == 0.0);
+            return Ok(());
+        };
+        prop_assert!(s.angle.is_finite() && s.time.is_finite() && s.rate.is_finite());
+        prop_assert!(s.angle >= theta0 && s.angle < FRAC_PI_2 && s.time >= 0.0);
+        let (theta, rate) = p.theta_rate(frac * s.time);
+        prop_assert!(theta.is_finite() && rate.is_finite(), "θ = {theta}, θ̇ = {rate}");
+        let t = p.time_to_angle(theta0 + frac * (s.angle - theta0));
+        prop_assert!(t.is_finite() && t >= 0.0, "t = {t}");
+    }
+}
+
+#[test]
+fn the_property_can_fail() {
+    // Below the turning point t(θ) is NaN by design (documented): the check above would see it.
+    let p = PhaseOne::new(0.5, 0.0, 1.0).unwrap();
+    assert!(p.time_to_angle(0.25).is_nan());
+}
