@@ -1,7 +1,7 @@
 //! The `verify` and `errata` subcommands: printing and exit codes.
 
 use super::errata::errata;
-use super::{counts, table, verify_all, EquationResult, Status};
+use super::{counts, table, verify_all, EquationResult};
 use crate::registry::check::Config;
 use serde_json::json;
 use std::process::ExitCode;
@@ -75,12 +75,21 @@ pub fn summary_line(results: &[EquationResult], cfg: &Config, seconds: f64) -> S
 /// Run `ladder errata`.
 pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
     let list = errata(cfg);
+    let prose = super::claims::claims();
+    let all_good = prose
+        .iter()
+        .all(|c| c.holds && c.printed_fails != Some(false));
     if json_out {
+        let prose_errata: Vec<_> = prose.iter().filter(|c| c.erratum.is_some()).collect();
+        let out = json!({"errata": list, "prose": prose_errata, "claims": prose});
         println!(
             "{}",
-            serde_json::to_string_pretty(&json!({"errata": list})).expect("JSON of plain data")
+            serde_json::to_string_pretty(&out).expect("JSON of plain data")
         );
     } else {
+        println!(
+            "misprinted equations (the printed form fails exactly; the corrected form holds):"
+        );
         for r in &list {
             println!("({}) printed:   {}", r.number, r.printed);
             println!("     corrected: {}", r.corrected);
@@ -90,7 +99,27 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
                 r.printed_residual_exact, r.printed_residual, r.corrected_residual
             );
         }
+        println!("\nclaims made in the prose, checked exactly at three random states:");
+        for c in &prose {
+            let verdict = match (c.holds, c.printed_fails) {
+                (true, None) if c.erratum.is_some() => {
+                    "PROSE ERRATUM (wording; the formula is right)"
+                }
+                (true, None) => "holds",
+                (true, Some(true)) => {
+                    "PROSE ERRATUM: the printed wording fails, the correction holds"
+                }
+                _ => "FAILED",
+            };
+            println!("  {:<16} {}: {verdict}", c.location, c.claim);
+            if let Some((printed, corrected)) = c.erratum {
+                println!("  {:<16}   printed: {printed}   corrected: {corrected}", "");
+            }
+        }
     }
-    let _ = Status::Erratum;
-    ExitCode::SUCCESS
+    if all_good {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
 }

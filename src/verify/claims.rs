@@ -1,0 +1,211 @@
+//! The note's quantitative claims made in prose (not in numbered displays), checked exactly.
+//!
+//! Each claim is evaluated in exact rational arithmetic at three random ladder states (and, for
+//! the claims about a root, as an identity in cos θ). A claim that the note states correctly must
+//! hold at every point; a prose erratum is recorded with the note's wording and ours, and the
+//! check shows the printed version failing and the corrected one holding.
+
+use crate::ladder::analysis::{angular_momentum_about, AngularMomentum, Reference, ReferencePoint};
+use crate::ladder::forces::wall_force;
+use crate::ladder::geometry::{corner_position, Corner};
+use crate::ladder::particles::{as_system, external_torque_about};
+use crate::ladder::torque::{
+    angular_momentum_about_a, eq13_moment_of_inertia_about_corner, eq24_angular_momentum_about_d,
+};
+use crate::ladder::{Ladder, State};
+use crate::registry::sample::{exact_ladder, LadderSample};
+use crate::scalar::{sq, Rational, Scalar};
+use crate::vector::Vec3;
+use serde::Serialize;
+
+type Q = Rational;
+
+/// One claim of the note's prose.
+#[derive(Clone, Debug, Serialize)]
+pub struct Claim {
+    /// Where in the note.
+    pub location: &'static str,
+    /// The claim, in our words.
+    pub claim: &'static str,
+    /// For a prose erratum: what the note prints, and the correction.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub erratum: Option<(&'static str, &'static str)>,
+    /// Whether the claim (or, for an erratum, the correction) holds at every exact point.
+    pub holds: bool,
+    /// For an erratum: whether the printed version fails at every exact point.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub printed_fails: Option<bool>,
+}
+
+/// Three exact ladder states of the given sort (fixed integers: reproducible).
+fn states(sort: LadderSample) -> Vec<(Ladder<Q>, State<Q>)> {
+    [
+        [3, 7, 2, 11, -5, 13, 4],
+        [-7, 5, 9, 2, 3, -4, 1],
+        [12, 1, 5, 8, 7, 2, -6],
+    ]
+    .into_iter()
+    .map(|v| exact_ladder(sort, v.map(Q::int)))
+    .collect()
+}
+
+fn all(sort: LadderSample, f: impl Fn(&Ladder<Q>, &State<Q>) -> bool) -> bool {
+    states(sort).iter().all(|(l, s)| f(l, s))
+}
+
+fn z(v: Vec3<Q>) -> Q {
+    v.z
+}
+
+/// The wall force (14) on the motion from rest at θ0 (cos θ0 = c0), with θ̈ from (5) and
+/// θ̇² = (3g/2l)(c0 − cos θ) from the energy. θ̇ enters (14) only as θ̇², which may have no
+/// rational square root, so (14) is evaluated at θ̇ = 0 and θ̇ = 1 and combined linearly in θ̇².
+fn wall_force_from_rest_at(l: &Ladder<Q>, s: &State<Q>, c0: &Q) -> Q {
+    let rate2 = Q::int(3) * l.g.clone() / (Q::int(2) * l.l.clone()) * (c0.clone() - s.cos.clone());
+    let at = |w: i64| {
+        wall_force(
+            l,
+            &State {
+                rate: Q::int(w),
+                ..s.clone()
+            },
+        )
+    };
+    at(0) + (at(1) - at(0)) * rate2
+}
+
+/// Every prose claim, checked.
+pub fn claims() -> Vec<Claim> {
+    use LadderSample::*;
+    let ok = |location, claim, holds| Claim {
+        location,
+        claim,
+        erratum: None,
+        holds,
+        printed_fails: None,
+    };
+    let erratum = |location, claim, printed, corrected, holds, printed_fails| Claim {
+        location,
+        claim,
+        erratum: Some((printed, corrected)),
+        holds,
+        printed_fails: Some(printed_fails),
+    };
+    let on_circle = all(Kinematic, |l, s| {
+        corner_position(Corner::B, l, s).dot(&corner_position(Corner::B, l, s)) == sq(&l.l)
+    });
+    // Footnote 4 (and sec. 2.1 with θ0 = 0): on the motion from rest at θ0 the wall force is
+    // m l sin θ · (3g/4l)(3 cos θ − 2 cos θ0), an identity in θ: it vanishes at cos θ = (2/3) cos θ0.
+    let separation = |c0: Q| {
+        all(OnShell, move |l, s| {
+            wall_force_from_rest_at(l, s, &c0)
+                == l.m.clone()
+                    * l.l.clone()
+                    * s.sin.clone()
+                    * l.omega_squared()
+                    * (Q::int(3) * s.cos.clone() - Q::int(2) * c0.clone())
+        })
+    };
+    let orbital_a = all(Kinematic, |l, s| {
+        let sys = as_system(l, s);
+        z(sys.centre_of_mass().cross(&sys.cm_velocity().scale(&l.m)))
+            == -(l.m.clone() * sq(&l.l) * s.rate.clone())
+    });
+    let rigid_about = |k: Corner| {
+        all(Kinematic, move |l, s| {
+            angular_momentum_about(&Reference::Corner(k), AngularMomentum::Relative, l, s)
+                == eq13_moment_of_inertia_about_corner(l)[1].clone() * s.rate.clone()
+        })
+    };
+    let not_rigid_about = |k: Corner| {
+        all(Kinematic, move |l, s| {
+            let lp = angular_momentum_about(&Reference::Corner(k), AngularMomentum::Relative, l, s);
+            let i = eq13_moment_of_inertia_about_corner(l)[1].clone() * s.rate.clone();
+            lp != i.clone() && lp != -i
+        })
+    };
+    let contact_torques_about_e = all(Kinematic, |l, s| {
+        let e = corner_position(Corner::E, l, s);
+        let (f_w, f_f) = (Q::int(5), Q::int(-3)); // any values: the lines of action pass through E
+        let t_w =
+            (corner_position(Corner::C, l, s) - e.clone()).cross(&Vec3::planar(f_w, Q::int(0)));
+        let t_f = (corner_position(Corner::D, l, s) - e).cross(&Vec3::planar(Q::int(0), f_f));
+        t_w.z == Q::int(0) && t_f.z == Q::int(0)
+    });
+    let tau_a_from_tau_c = all(Kinematic, |l, s| {
+        let sys = as_system(l, s);
+        let x_c = corner_position(Corner::C, l, s);
+        let tau_a = external_torque_about(l, &sys, &Vec3::zero());
+        let tau_c = external_torque_about(l, &sys, &x_c);
+        tau_a == tau_c + x_c.cross(&sys.cm_acceleration().scale(&l.m))
+    });
+    let only_a_at_rest = all(Kinematic, |l, s| {
+        Corner::ALL.iter().all(|&k| {
+            let a = Reference::Corner(k).motion(l, s).a;
+            (k == Corner::A) == (a == Vec3::zero())
+        })
+    });
+    let e_is_instant_centre = all(Kinematic, |l, s| {
+        // The ladder's velocity field v_B + θ̇ ẑ × (x − x_B) vanishes at E.
+        let sys = as_system(l, s);
+        let x_b = sys.centre_of_mass();
+        let v = sys.cm_velocity()
+            + Vec3::along_z(s.rate.clone()).cross(&(corner_position(Corner::E, l, s) - x_b));
+        v == Vec3::zero()
+    });
+    let contact_point_on_body = all(Kinematic, |l, s| {
+        // Methods 1 and 2 (and 3, 4) coincide: the ladder's material point at C moves like the contact.
+        let sys = as_system(l, s);
+        let body = sys.cm_velocity()
+            + Vec3::along_z(s.rate.clone())
+                .cross(&(corner_position(Corner::C, l, s) - sys.centre_of_mass()));
+        body == Reference::Corner(Corner::C).motion(l, s).v
+    });
+    let l_c_is_relative = all(Kinematic, |l, s| {
+        let printed = crate::ladder::torque::eq21_angular_momentum_about_c(l, s)[1].clone();
+        let c = Reference::Corner(Corner::C);
+        printed == angular_momentum_about(&c, AngularMomentum::Relative, l, s)
+            && printed != angular_momentum_about(&c, AngularMomentum::Absolute, l, s)
+    });
+    let d_label_printed = all(Kinematic, |l, s| {
+        // (24) gives 4ml²θ̇/3, which is L'_D; it also equals L'_C, so the slip changes no number,
+        // but only D is the point of sec. 2.5's analysis. Check the formula is L'_D.
+        eq24_angular_momentum_about_d(l, s)[1]
+            == angular_momentum_about(
+                &Reference::Corner(Corner::D),
+                AngularMomentum::Relative,
+                l,
+                s,
+            )
+    });
+    let la_prose_printed_fails = all(Kinematic, |l, s| {
+        angular_momentum_about_a(l, s)
+            != -(Q::ratio(2, 3) * l.m.clone() * l.l.clone() * s.rate.clone())
+    });
+    let la_prose_corrected = all(Kinematic, |l, s| {
+        angular_momentum_about_a(l, s)
+            == -(Q::ratio(2, 3) * l.m.clone() * sq(&l.l) * s.rate.clone())
+    });
+    vec![
+        ok("sec. 2.1", "the centre of mass B moves on a circle of radius l about A", on_circle),
+        ok("sec. 2.1", "from rest upright the ladder leaves the wall where cos θ = 2/3 (F_w ∝ 3 cos θ − 2)", separation(Q::int(1))),
+        ok("footnote 4", "from rest at θ0 it leaves the wall where cos θ = (2/3) cos θ0 (F_w ∝ 3 cos θ − 2 cos θ0)", separation(Q::ratio(3, 5))),
+        ok("sec. 2.2", "the orbital angular momentum of the centre of mass about A is −ml²θ̇", orbital_a),
+        ok("sec. 2.2", "L'_C = I_C θ̇ and L'_D = I_D θ̇ (rigid rotation about C and D)", rigid_about(Corner::C) && rigid_about(Corner::D)),
+        ok("sec. 2.2", "L_A is not ±I_A θ̇, nor L'_E ±I_E θ̇ (no rigid rotation about A or E)", not_rigid_about(Corner::A) && not_rigid_about(Corner::E)),
+        ok("sec. 2.6", "the floor and wall forces have no torque about E", contact_torques_about_e),
+        ok("sec. 1, FIGURE", "only A is at rest; B, C, D, E accelerate", only_a_at_rest),
+        ok("FIGURE", "E is the instantaneous centre of rotation of the ladder", e_is_instant_centre),
+        ok("sec. A.2, A.4", "the ladder's material point at C moves with the contact point (methods 1 = 2, 3 = 4)", contact_point_on_body),
+        ok("footnote 16", "the L_C of sec. 2.4 is L'_C of Appendix A, not L_C", l_c_is_relative),
+        ok("sec. A.5 (end)", "τ_A = τ_C + x_C × m a_cm", tau_a_from_tau_c),
+        Claim {
+            location: "sec. 2.5",
+            claim: "(24) is introduced as 'the angular momentum about point C'; it is about D (a wording slip: L'_C = L'_D, so no number changes)",
+            erratum: Some(("about point C", "about point D")),
+            holds: d_label_printed,
+            printed_fails: None,
+        },
+        erratum("sec. A.5", "L = L_A written as −(2/3) m l θ̇: a factor l is missing", r"-\frac{2}{3}m l \dot{\theta}", r"-\frac{2}{3}m l^2 \dot{\theta}", la_prose_corrected, la_prose_printed_fails),
+    ]
+}
