@@ -24,7 +24,9 @@ fn particle_checks(e: &Equation) -> Vec<(&'static str, ParticleSample, ParticleF
         .iter()
         .map(|c| match c.eval {
             Eval::Particles(sample, f) => (c.name, sample, f),
-            Eval::Ladder(..) => panic!("({}) {}: not a particle check", e.number, c.name),
+            Eval::Ladder(..) | Eval::Floor(..) => {
+                panic!("({}) {}: not a particle check", e.number, c.name)
+            }
         })
         .collect()
 }

@@ -7,9 +7,10 @@ use sliding_ladder::registry::check::{
     TOLERANCE_FACTOR,
 };
 use sliding_ladder::registry::sample::{
-    float_particles, RawLadder, RawParticles, EXTRA, PER_PARTICLE,
+    exact_ladder, float_particles, floor_state, LadderSample, RawLadder, RawParticles, EXTRA,
+    PER_PARTICLE,
 };
-use sliding_ladder::registry::{equations, Chain, Eval, Role};
+use sliding_ladder::registry::{equations, extensions, Chain, Eval, Role};
 use sliding_ladder::scalar::{Bound, Rational, Scalar};
 
 /// Add δ·(largest magnitude in the chain, or 1) to side `k` of chain `c`.
@@ -45,10 +46,15 @@ fn exact_chains_of_every_check() -> Vec<(u32, &'static str, Vec<Chain<Rational>>
         })
         .collect();
     let mut out = Vec::new();
-    for e in equations() {
+    for e in equations().into_iter().chain(extensions()) {
         for c in &e.checks {
             let chains = match c.eval {
                 Eval::Ladder(sort, f) => ladder_exact_chains(sort, &f, ints),
+                Eval::Floor(sort, f) => {
+                    let (l, s) = exact_ladder(LadderSample::Kinematic, ints.map(Rational::int));
+                    let (s, x) = floor_state(sort, &l, s, [5, -3, 2, 7].map(Rational::int));
+                    (f.exact)(&l, &s, &x)
+                }
                 Eval::Particles(sort, f) => particle_exact_chains(sort, &f, n, &pints),
             };
             out.push((e.number, c.name, chains));
@@ -104,11 +110,19 @@ fn resolvable_side(values: &[Chain<f64>], bounds: &[Chain<Bound>]) -> Option<(us
 fn float_checks_reject_a_relative_perturbation_of_one_in_a_billion() {
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
     let mut zero_only = Vec::new();
-    for e in equations() {
+    for e in equations().into_iter().chain(extensions()) {
         for check in &e.checks {
             let (mut tried, mut caught) = (0, 0);
             for _ in 0..40 {
                 let (mut values, bounds): (Vec<Chain<f64>>, Vec<Chain<Bound>>) = match check.eval {
+                    Eval::Floor(sort, f) => {
+                        let ((l, s), (lb, sb)) =
+                            RawLadder::draw(&mut rng).build(LadderSample::Kinematic);
+                        let v = [0.3 * l.l, -0.2 * (l.l * l.g).sqrt(), 0.5 * l.g, 0.1 * l.g];
+                        let (s, x) = floor_state(sort, &l, s, v);
+                        let (sb, xb) = floor_state(sort, &lb, sb, v.map(Bound::exact));
+                        ((f.float)(&l, &s, &x), (f.bound)(&lb, &sb, &xb))
+                    }
                     Eval::Ladder(sort, f) => {
                         let ((l, s), (lb, sb)) = RawLadder::draw(&mut rng).build(sort);
                         ((f.float)(&l, &s), (f.bound)(&lb, &sb))
@@ -166,7 +180,7 @@ fn on_shell_checks_fail_off_shell_and_misprints_fail() {
         seed: 11,
     };
     let mut on_shell = 0;
-    for e in equations() {
+    for e in equations().into_iter().chain(extensions()) {
         for c in &e.checks {
             let r = run_check(c, &cfg);
             if let Some(fails) = r.off_shell_fails {

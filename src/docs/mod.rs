@@ -15,7 +15,7 @@
 
 pub mod examples;
 
-use crate::registry::{equations, printed_latex};
+use crate::registry::{equations, extensions};
 use pulldown_cmark::{Event, Options, Parser, Tag, TagEnd};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -82,7 +82,16 @@ pub fn check_book(dir: &Path) -> BookReport {
             ));
         }
     }
-    rep.equations_found = seen.len();
+    for e in extensions() {
+        if !seen.contains_key(&e.number) {
+            rep.problems.push(format!(
+                "{}: extension {} is not documented in any file",
+                dir.display(),
+                e.label()
+            ));
+        }
+    }
+    rep.equations_found = seen.keys().filter(|&&n| n <= 90).count();
     rep
 }
 
@@ -98,7 +107,7 @@ struct Section {
 
 /// Check one markdown source; `name` is used in messages.
 pub fn check_file(name: &str, src: &str, seen: &mut BTreeMap<u32, String>, rep: &mut BookReport) {
-    let registry = equations();
+    let registry: Vec<_> = equations().into_iter().chain(extensions()).collect();
     let mut sections: Vec<Section> = Vec::new();
     let mut heading: Option<(String, usize)> = None;
     let (mut in_link, mut in_table, mut in_header) = (false, false, false);
@@ -119,9 +128,10 @@ pub fn check_file(name: &str, src: &str, seen: &mut BTreeMap<u32, String>, rep: 
                             rep.problems.push(format!(
                                 "{here}: equation ({n}) documented twice (first at {first})"
                             ));
-                        } else if !(1..=90).contains(&n) {
+                        } else if !(1..=90).contains(&n) && !registry.iter().any(|e| e.number == n)
+                        {
                             rep.problems.push(format!(
-                                "{here}: ({n}) is not an equation of the note (1..=90)"
+                                "{here}: {text} is not an equation of the note (1..=90) or a registered extension"
                             ));
                         } else {
                             seen.insert(n, here);
@@ -192,11 +202,19 @@ pub fn check_file(name: &str, src: &str, seen: &mut BTreeMap<u32, String>, rep: 
     }
 }
 
+/// The number in a heading "(12) ..." (12), or "(P3) ..." for an extension (1003).
 fn heading_number(text: &str) -> Option<u32> {
     let t = text.trim_start();
     let rest = t.strip_prefix('(')?;
     let close = rest.find(')')?;
-    rest[..close].trim().parse().ok()
+    let inner = rest[..close].trim();
+    match inner.strip_prefix('P') {
+        Some(k) => k
+            .parse::<u32>()
+            .ok()
+            .map(|k| crate::registry::EXTENSION_BASE + k),
+        None => inner.parse().ok(),
+    }
 }
 
 fn check_section(
@@ -222,7 +240,7 @@ fn check_section(
             s.number
         )),
         Some((m, line)) => {
-            if normalize_latex(m) != normalize_latex(printed_latex(s.number)) {
+            if normalize_latex(m) != normalize_latex(entry.latex()) {
                 rep.problems.push(format!(
                     "{}: the LaTeX of ({}) differs from the registry's printed form",
                     at(*line),

@@ -12,10 +12,12 @@
 //! * [`forces`]: the contact forces, eqs. (6), (14), (15);
 //! * [`torque`]: the torque analyses about A-E as printed, eqs. (11)-(28);
 //! * [`analysis`]: one generic torque analysis about any reference point;
-//! * [`jensen`]: Jensen's five methods applied at C, eqs. (42)-(63).
+//! * [`jensen`]: Jensen's five methods applied at C, eqs. (42)-(63);
+//! * [`floor_phase`]: after the wall, on the floor alone, (P1)-(P5) (beyond the note).
 
 pub mod analysis;
 pub mod energy;
+pub mod floor_phase;
 pub mod forces;
 pub mod geometry;
 pub mod jensen;
@@ -93,6 +95,16 @@ impl<T: Scalar> State<T> {
             sin: T::constant(self.sin.clone()),
             cos: T::constant(self.cos.clone()),
             rate: T::lift(self.rate.clone(), T::int(1)),
+            accel: T::constant(self.accel.clone()),
+            jerk: T::constant(self.jerk.clone()),
+        }
+    }
+    /// The same state with zero derivative part (for a partial derivative in another variable).
+    pub fn constant_state(&self) -> State<T::Dual> {
+        State {
+            sin: T::constant(self.sin.clone()),
+            cos: T::constant(self.cos.clone()),
+            rate: T::constant(self.rate.clone()),
             accel: T::constant(self.accel.clone()),
             jerk: T::constant(self.jerk.clone()),
         }

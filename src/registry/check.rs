@@ -222,6 +222,45 @@ pub fn run_check(check: &Check, cfg: &Config) -> CheckReport {
                 rep.off_shell_fails = Some(off_shell_all_fail);
             }
         }
+        Eval::Floor(sort, f) => {
+            for _ in 0..cfg.float_cases {
+                let raw = RawLadder::draw(&mut rng);
+                let ((l, s), (lb, sb)) = raw.build(LadderSample::Kinematic);
+                let (lg, g) = (l.l, l.g);
+                let t = (lg / g).sqrt();
+                let units = [lg, lg / t, lg / (t * t), lg / (t * t * t)];
+                let v: [f64; 4] =
+                    std::array::from_fn(|i| 3.0 * rng.gen_range(-1.0..1.0) * units[i]);
+                let (s, x) = super::sample::floor_state(sort, &l, s, v);
+                let (sb, xb) = super::sample::floor_state(sort, &lb, sb, v.map(Bound::exact));
+                record_float(&mut rep, (f.float)(&l, &s, &x), (f.bound)(&lb, &sb, &xb));
+            }
+            let vars = [Degree::variable(); 4];
+            let (ld, sd) =
+                exact_ladder(LadderSample::Kinematic, [Degree::variable(); LADDER_DRAWS]);
+            let (sd, xd) = super::sample::floor_state(sort, &ld, sd, vars);
+            rep.degree = residual_degree(&(f.degree)(&ld, &sd, &xd));
+            let mut off_shell_all_fail = true;
+            let big = 1i64 << 62;
+            for _ in 0..cfg.exact_points {
+                let draw = exact_ladder_draw(&mut rng);
+                let v: [Rational; 4] =
+                    std::array::from_fn(|_| Rational::int(rng.gen_range(-big..=big)));
+                let (l, s0) = exact_ladder(LadderSample::Kinematic, draw);
+                let (s, x) = super::sample::floor_state(sort, &l, s0.clone(), v.clone());
+                let (ok, mis) = guarded(|| exact_residual(&(f.exact)(&l, &s, &x)));
+                rep.exact_failures += usize::from(!ok);
+                note_misprints(mis);
+                if sort.on_shell() {
+                    let (s, x) = super::sample::floor_state(LadderSample::Kinematic, &l, s0, v);
+                    let (ok_off, _) = guarded(|| exact_residual(&(f.exact)(&l, &s, &x)));
+                    off_shell_all_fail &= !ok_off;
+                }
+            }
+            if sort.on_shell() {
+                rep.off_shell_fails = Some(off_shell_all_fail);
+            }
+        }
         Eval::Particles(sort, f) => {
             for _ in 0..cfg.float_cases {
                 let raw = RawParticles::draw(&mut rng);

@@ -8,6 +8,7 @@
 //! degree-counting mode. [`check`] runs the checks; [`sample`] draws the states.
 
 pub mod check;
+mod floor_eqs;
 mod general_eqs;
 mod jensen_eqs;
 mod ladder_eqs;
@@ -20,6 +21,7 @@ pub use latex::printed_latex;
 pub use sample::{LadderSample, ParticleSample};
 pub use side::{corrected, misprint, printed, reference, vector_chains, Chain, Role, Side};
 
+use crate::ladder::floor_phase::Slide;
 use crate::ladder::{Ladder, State};
 use crate::scalar::{Bound, Degree, Rational};
 use crate::system::{Point, System};
@@ -59,6 +61,35 @@ impl Kind {
 pub type LadderChains<S> = fn(&Ladder<S>, &State<S>) -> Vec<Chain<S>>;
 /// The chains of one particle-system check, in one scalar type.
 pub type ParticleChains<S> = fn(&System<S>, &Point<S>) -> Vec<Chain<S>>;
+
+/// The chains of one floor-phase check (the ladder off the wall), in one scalar type.
+pub type FloorChains<S> = fn(&Ladder<S>, &State<S>, &Slide<S>) -> Vec<Chain<S>>;
+
+/// A floor-phase check instantiated in every scalar type.
+#[derive(Clone, Copy)]
+pub struct FloorFns {
+    /// In f64 (derivatives by num-dual).
+    pub float: FloorChains<f64>,
+    /// With running error bounds.
+    pub bound: FloorChains<Bound>,
+    /// In exact rationals.
+    pub exact: FloorChains<Rational>,
+    /// In degree-counting mode (Schwartz-Zippel).
+    pub degree: FloorChains<Degree>,
+}
+
+/// Instantiate a generic floor-phase check.
+#[macro_export]
+macro_rules! floor_fns {
+    ($f:path) => {
+        $crate::registry::FloorFns {
+            float: $f,
+            bound: $f,
+            exact: $f,
+            degree: $f,
+        }
+    };
+}
 
 /// A ladder check instantiated in every scalar type.
 #[derive(Clone, Copy)]
@@ -119,6 +150,8 @@ pub enum Eval {
     Ladder(LadderSample, LadderFns),
     /// At particle systems of the given sort.
     Particles(ParticleSample, ParticleFns),
+    /// At states of the ladder off the wall (kinematic: all free; on-shell: (P2), (P3) hold).
+    Floor(LadderSample, FloorFns),
 }
 
 /// One check of an equation.
@@ -160,11 +193,31 @@ pub struct Equation {
     pub erratum: Option<Erratum>,
 }
 
+/// Numbers of the extension equations (beyond the note) start here: (P1) is 1001.
+pub const EXTENSION_BASE: u32 = 1000;
+
 impl Equation {
-    /// The printed LaTeX, as in the note.
+    /// The printed LaTeX, as in the note (for an extension, as in `equations/phase2.md`).
     pub fn latex(&self) -> &'static str {
-        printed_latex(self.number)
+        if self.number > EXTENSION_BASE {
+            floor_eqs::latex(self.number - EXTENSION_BASE)
+        } else {
+            printed_latex(self.number)
+        }
     }
+    /// How the equation is cited: "(12)", or "(P3)" for an extension.
+    pub fn label(&self) -> String {
+        if self.number > EXTENSION_BASE {
+            format!("(P{})", self.number - EXTENSION_BASE)
+        } else {
+            format!("({})", self.number)
+        }
+    }
+}
+
+/// The equations of the extension beyond the note: the floor phase, (P1)-(P5).
+pub fn extensions() -> Vec<Equation> {
+    floor_eqs::equations()
 }
 
 /// Shorthand used by the equation tables.

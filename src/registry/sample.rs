@@ -6,6 +6,7 @@
 //! and in [`Degree`] (to bound the degree for the Schwartz-Zippel lemma). Exact points on the
 //! unit circle come from sin θ = 2t/(1+t²), cos θ = (1−t²)/(1+t²).
 
+use crate::ladder::floor_phase::Slide;
 use crate::ladder::{Ladder, State};
 use crate::scalar::{Bound, Scalar};
 use crate::system::{Particle, Point, Spin, System};
@@ -340,4 +341,29 @@ pub fn float_particles(sort: ParticleSample, raw: &RawParticles) -> FloatParticl
         particle_system(sort, raw.n, &raw.values),
         particle_system(sort, raw.n, &bounds),
     )
+}
+
+/// A floor-phase state from a ladder state and the centre's motion (X, Ẋ, Ẍ, X⃛), in any scalar
+/// type. On shell, θ̈ comes from (P3) and Ẍ = X⃛ = 0 from (P2); the ladder state must have been
+/// built as [`LadderSample::Kinematic`].
+pub fn floor_state<S: Scalar>(
+    sort: LadderSample,
+    ladder: &Ladder<S>,
+    st: State<S>,
+    v: [S; 4],
+) -> (State<S>, Slide<S>) {
+    let [x, rate, accel, jerk] = v;
+    let mut st = st;
+    let mut slide = Slide {
+        x,
+        rate,
+        accel,
+        jerk,
+    };
+    if sort.on_shell() {
+        st.accel = crate::ladder::floor_phase::angular_acceleration(ladder, &st);
+        slide.accel = S::int(0);
+        slide.jerk = S::int(0);
+    }
+    (st, slide)
 }

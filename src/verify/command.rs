@@ -14,6 +14,7 @@ pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
     let results = verify_all(cfg);
     let docs = crate::docs::check_book(&crate::docs::default_dir());
     let methods = crate::verify::check_methods(cfg);
+    let extensions = crate::verify::verify_extensions(cfg);
     let seconds = t.elapsed().as_secs_f64();
     let (v, e, d, f) = counts(&results);
     if json_out {
@@ -24,6 +25,7 @@ pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
                          "seed": cfg.seed, "seconds": seconds},
             "docs": {"problems": docs.problems, "sections": docs.equations_found, "examples_run": docs.examples_run},
             "methods": methods,
+            "extensions": extensions,
         });
         println!(
             "{}",
@@ -32,6 +34,15 @@ pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
     } else {
         print!("{}", table(&results));
         println!("{}", summary_line(&results, cfg, seconds));
+        println!("beyond the note: the floor phase after the ladder leaves the wall (equations/phase2.md)");
+        print!(
+            "{}",
+            table(&extensions)
+                .lines()
+                .skip(1)
+                .map(|l| format!("{l}\n"))
+                .collect::<String>()
+        );
         let failed_methods: Vec<_> = methods.iter().filter(|m| !m.passed).collect();
         println!(
             "methods: {} derivations of the equation of motion checked (θ̈ solved from each equals (5); each residual vanishes on the motion only), {} failed",

@@ -25,8 +25,10 @@ pub enum Status {
 /// One row of the report.
 #[derive(Clone, Debug, Serialize)]
 pub struct EquationResult {
-    /// Equation number.
+    /// Equation number (an extension beyond the note is 1000 + k for (Pk)).
     pub number: u32,
+    /// How it is cited: "(12)", "(P3)".
+    pub label: String,
     /// Section of the note.
     pub section: &'static str,
     /// Title.
@@ -98,6 +100,7 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
     };
     EquationResult {
         number: e.number,
+        label: e.label(),
         section: e.section,
         title: e.title,
         kind: e.kind,
@@ -124,7 +127,15 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
 
 /// Run every check of every equation (on two threads) and judge each equation.
 pub fn verify_all(cfg: &Config) -> Vec<EquationResult> {
-    let eqs = equations();
+    verify_list(equations(), cfg)
+}
+
+/// Run the checks of the extension beyond the note, (P1)-(P5).
+pub fn verify_extensions(cfg: &Config) -> Vec<EquationResult> {
+    verify_list(crate::registry::extensions(), cfg)
+}
+
+fn verify_list(eqs: Vec<Equation>, cfg: &Config) -> Vec<EquationResult> {
     let mut results: Vec<EquationResult> = std::thread::scope(|scope| {
         let workers: Vec<_> = (0..2)
             .map(|w| {
@@ -182,7 +193,7 @@ pub fn table(results: &[EquationResult]) -> String {
         };
         out.push_str(&format!(
             "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9.3}  {}\n",
-            format!("({})", r.number),
+            r.label,
             r.section,
             r.title.chars().take(46).collect::<String>(),
             r.kind.name(),
