@@ -30,7 +30,7 @@ pub(super) fn zero<S: Scalar>() -> Vec3<S> {
 }
 
 /// A check on particle systems of the given sort.
-fn check(name: &'static str, sample: ParticleSample, f: super::ParticleFns) -> Check {
+fn check(name: &'static str, sample: ParticleSample, f: crate::registry::ParticleFns) -> Check {
     on_particles(name, sample, f)
 }
 
