@@ -13,6 +13,7 @@ pub mod fall;
 pub mod floor;
 pub mod integrators;
 pub mod output;
+pub mod penalty;
 pub mod rigid;
 pub mod run;
 pub mod scene;
