@@ -39,8 +39,10 @@ fn start_rows(name: &str, theta0: f64, rate0: f64, tick: &mut impl FnMut(&str, u
     tick(name, 2);
     let control = Control::Tolerance(TOL);
     let cs = theory_cosine(&UNIT, theta0, rate0);
-    let expected = if cs >= 1.0 {
-        format!("cos θ_s = {cs:.6} ≥ 1: leaves at once")
+    // θ_s at or behind θ0 (cos θ_s ≥ cos θ0; for θ0 = 0, cos θ_s ≥ 1): the wall would pull.
+    let at_once = cs >= theta0.cos();
+    let expected = if at_once {
+        format!("cos θ_s = {cs:.6} ≥ cos θ0: leaves at once")
     } else {
         format!("cos θ_s = {cs:.15e}")
     };
@@ -61,7 +63,7 @@ fn start_rows(name: &str, theta0: f64, rate0: f64, tick: &mut impl FnMut(&str, u
             a.value = "leaves at once (t_s = 0)".into();
             // Exactly at cos θ_s = 1 rounding decides between "at once" and a separation
             // within an ulp; both are right.
-            if cs >= 1.0 - 4.0 * U {
+            if cs >= theta0.cos() - 4.0 * U {
                 a.verdict = Verdict::Ok;
                 a.reason = "the wall would pull at t = 0".into();
             } else {
@@ -73,9 +75,9 @@ fn start_rows(name: &str, theta0: f64, rate0: f64, tick: &mut impl FnMut(&str, u
             a.value = format!("θ_s = {:.15}, t_s = {:.6e}", s.angle, s.time);
             let n = st.steps as f64;
             let angle_bound = 10.0 * n * TOL * s.angle.max(1.0) + 4.0 * U;
-            a.judge((s.angle.cos() - cs.min(1.0)).abs(), angle_bound);
+            a.judge((s.angle.cos() - cs.min(theta0.cos())).abs(), angle_bound);
             // At cos θ_s = 1 (to rounding) the ladder leaves at once: no time to compare.
-            if cs < 1.0 - 4.0 * U {
+            if cs < theta0.cos() - 4.0 * U {
                 let mut t = blank(
                     "extreme",
                     format!("{name}: time"),
