@@ -30,6 +30,14 @@
 //! or the integrator's tolerance, the wall force, and with it the separation angle, cannot be
 //! better than ~κ·max(u, tol): the error model behind the stall reported by `ladder stability`.
 //!
+//! **The kink.** max(0, ·) has a kink where the force is zero. Inside the right-hand side
+//! ([`Law::OneSided`]) every stage, Newton iterate and finite-difference probe near a tiny
+//! penetration may land on the wrong side of it: Newton stalls and steps are rejected. Since
+//! both forces stay positive throughout the wall phase and the run ends the moment the wall
+//! force falls through zero, the default ([`Law::Switched`]) integrates the smooth two-sided
+//! spring and lets an *event* find the zero of the force (event-driven integration of a
+//! switched system); lift-off at the floor, were it to happen, is an event too.
+//!
 //! The start is *pre-loaded*: the penetrations and their rates are set to the rigid model's
 //! forces divided by k (and their rate of change), so the springs start in equilibrium with the
 //! motion and no contact oscillation of size m g is excited (from p = 0 the springs would
