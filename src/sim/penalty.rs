@@ -26,9 +26,13 @@
 //! The contact oscillates at ω_c ~ √κ (in units of √(g/l)) while the fall takes O(1): explicit
 //! methods need h ≲ 1/√κ, an implicit L-stable method does not. At large κ the force is
 //! κ times a *difference* of positions (l sin θ − x ~ l/κ): an absolute position error δ
-//! becomes a force error κ δ (in units of m g). With δ at least the rounding of x (~u = 1.1e-16)
-//! or the integrator's tolerance, the wall force, and with it the separation angle, cannot be
-//! better than ~κ·max(u, tol): the error model behind the stall reported by `ladder stability`.
+//! becomes a force error κ δ (in units of m g). δ is at least the rounding of x (u l, u =
+//! 1.1e-16), so the separation angle cannot be better than ~κ u; an explicit method's δ is its
+//! tolerance, so it cannot be better than ~κ tol. Radau5 ends each step on its last stage, where
+//! the stiff components are in equilibrium with the slow ones (stiff accuracy), and does much
+//! better than κ tol; its Newton iteration, though, cannot converge below the rounding of the
+//! forces, so tolerances under ~κ u fail. Together with the model's own O(1/κ) distance to the
+//! rigid limit this is the stall reported by `ladder stability`.
 //!
 //! **The kink.** max(0, ·) has a kink where the force is zero. Inside the right-hand side
 //! ([`Law::OneSided`]) every stage, Newton iterate and finite-difference probe near a tiny
