@@ -63,6 +63,13 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// Stiff and extreme cases (penalty contact, Lagrange drift, edges of the domain, scales,
+    /// long runs), with verdicts.
+    Stability {
+        /// Print JSON (cases[]) instead of tables.
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 fn main() -> ExitCode {
@@ -103,5 +110,6 @@ fn main() -> ExitCode {
         Some(Command::WorkPrecision { scene, json, out }) => {
             sim::work_precision(scene.as_deref(), json, out.as_deref())
         }
+        Some(Command::Stability { json }) => sliding_ladder::report::stability::command(json),
     }
 }

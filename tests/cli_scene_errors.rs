@@ -195,13 +195,6 @@ fn every_bad_scene_gets_one_line_exit_2_and_no_file() {
             ">= 0",
         ),
         (
-            "penalty",
-            with("model = \"rigid\"", "model = \"penalty\"\nstiffness = 1e8"),
-            Some(9),
-            "contact.model",
-            "not yet implemented",
-        ),
-        (
             "unknown method",
             with("method = \"dop853\"", "method = \"rk45\""),
             Some(11),

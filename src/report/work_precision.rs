@@ -73,6 +73,7 @@ pub fn scene_at(theta0: f64, rate0: f64) -> Scene {
             Output::SeparationTime,
             Output::EnergyError,
         ],
+        contact: crate::sim::scene::ContactModel::Rigid,
     }
 }
 

@@ -3,9 +3,10 @@
 
 use super::fall::{self, Outcome, Sample};
 use super::output::Output;
+use super::penalty::Contact;
 use super::rigid::separation_cosine;
 use super::run::RunError;
-use super::scene::{self, Scene};
+use super::scene::{self, ContactModel, Scene};
 use crate::report::files::{write_all, OutFile};
 use crate::report::plot::{PlotSpec, Series};
 use serde_json::{json, Map, Value};
@@ -183,6 +184,13 @@ pub fn summary(scene: &Scene, o: &Outcome) -> String {
         "scene {}: θ0 = {} rad, θ̇0 = {} rad/s, method {}\n",
         scene.file, scene.theta0, scene.rate0, scene.method
     );
+    if let ContactModel::Penalty { stiffness, damping } = scene.contact {
+        let c = Contact::from_dimensional(&scene.ladder, stiffness, damping);
+        s += &format!(
+            "  contact      penalty springs: k l/(m g) = {:e}, c √(l/g)/m = {:e} (the separation approaches the rigid one as k grows)\n",
+            c.kappa, c.gamma
+        );
+    }
     match o.separation {
         Some(p) => s += &format!(
             "  separation   t = {:.15} s   θ = {:.15} rad ({:.6}°)   θ̇ = {:.12} rad/s\n               cos θ = {:.15} (predicted by the energy integral: {:.15})\n",

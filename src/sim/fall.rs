@@ -10,7 +10,7 @@ use super::integrators::{Stats, Stepper};
 use super::output::Output;
 use super::rigid::{self, Ladder, WallPhase};
 use super::run::{integrate_phase, Observer, RunError};
-use super::scene::{End, Scene, MAX_END_TIME};
+use super::scene::{ContactModel, End, Scene, MAX_END_TIME};
 use std::cell::Cell;
 use std::f64::consts::FRAC_PI_2;
 
@@ -246,6 +246,9 @@ impl Event<4> for LiftOffEvent {
 
 /// Run `scene` with at most `max_steps` steps per phase.
 pub fn run(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
+    if let ContactModel::Penalty { stiffness, damping } = scene.contact {
+        return super::penalty_scene::run(scene, stiffness, damping, max_steps);
+    }
     let plan = Plan::of(scene);
     let ladder = scene.ladder;
     let (m, l, g) = (ladder.mass, ladder.half_length, ladder.gravity);
@@ -253,7 +256,8 @@ pub fn run(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
     let mut work = Work::default();
     let t_end = match scene.end {
         End::Time(t) => t,
-        _ => MAX_END_TIME,
+        // MAX_END_TIME at l = g = 1, in this ladder's time unit √(l/g) (scenes span 1e-30..1e30).
+        _ => MAX_END_TIME * (l / g).sqrt().max(1.0),
     };
     let e0 = plan
         .energy

@@ -5,14 +5,22 @@
 //! [`rigid`] (phase 1, the note's sec. 2.1), [`floor`] (phase 2, beyond the note), [`exact`]
 //! (reference), [`integrators`], [`event`] (crossings refined on the interpolant), [`run`] (the
 //! phase driver), [`fall`] (a whole scene), [`command`] (what the `ladder` CLI calls).
+//! Stiff and extreme cases: [`penalty`] (the ladder on one-sided springs, beyond the note) and
+//! [`penalty_scene`] (scenes with `contact.model = "penalty"`), [`constrained`] (full
+//! coordinates with Lagrange multipliers and their drift), [`extreme`] (the wall phase at the
+//! edges of its domain: equilibrium, immediate release, any scale).
 
 pub mod command;
+pub mod constrained;
 pub mod event;
 pub mod exact;
+pub mod extreme;
 pub mod fall;
 pub mod floor;
 pub mod integrators;
 pub mod output;
+pub mod penalty;
+pub mod penalty_scene;
 pub mod rigid;
 pub mod run;
 pub mod scene;

@@ -8,7 +8,7 @@
 use super::integrators::Control;
 use super::output::Output;
 use super::rigid::Ladder;
-use super::scene_checks::{check_contact, check_integrator, check_outputs};
+use super::scene_checks::{check_contact, check_integrator, check_outputs, check_penalty};
 use serde::Deserialize;
 use std::fmt;
 use std::path::Path;
@@ -47,6 +47,20 @@ pub enum End {
     Time(f64),
 }
 
+/// The contact model of a scene.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ContactModel {
+    /// Rigid, frictionless wall and floor (constraints): the note's model.
+    Rigid,
+    /// One-sided springs (see `sim::penalty`).
+    Penalty {
+        /// k, N/m.
+        stiffness: f64,
+        /// c, N·s/m.
+        damping: f64,
+    },
+}
+
 /// A validated scene.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
@@ -66,6 +80,8 @@ pub struct Scene {
     pub end: End,
     /// The outputs asked for, in the order given.
     pub outputs: Vec<Output>,
+    /// Rigid contacts or penalty springs.
+    pub contact: ContactModel,
 }
 
 #[derive(Deserialize)]
@@ -225,20 +241,27 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
         cx.err(e.span(), &field, e.message().trim().to_string())
     })?;
     let l = raw.ladder.get_ref();
-    let positive = |x: f64| x > 0.0 && x < 1e12;
+    // Any scale from 1e-30 to 1e30: the simulator is checked to give the same angles, times
+    // scaled by √(l/g) and forces by m g over that whole range (`ladder stability`).
+    let positive = |x: f64| (1e-30..=1e30).contains(&x);
     let ladder = Ladder {
-        mass: cx.number(&l.mass, "ladder.mass", positive, "a number > 0 (kg)")?,
+        mass: cx.number(
+            &l.mass,
+            "ladder.mass",
+            positive,
+            "a number > 0 (kg) in [1e-30, 1e30]",
+        )?,
         half_length: cx.number(
             &l.half_length,
             "ladder.half_length",
             positive,
-            "a number > 0 (m)",
+            "a number > 0 (m) in [1e-30, 1e30]",
         )?,
         gravity: cx.number(
             &l.gravity,
             "ladder.gravity",
             positive,
-            "a number > 0 (m/s²)",
+            "a number > 0 (m/s²) in [1e-30, 1e30]",
         )?,
     };
     let s = raw.start.get_ref();
@@ -261,7 +284,7 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
             "{rate0} rad/s is too fast: the wall would have to pull at the start; allowed: below sqrt(3g cos θ0 / 4l) = {max}"
         )));
     }
-    check_contact(&cx, raw.contact.get_ref())?;
+    let contact = check_contact(&cx, raw.contact.get_ref(), &ladder)?;
     let (method, control) = check_integrator(&cx, raw.integrator.get_ref())?;
     let e = raw.end.get_ref();
     let end = match (e.at.get_ref().as_str(), &e.time) {
@@ -299,6 +322,9 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
         return Err(cx.err(Some(s.angle.span()), "start", "θ0 = 0 with θ̇0 = 0 is the equilibrium: the ladder never leaves the wall; give angle > 0 or angular_velocity > 0"));
     }
     let outputs = check_outputs(&cx, raw.outputs.get_ref(), &method, end)?;
+    if let ContactModel::Penalty { .. } = contact {
+        check_penalty(&cx, &raw, &method, end, &outputs)?;
+    }
     Ok(Scene {
         file: file.to_string(),
         ladder,
@@ -308,5 +334,6 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
         control,
         end,
         outputs,
+        contact,
     })
 }

@@ -2,11 +2,18 @@
 
 use super::integrators::{is_adaptive, Control, METHODS};
 use super::output::Output;
+use super::penalty::{Contact, KAPPA_RANGE};
+use super::rigid::Ladder;
 use super::scene::{
-    Ctx, End, RawContact, RawIntegrator, RawOutputs, SceneError, MIN_STEP, MIN_TOLERANCE,
+    ContactModel, Ctx, End, Raw, RawContact, RawIntegrator, RawOutputs, SceneError, MIN_STEP,
+    MIN_TOLERANCE,
 };
 
-pub(super) fn check_contact(cx: &Ctx, c: &RawContact) -> Result<(), SceneError> {
+pub(super) fn check_contact(
+    cx: &Ctx,
+    c: &RawContact,
+    ladder: &Ladder,
+) -> Result<ContactModel, SceneError> {
     match c.model.get_ref().as_str() {
         "rigid" => {
             for (k, v) in [
@@ -21,7 +28,7 @@ pub(super) fn check_contact(cx: &Ctx, c: &RawContact) -> Result<(), SceneError> 
                     ));
                 }
             }
-            Ok(())
+            Ok(ContactModel::Rigid)
         }
         "penalty" => {
             let Some(k) = &c.stiffness else {
@@ -31,15 +38,33 @@ pub(super) fn check_contact(cx: &Ctx, c: &RawContact) -> Result<(), SceneError> 
                     "the penalty model needs stiffness (N/m, > 0)",
                 ));
             };
-            cx.number(k, "contact.stiffness", |x| x > 0.0, "a number > 0 (N/m)")?;
-            if let Some(d) = &c.damping {
-                cx.number(d, "contact.damping", |x| x >= 0.0, "a number >= 0 (N·s/m)")?;
+            let stiffness = cx.number(k, "contact.stiffness", |x| x > 0.0, "a number > 0 (N/m)")?;
+            let damping = match &c.damping {
+                Some(d) => {
+                    cx.number(d, "contact.damping", |x| x >= 0.0, "a number >= 0 (N·s/m)")?
+                }
+                None => 0.0,
+            };
+            let contact = Contact::from_dimensional(ladder, stiffness, damping);
+            let (lo, hi) = KAPPA_RANGE;
+            if !(lo..=hi).contains(&contact.kappa) {
+                return Err(cx.err(
+                    Some(k.span()),
+                    "contact.stiffness",
+                    format!(
+                        "k l/(m g) = {:e} is out of range; allowed: a stiffness with k l/(m g) in [{lo:e}, {hi:e}] (below, the springs are no contact; above, rounding of positions times k swamps the force)",
+                        contact.kappa
+                    ),
+                ));
             }
-            Err(cx.err(
-                Some(c.model.span()),
-                "contact.model",
-                "\"penalty\" is not yet implemented; allowed now: \"rigid\"",
-            ))
+            if !contact.gamma.is_finite() {
+                return Err(cx.err(
+                    c.damping.as_ref().map(|d| d.span()),
+                    "contact.damping",
+                    "c √(l/g)/m is not a finite number; allowed: a smaller damping",
+                ));
+            }
+            Ok(ContactModel::Penalty { stiffness, damping })
         }
         other => Err(cx.err(
             Some(c.model.span()),
@@ -48,6 +73,52 @@ pub(super) fn check_contact(cx: &Ctx, c: &RawContact) -> Result<(), SceneError> 
         )),
     }
 }
+
+/// What a penalty scene may ask for: the wall phase to separation, by an integrator.
+pub(super) fn check_penalty(
+    cx: &Ctx,
+    raw: &Raw,
+    method: &str,
+    end: End,
+    outputs: &[Output],
+) -> Result<(), SceneError> {
+    let i = raw.integrator.get_ref();
+    if method == "exact" {
+        return Err(cx.err(
+            Some(i.method.span()),
+            "integrator.method",
+            "\"exact\" is the rigid model's reference; the penalty model needs an integrator (e.g. radau5)",
+        ));
+    }
+    if end != End::Separation {
+        return Err(cx.err(
+            Some(raw.end.get_ref().at.span()),
+            "end.at",
+            "the penalty model runs to separation only; allowed: \"separation\"",
+        ));
+    }
+    for (o, w) in outputs.iter().zip(raw.outputs.get_ref().want.get_ref()) {
+        if !PENALTY_OUTPUTS.contains(o) {
+            return Err(cx.err(
+                Some(w.span()),
+                "outputs.want",
+                format!(
+                    "\"{}\" is not produced by the penalty model; allowed: separation_angle, separation_time, separation_rate, final_state, rhs_evals",
+                    o.name()
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+const PENALTY_OUTPUTS: [Output; 5] = [
+    Output::SeparationAngle,
+    Output::SeparationTime,
+    Output::SeparationRate,
+    Output::FinalState,
+    Output::RhsEvals,
+];
 
 pub(super) fn check_integrator(
     cx: &Ctx,

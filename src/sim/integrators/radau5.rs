@@ -72,8 +72,12 @@ fn lu_factor(m: &mut [f64], piv: &mut [usize], n: usize) -> bool {
 
 /// Solve with the factors of [`lu_factor`], overwriting `b`.
 fn lu_solve(m: &[f64], piv: &[usize], b: &mut [f64], n: usize) {
+    // `lu_factor` swaps whole rows, multipliers included (LAPACK's convention), so the stored L
+    // belongs to the fully permuted matrix: apply every interchange before the substitution.
     for k in 0..n {
         b.swap(k, piv[k]);
+    }
+    for k in 0..n {
         for i in k + 1..n {
             b[i] -= m[i * n + k] * b[k];
         }
@@ -363,5 +367,28 @@ impl<const N: usize> Stepper<N> for Radau5<N> {
 
     fn stats(&self) -> Stats {
         self.stats
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{lu_factor, lu_solve};
+
+    /// A system whose elimination interchanges rows at the first *and* a later column, so the
+    /// stored multipliers are permuted after they were computed: x = (1, 2, 3) exactly.
+    #[test]
+    fn lu_solve_with_late_pivots() {
+        let a = [1.0, 2.0, 3.0, 2.0, 1.0, 1.0, 4.0, 4.0, 1.0];
+        let x = [1.0, 2.0, 3.0];
+        let mut b: Vec<f64> = (0..3)
+            .map(|i| (0..3).map(|j| a[i * 3 + j] * x[j]).sum())
+            .collect();
+        let (mut m, mut piv) = (a.to_vec(), vec![0; 3]);
+        assert!(lu_factor(&mut m, &mut piv, 3));
+        assert_eq!(piv, vec![2, 2, 2], "both interchanges happen");
+        lu_solve(&m, &piv, &mut b, 3);
+        for i in 0..3 {
+            assert!((b[i] - x[i]).abs() <= 8.0 * f64::EPSILON * 3.0, "{b:?}");
+        }
     }
 }

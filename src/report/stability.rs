@@ -1,0 +1,246 @@
+//! `ladder stability [--json]`: the stiff and the extreme cases, each with its expected value
+//! (from theory or the exact reference), the error, the work, the run time and a verdict.
+//!
+//! Groups (see [`super::stability_stiff`] and [`super::stability_extreme`]):
+//! * `stiff`: the penalty model over κ = k l/(m g) = 1e2..1e12 with implicit and explicit
+//!   methods, against the rigid separation angle (footnote 4);
+//! * `lagrange`: the constrained full-coordinate model (multipliers), its separation angle and
+//!   constraint drift against time, with and without Baumgarte stabilisation;
+//! * `extreme`: starts from almost upright to almost flat, pushes up to and past the speed at
+//!   which the top leaves at once, the equilibrium;
+//! * `scale`: m, l, g at 1e-30 and 1e30;
+//! * `long`: 1e7 steps with nothing stored, and the peak memory of the process.
+//!
+//! **Verdicts.** `ok` when the run ends as theory says and its error is within the case's
+//! bound; `fail` with the reason otherwise (the run's own error: step limit, step size
+//! collapse, non-finite state, Newton failure; a blow-up seen in the energy; an error above
+//! the bound). Every bound is an error model stated where the case is built. The exit code is
+//! 0 whatever the verdicts: explicit methods are *expected* to fail at high stiffness, and the
+//! point of the report is to show that they fail visibly. A case whose verdict contradicts
+//! theory's prediction (an implicit method failing, an explicit one passing where theory says it
+//! cannot) makes the exit code 1.
+
+use super::stability_extreme;
+use super::stability_stiff;
+use indicatif::{ProgressBar, ProgressDrawTarget};
+use serde::Serialize;
+use std::io::{IsTerminal, Write};
+use std::process::ExitCode;
+
+/// `ok` or `fail`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Verdict {
+    /// As theory says, within the bound.
+    Ok,
+    /// Not: see the reason.
+    Fail,
+}
+
+/// What theory predicts for a case's verdict.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Expect {
+    /// The method must get it right (implicit methods; explicit ones well inside stability).
+    Ok,
+    /// The method cannot (beyond its stability limit, or κ·tol ≥ 1).
+    Fail,
+    /// Near a limit: either verdict is plausible.
+    Either,
+}
+
+impl Expect {
+    /// Whether `verdict` contradicts this expectation.
+    pub fn surprised_by(self, verdict: Verdict) -> bool {
+        matches!(
+            (self, verdict),
+            (Expect::Ok, Verdict::Fail) | (Expect::Fail, Verdict::Ok)
+        )
+    }
+}
+
+/// One case of the report.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Case {
+    /// Group: stiff, lagrange, extreme, scale, long.
+    pub group: &'static str,
+    /// Name (stiff cases contain "penalty").
+    pub case: String,
+    /// Method (with its tolerance or step).
+    pub method: String,
+    /// The expected value, in words and number.
+    pub expected: String,
+    /// What the run gave.
+    pub value: String,
+    /// The error measure (see `expected`), when there is one.
+    pub error: Option<f64>,
+    /// The bound the error is held to.
+    pub bound: Option<f64>,
+    /// Accepted steps.
+    pub steps: u64,
+    /// Right-hand-side evaluations.
+    pub rhs_evals: u64,
+    /// Wall-clock seconds of the run.
+    pub seconds: f64,
+    /// ok / fail.
+    pub verdict: Verdict,
+    /// Why (for fail: the reason; for ok: a short note).
+    pub reason: String,
+    /// What theory expects of the verdict.
+    pub expect: Expect,
+    /// Constraint drift (t, max |g| up to t), for the Lagrange cases.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub drift: Option<Vec<(f64, f64)>>,
+}
+
+impl Case {
+    /// Judge `error` against `bound`: ok when within, fail with the numbers otherwise.
+    pub fn judge(&mut self, error: f64, bound: f64) {
+        self.error = Some(error);
+        self.bound = Some(bound);
+        if error.is_finite() && error <= bound {
+            self.verdict = Verdict::Ok;
+        } else {
+            self.verdict = Verdict::Fail;
+            self.reason = format!("error {error:.2e} above the bound {bound:.2e}");
+        }
+    }
+}
+
+/// A case with everything but its identity empty (verdict fail until judged).
+pub fn blank(group: &'static str, case: String, method: String, expected: String) -> Case {
+    Case {
+        group,
+        case,
+        method,
+        expected,
+        value: String::new(),
+        error: None,
+        bound: None,
+        steps: 0,
+        rhs_evals: 0,
+        seconds: 0.0,
+        verdict: Verdict::Fail,
+        reason: String::new(),
+        expect: Expect::Ok,
+        drift: None,
+    }
+}
+
+/// Unit roundoff u = 2⁻⁵³.
+pub const U: f64 = f64::EPSILON / 2.0;
+
+/// All cases, calling `tick` with a label before each group's runs.
+pub fn all_cases(mut tick: impl FnMut(&str, u64)) -> (Vec<Case>, stability_stiff::Convergence) {
+    let mut cases = Vec::new();
+    let (stiff, conv) = stability_stiff::penalty_cases(&mut tick);
+    cases.extend(stiff);
+    cases.extend(stability_stiff::lagrange_cases(&mut tick));
+    cases.extend(stability_extreme::extreme_cases(&mut tick));
+    cases.extend(stability_extreme::scale_cases(&mut tick));
+    cases.extend(stability_extreme::long_cases(&mut tick));
+    (cases, conv)
+}
+
+fn progress() -> ProgressBar {
+    let target = if std::io::stdout().is_terminal() {
+        ProgressDrawTarget::stderr()
+    } else {
+        ProgressDrawTarget::hidden()
+    };
+    ProgressBar::with_draw_target(Some(stability_stiff::EXPECTED_RUNS), target)
+}
+
+/// `ladder stability [--json]`.
+pub fn command(json: bool) -> ExitCode {
+    let bar = progress();
+    let (cases, conv) = all_cases(|label, n| {
+        bar.set_message(label.to_string());
+        bar.inc(n);
+    });
+    bar.finish_and_clear();
+    let surprises = cases
+        .iter()
+        .filter(|c| c.expect.surprised_by(c.verdict))
+        .count();
+    let text = if json {
+        let v = serde_json::json!({ "cases": cases, "convergence": conv, "surprises": surprises });
+        serde_json::to_string_pretty(&v).unwrap_or_default() + "\n"
+    } else {
+        table(&cases, &conv)
+    };
+    // A closed pipe (e.g. `| head`) is not an error of the report.
+    let _ = std::io::stdout().lock().write_all(text.as_bytes());
+    if surprises == 0 {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
+}
+
+fn sci(x: Option<f64>) -> String {
+    x.map_or("-".into(), |v| format!("{v:.2e}"))
+}
+
+/// The human-readable report.
+pub fn table(cases: &[Case], conv: &stability_stiff::Convergence) -> String {
+    let mut s = String::new();
+    let mut group = "";
+    for c in cases {
+        if c.group != group {
+            group = c.group;
+            s += &format!(
+                "\n[{group}]\n{:<38} {:<24} {:>9} {:>9} {:>9} {:>9} {:>8} {:<5} {}\n",
+                "case",
+                "method",
+                "error",
+                "bound",
+                "steps",
+                "rhs",
+                "seconds",
+                "",
+                "expected / got / reason"
+            );
+        }
+        s += &format!(
+            "{:<38} {:<24} {:>9} {:>9} {:>9} {:>9} {:>8.3} {:<5} {} | {} | {}\n",
+            c.case,
+            c.method,
+            sci(c.error),
+            sci(c.bound),
+            c.steps,
+            c.rhs_evals,
+            c.seconds,
+            if c.verdict == Verdict::Ok {
+                "ok"
+            } else {
+                "FAIL"
+            },
+            c.expected,
+            c.value,
+            c.reason
+        );
+        if let Some(d) = &c.drift {
+            let pts: Vec<String> = d.iter().map(|(t, g)| format!("t={t:e}: {g:.1e}")).collect();
+            s += &format!("{:<38} constraint drift max|g|: {}\n", "", pts.join(", "));
+        }
+    }
+    s += &format!("\n{conv}\n");
+    let n_ok = cases.iter().filter(|c| c.verdict == Verdict::Ok).count();
+    let surprises: Vec<&str> = cases
+        .iter()
+        .filter(|c| c.expect.surprised_by(c.verdict))
+        .map(|c| c.case.as_str())
+        .collect();
+    s += &format!(
+        "{} cases: {n_ok} ok, {} fail; verdicts against theory's expectation: {}\n",
+        cases.len(),
+        cases.len() - n_ok,
+        if surprises.is_empty() {
+            "all as expected".to_string()
+        } else {
+            format!("UNEXPECTED {}", surprises.join("; "))
+        }
+    );
+    s
+}

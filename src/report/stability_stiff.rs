@@ -1,0 +1,281 @@
+//! The stiff cases of `ladder stability`: the penalty model over κ, and the constrained
+//! (Lagrange-multiplier) model with its drift. Units of l, g, m throughout (see
+//! `sim::penalty`); the start is from rest at θ0 = 0.3.
+//!
+//! **Error model of a penalty case** (angle error against the rigid arccos((2/3) cos θ0)):
+//! bound = 10/κ + 10 κ u + 10 N τ, where
+//! * 10/κ: the model's own distance to the rigid limit. The springs yield by p = F/k, i.e.
+//!   F/(m g κ) l with F ≤ m g, so the geometry, and with it θ_s, moves by O(1/κ); 10 is the
+//!   margin on the O(1) constant (the measured one is 1.4).
+//! * 10 κ u: rounding. The force is κ times l sin θ − x, a difference of O(l) numbers each
+//!   rounded to u l: a force error of κ u m g, and ∂F_w/∂θ = −3ω² sin²θ_s ≈ −1.3 m g at
+//!   separation turns it into an angle error of about κ u.
+//! * 10 N τ: the integrator, N accepted steps each with local error τ (the tolerance; for a
+//!   fixed step h of order p, h^(p+1)), added without cancellation.
+//!
+//! **Expected verdicts.** The contact modes have ω² = κ and 4κ (the eigenvalues of
+//! κ G M⁻¹ Gᵀ, trace 5κ, determinant 4κ²), so ω_max = 2√κ. A fixed step h is stable only for
+//! h ω_max below the method's limit (2 for Verlet and symplectic Euler, 2.785 for RK4) and
+//! accurate only well below (≤ 0.2). An explicit adaptive method keeps its position error near
+//! tol l, which becomes a force error κ tol m g: fine for κ tol ≤ 1e-4, hopeless for κ tol ≥ 1.
+//! Radau5 (L-stable, stiffly accurate: its step ends on the last stage, where the forces match
+//! the positions) is expected to pass everywhere.
+
+use super::stability::{blank, Case, Expect, Verdict, U};
+use crate::sim::constrained::{self, Constrained};
+use crate::sim::integrators::{order, Control};
+use crate::sim::penalty::{separation, Contact, Law};
+use serde::Serialize;
+use std::fmt;
+use std::time::Instant;
+
+/// Start angle of the stiff cases, rad.
+pub const THETA0: f64 = 0.3;
+/// Dimensionless stiffnesses swept.
+pub const KAPPAS: [f64; 6] = [1e2, 1e4, 1e6, 1e8, 1e10, 1e12];
+/// Step cap of every stiff run (a run never hangs: it stops here with a clear error).
+pub const STEP_CAP: u64 = 1_000_000;
+/// Runs made by the whole report (for the progress bar).
+pub const EXPECTED_RUNS: u64 = 30 + 14 + 33 + 14 + 2;
+
+/// The stiff methods: name, control, explicit stability limit of h ω (fixed steps).
+const METHODS: [(&str, Control, f64); 5] = [
+    ("radau5", Control::Tolerance(1e-10), f64::INFINITY),
+    ("dop853", Control::Tolerance(1e-10), 0.0),
+    ("dopri5", Control::Tolerance(1e-10), 0.0),
+    ("rk4", Control::Fixed(1e-3), 2.785),
+    ("verlet", Control::Fixed(1e-3), 2.0),
+];
+
+/// The rigid limit, footnote 4: θ_s = arccos((2/3) cos θ0).
+pub fn rigid_angle() -> f64 {
+    (2.0 / 3.0 * THETA0.cos()).acos()
+}
+
+fn label(method: &str, control: Control) -> String {
+    match control {
+        Control::Tolerance(t) => format!("{method} tol {t:e}"),
+        Control::Fixed(h) => format!("{method} h {h:e}"),
+    }
+}
+
+fn expectation(method: &str, control: Control, limit: f64, kappa: f64) -> Expect {
+    match control {
+        _ if method == "radau5" => Expect::Ok,
+        Control::Fixed(h) => {
+            let h_omega = h * 2.0 * kappa.sqrt();
+            if h_omega <= 0.2 {
+                Expect::Ok
+            } else if h_omega > limit {
+                Expect::Fail
+            } else {
+                Expect::Either
+            }
+        }
+        Control::Tolerance(t) if kappa * t <= 1e-4 => Expect::Ok,
+        Control::Tolerance(t) if kappa * t >= 1.0 => Expect::Fail,
+        Control::Tolerance(_) => Expect::Either,
+    }
+}
+
+/// The observed convergence of the penalty separation angle to the rigid one (radau5 rows).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Convergence {
+    /// (κ, θ_s − θ_rigid) of radau5.
+    pub errors: Vec<(f64, f64)>,
+    /// Least-squares slope of log|error| against log κ over κ ≤ 1e6 (expected −1).
+    pub observed_rate: f64,
+    /// First κ where |error| exceeds twice the 1/κ line through κ = 1e2 (None: no stall).
+    pub stalls_from: Option<f64>,
+}
+
+impl fmt::Display for Convergence {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(f, "penalty → rigid (radau5): θ_s − θ_rigid against κ:")?;
+        for (k, e) in &self.errors {
+            writeln!(f, "  κ = {k:.0e}: {e:+.3e}   (κ·error = {:.3})", k * e)?;
+        }
+        write!(
+            f,
+            "  observed rate κ^{:.3} over κ ≤ 1e6 (model: κ^-1, the springs yield by F/k); ",
+            self.observed_rate
+        )?;
+        match self.stalls_from {
+            Some(k) => write!(
+                f,
+                "stalls from κ = {k:.0e}: the force is κ (l sin θ − x), so position errors (tolerance, rounding u l) are multiplied by κ"
+            ),
+            None => write!(f, "no stall up to κ = 1e12"),
+        }
+    }
+}
+
+/// The penalty sweep: every κ with every method.
+pub fn penalty_cases(tick: &mut impl FnMut(&str, u64)) -> (Vec<Case>, Convergence) {
+    let rigid = rigid_angle();
+    let mut cases = Vec::new();
+    let mut errors = Vec::new();
+    for kappa in KAPPAS {
+        for (method, control, limit) in METHODS {
+            tick(&format!("penalty κ={kappa:.0e} {method}"), 1);
+            let mut c = blank(
+                "stiff",
+                format!("penalty κ={kappa:.0e}"),
+                label(method, control),
+                format!("θ_s → {rigid:.12} (rigid)"),
+            );
+            c.expect = expectation(method, control, limit, kappa);
+            let contact = Contact { kappa, gamma: 0.0 };
+            let t = Instant::now();
+            let run = separation(
+                contact,
+                Law::Switched,
+                THETA0,
+                0.0,
+                method,
+                control,
+                STEP_CAP,
+            );
+            c.seconds = t.elapsed().as_secs_f64();
+            c.steps = run.stats.steps;
+            c.rhs_evals = run.stats.rhs_evals;
+            match run.result {
+                Err(e) => c.reason = e.to_string(),
+                Ok(s) => {
+                    c.value = format!(
+                        "θ_s = {:.12}, |ΔE| = {:.1e} m g l",
+                        s.angle, s.energy_change
+                    );
+                    let err = (s.angle - rigid).abs();
+                    let tau = match control {
+                        Control::Tolerance(t) => t,
+                        Control::Fixed(h) => h.powi(order(method).unwrap_or(1) as i32 + 1),
+                    };
+                    c.judge(
+                        err,
+                        10.0 / kappa + 10.0 * kappa * U + 10.0 * c.steps as f64 * tau,
+                    );
+                    // γ = 0 conserves energy: a change beyond the integration error is a blow-up.
+                    if s.energy_change > 1e-6 {
+                        c.verdict = Verdict::Fail;
+                        c.reason = format!(
+                            "blow-up: the energy changed by {:.1e} m g l",
+                            s.energy_change
+                        );
+                    }
+                    if method == "radau5" {
+                        errors.push((kappa, s.angle - rigid));
+                    }
+                }
+            }
+            cases.push(c);
+        }
+    }
+    (cases, convergence(errors))
+}
+
+fn convergence(errors: Vec<(f64, f64)>) -> Convergence {
+    let pts: Vec<(f64, f64)> = errors
+        .iter()
+        .filter(|(k, e)| *k <= 1e6 && *e != 0.0)
+        .map(|(k, e)| (k.log10(), e.abs().log10()))
+        .collect();
+    let n = pts.len() as f64;
+    let (sx, sy) = pts.iter().fold((0.0, 0.0), |a, p| (a.0 + p.0, a.1 + p.1));
+    let (mx, my) = (sx / n, sy / n);
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    let first = errors.first().map_or(0.0, |(k, e)| k * e.abs());
+    let stalls_from = errors
+        .iter()
+        .find(|(k, e)| e.abs() > 2.0 * first / k)
+        .map(|(k, _)| *k);
+    Convergence {
+        observed_rate: sxy / sxx,
+        errors,
+        stalls_from,
+    }
+}
+
+/// Baumgarte's stabilisation used in the report: α = β = 5 √(g/l) (constraint errors decay in
+/// ~0.2 √(l/g), slow enough for every method's step here).
+pub const BAUMGARTE: Constrained = Constrained {
+    alpha: 5.0,
+    beta: 5.0,
+};
+
+/// The Lagrange-multiplier formulation: separation angle (λ₁ falling through zero, against
+/// footnote 4) and the constraint drift to t = 1000 √(l/g), with and without stabilisation.
+pub fn lagrange_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
+    let rigid = rigid_angle();
+    let checkpoints = [1.0, 10.0, 100.0, 1000.0];
+    let mut cases = Vec::new();
+    for (name, model) in [
+        (
+            "no stabilisation",
+            Constrained {
+                alpha: 0.0,
+                beta: 0.0,
+            },
+        ),
+        ("baumgarte α=β=5", BAUMGARTE),
+    ] {
+        for method in crate::sim::integrators::METHODS {
+            tick(&format!("lagrange {name} {method}"), 1);
+            let control = if crate::sim::integrators::is_adaptive(method) {
+                Control::Tolerance(1e-10)
+            } else {
+                Control::Fixed(1e-3)
+            };
+            let mut c = blank(
+                "lagrange",
+                format!("lagrange, {name}"),
+                label(method, control),
+                format!("θ_s = {rigid:.12}; drift bounded with stabilisation"),
+            );
+            // Explicit Euler gains energy every step (|1 + i h ω| > 1): over 1e6 steps its
+            // drift may grow even with stabilisation.
+            if method == "euler" {
+                c.expect = Expect::Either;
+            }
+            let t = Instant::now();
+            let d = constrained::drift(
+                &model,
+                THETA0,
+                0.0,
+                method,
+                control,
+                &checkpoints,
+                10_000_000,
+            );
+            let sep = constrained::separation_angle(&model, THETA0, 0.0, method, control, STEP_CAP);
+            c.seconds = t.elapsed().as_secs_f64();
+            c.steps = d.stats.steps;
+            c.rhs_evals = d.stats.rhs_evals;
+            c.drift = Some(d.points.clone());
+            match (d.error, sep) {
+                (Some(e), _) | (None, Err(e)) => c.reason = e.to_string(),
+                (None, Ok(angle)) => {
+                    c.value = format!("θ_s = {angle:.12}");
+                    let tau = match control {
+                        Control::Tolerance(t) => t,
+                        Control::Fixed(h) => h.powi(order(method).unwrap_or(1) as i32 + 1),
+                    };
+                    // Steps to separation: about t_s / h or the drift run's share of its steps.
+                    let n = (c.steps as f64) * 2.2 / 1000.0;
+                    c.judge(
+                        (angle - rigid).abs(),
+                        10.0 * n.max(1.0) * tau.max(U) + 1e3 * U,
+                    );
+                    let (g10, g1000) = (d.points[1].1, d.points[3].1);
+                    if model.beta > 0.0 && g1000 > 10.0 * g10 + 1e-12 && c.verdict == Verdict::Ok {
+                        c.verdict = Verdict::Fail;
+                        c.reason = format!("drift grows under stabilisation: {g10:.1e} at t=10, {g1000:.1e} at t=1000");
+                    }
+                }
+            }
+            cases.push(c);
+        }
+    }
+    cases
+}

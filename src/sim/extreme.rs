@@ -1,0 +1,95 @@
+//! The wall phase at the edges of its domain: any m, l, g in 1e-30..1e30, starts from almost
+//! upright to almost flat, pushes from 1e-15 rad/s to past the speed at which the top leaves
+//! the wall at once, and the equilibrium. Every start gets an answer, never a hang:
+//!
+//! * θ0 = θ̇0 = 0 is an equilibrium (the wall force m l sin θ (ω² cos θ − θ̇²) is zero for all
+//!   time): the ladder never leaves the wall; said so without integrating.
+//! * When ω² cos θ0 − θ̇0² ≤ 0 (for θ0 = 0: θ̇0 ≥ ω, i.e. cos θ_s = 2/3 + θ̇0²/(3ω²) ≥ 1) the
+//!   wall would have to pull from the first instant: the top leaves at once, t_s = 0, θ_s = θ0.
+//! * Otherwise the wall phase (5) is integrated *in the ladder's own units as given*, with the
+//!   end time scaled by the time unit √(l/g), so that the integrators' scale invariance is put to
+//!   the test rather than assumed. The separation angle must not depend on m, l, g; times scale
+//!   as √(l/g) and forces as m g (the forces are products m l ω² ..., each within f64's range
+//!   for factors in 1e-30..1e30).
+
+use super::event::{Direction, Event};
+use super::fall::SeparationState;
+use super::integrators::any::AnyStepper;
+use super::integrators::{Control, Stats, Stepper};
+use super::rigid::{separation_factor, Ladder, WallPhase};
+use super::run::{integrate_phase, RunError};
+use super::scene::MAX_END_TIME;
+
+/// How the wall phase from a start ends.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum WallRelease {
+    /// The wall force reached zero at this state.
+    Separated(SeparationState),
+    /// The wall would have to pull at t = 0: the top leaves at once (θ_s = θ0, t_s = 0).
+    AtOnce,
+    /// θ0 = θ̇0 = 0: equilibrium, the ladder never leaves the wall.
+    Equilibrium,
+}
+
+/// Separation: the factor ω² cos θ − θ̇² of the wall force falls through zero.
+struct Factor(f64);
+impl Event<2> for Factor {
+    fn value(&self, _t: f64, y: &[f64; 2]) -> f64 {
+        separation_factor(self.0, y[0], y[1])
+    }
+    fn direction(&self) -> Direction {
+        Direction::Falling
+    }
+}
+
+/// The wall phase of `ladder` from (θ0, θ̇0) with `method` at `control` (in the ladder's own
+/// seconds), at most `max_steps` steps. Returns how it ends and the integrator's counters.
+pub fn wall_release(
+    ladder: &Ladder,
+    theta0: f64,
+    rate0: f64,
+    method: &str,
+    control: Control,
+    max_steps: u64,
+) -> Result<(WallRelease, Stats), RunError> {
+    let omega2 = ladder.omega2();
+    if !(omega2.is_finite() && omega2 > 0.0 && theta0.is_finite() && rate0.is_finite()) {
+        return Err(RunError::Start(format!(
+            "no wall phase for ω² = {omega2}, θ0 = {theta0}, θ̇0 = {rate0}"
+        )));
+    }
+    if theta0 == 0.0 && rate0 == 0.0 {
+        return Ok((WallRelease::Equilibrium, Stats::default()));
+    }
+    if separation_factor(omega2, theta0, rate0) <= 0.0 {
+        return Ok((WallRelease::AtOnce, Stats::default()));
+    }
+    let wall = WallPhase::new(ladder);
+    let mut stepper = AnyStepper::new(method, control, 0.0, [theta0, rate0])
+        .ok_or_else(|| RunError::Start(format!("method {method} does not take {control:?}")))?;
+    // The longest fall the scenes allow (1e4 s at l = g = 1 m, s⁻²), in this ladder's units.
+    let t_end = MAX_END_TIME * (ladder.half_length / ladder.gravity).sqrt();
+    let end = integrate_phase(
+        &wall,
+        &mut stepper,
+        &[&Factor(omega2)],
+        t_end,
+        max_steps,
+        &mut (),
+    );
+    let stats = stepper.stats();
+    let end = end?;
+    match end.event {
+        Some(_) => Ok((
+            WallRelease::Separated(SeparationState {
+                time: end.t,
+                angle: end.y[0],
+                rate: end.y[1],
+            }),
+            stats,
+        )),
+        None => Err(RunError::Start(format!(
+            "the wall force did not reach zero by t = {t_end:e} s"
+        ))),
+    }
+}

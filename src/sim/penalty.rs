@@ -1,0 +1,360 @@
+//! The penalty contact model: the ladder as a free rigid body in the plane, held by two
+//! one-sided springs instead of two constraints. **An extension beyond the note**, which treats
+//! the wall and the floor as rigid (sec. 2.1); this model is the stiff test problem of
+//! `ladder stability`.
+//!
+//! # Physics
+//! Generalised coordinates: the centre B = (x, y) and the angle θ from the wall. The ends are
+//! C = B + l(−sin θ, cos θ) (top) and D = B + l(sin θ, −cos θ) (foot). The wall x = 0 pushes on
+//! C when C is inside it, the floor y = 0 on D likewise:
+//!
+//! * penetrations p_w = −x_C = l sin θ − x and p_f = −y_D = l cos θ − y;
+//! * contact forces F = max(0, k p + c ṗ) while p > 0, else 0: a spring and a dashpot that can
+//!   push but never pull (the dashpot may not make the force negative on the way out);
+//! * m ẍ = F_w, m ÿ = F_f − m g, (m l²/3) θ̈ = l sin θ F_f − l cos θ F_w (torques about B of
+//!   the forces at D and C).
+//!
+//! With p = 0 and ṗ = 0 imposed, these are the note's equations (5), (14), (15). The
+//! *separation* of this model is where the wall force falls through zero after being positive,
+//! the note's definition for the rigid case (footnote 4).
+//!
+//! # Numerics
+//! Everything runs in units of l, g and m (lengths / l, times / √(l/g), forces / (m g)), so
+//! that m, l, g anywhere in 1e-30..1e30 change nothing but the scaling back; the model then
+//! depends on the dimensionless stiffness κ = k l/(m g) and damping γ = c √(l/g)/m only.
+//!
+//! The contact oscillates at ω_c ~ √κ (in units of √(g/l)) while the fall takes O(1): explicit
+//! methods need h ≲ 1/√κ, an implicit L-stable method does not. At large κ the force is
+//! κ times a *difference* of positions (l sin θ − x ~ l/κ): an absolute position error δ
+//! becomes a force error κ δ (in units of m g). δ is at least the rounding of x (u l, u =
+//! 1.1e-16), so the separation angle cannot be better than ~κ u; an explicit method's δ is its
+//! tolerance, so it cannot be better than ~κ tol. Radau5 ends each step on its last stage, where
+//! the stiff components are in equilibrium with the slow ones (stiff accuracy), and does much
+//! better than κ tol; its Newton iteration, though, cannot converge below the rounding of the
+//! forces, so tolerances under ~κ u fail. Together with the model's own O(1/κ) distance to the
+//! rigid limit this is the stall reported by `ladder stability`.
+//!
+//! **The kink.** max(0, ·) has a kink where the force is zero. Inside the right-hand side
+//! ([`Law::OneSided`]) every stage, Newton iterate and finite-difference probe near a tiny
+//! penetration may land on the wrong side of it: Newton stalls and steps are rejected. Since
+//! both forces stay positive throughout the wall phase and the run ends the moment the wall
+//! force falls through zero, the default ([`Law::Switched`]) integrates the smooth two-sided
+//! spring and lets an *event* find the zero of the force (event-driven integration of a
+//! switched system); lift-off at the floor, were it to happen, is an event too.
+//!
+//! The start is *pre-loaded*: the penetrations and their rates are set to the rigid model's
+//! forces divided by k (and their rate of change), so the springs start in equilibrium with the
+//! motion and no contact oscillation of size m g is excited (from p = 0 the springs would
+//! bounce and the wall force would reach zero at the first rebound).
+
+use super::event::{Direction, Event};
+use super::integrators::any::AnyStepper;
+use super::integrators::{Control, Ode, Stats, Stepper};
+use super::rigid::{event_safe_step, Ladder};
+use super::run::{integrate_phase, RunError};
+use num_dual::{Dual64, DualNum};
+use std::cell::Cell;
+
+/// ω² = 3g/(4l) in units where l = g = 1 (eq. (5)).
+pub const OMEGA2: f64 = 0.75;
+/// Dimensionless stiffness accepted by scenes: below 1 the springs are not contacts, above 1e15
+/// the rounding of positions alone makes the force meaningless (κ·u ≳ 0.1).
+pub const KAPPA_RANGE: (f64, f64) = (1.0, 1e15);
+/// Longest dimensionless time a penalty run may take (the fall takes O(1) to O(50)).
+pub const T_END: f64 = 1e4;
+
+thread_local! {
+    static MODELS_BUILT: Cell<u64> = const { Cell::new(0) };
+}
+
+/// How many penalty models this thread has built (tests check that rigid scenes build none).
+pub fn models_built() -> u64 {
+    MODELS_BUILT.with(Cell::get)
+}
+
+/// The contact in dimensionless form: κ = k l/(m g), γ = c √(l/g)/m.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Contact {
+    /// κ, stiffness in units of m g / l.
+    pub kappa: f64,
+    /// γ, damping in units of m √(g/l).
+    pub gamma: f64,
+}
+
+impl Contact {
+    /// The dimensionless contact of `ladder` with stiffness `k` (N/m) and damping `c` (N·s/m).
+    /// Quotients are formed pairwise so that no intermediate product of extreme m, l, g, k
+    /// overflows.
+    pub fn from_dimensional(ladder: &Ladder, k: f64, c: f64) -> Contact {
+        let (m, l, g) = (ladder.mass, ladder.half_length, ladder.gravity);
+        Contact {
+            kappa: (k / m) * (l / g),
+            gamma: (c / m) * (l / g).sqrt(),
+        }
+    }
+}
+
+/// Wall penetration p_w = −x_C = sin θ − x (units of l; positive inside the wall).
+pub fn wall_penetration<D: DualNum<Primitive = f64> + Copy>(y: &[D; 6]) -> D {
+    y[2].sin() - y[0]
+}
+
+/// Floor penetration p_f = −y_D = cos θ − y (units of l; positive inside the floor).
+pub fn floor_penetration<D: DualNum<Primitive = f64> + Copy>(y: &[D; 6]) -> D {
+    y[2].cos() - y[1]
+}
+
+/// A one-sided spring-dashpot: max(0, κ p + γ ṗ) while p > 0, zero otherwise.
+/// (The kinks are where the force is zero; num-dual differentiates the active branch.)
+pub fn one_sided<D: DualNum<Primitive = f64> + Copy>(contact: &Contact, pen: D, pen_rate: D) -> D {
+    if pen.re() <= 0.0 {
+        return D::zero();
+    }
+    let f = pen * contact.kappa + pen_rate * contact.gamma;
+    if f.re() > 0.0 {
+        f
+    } else {
+        D::zero()
+    }
+}
+
+/// How the one-sidedness of the contacts enters the integration.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Law {
+    /// Event-driven: while a contact holds it is a plain (two-sided) spring-dashpot
+    /// κ p + γ ṗ, smooth, and the moment its force falls through zero is an event that ends the
+    /// phase (separation at the wall; lift-off at the floor is reported as an error). The
+    /// integrators never see the kink of max(0, ·). The default.
+    Switched,
+    /// The clipped law [`one_sided`] inside the right-hand side: the kink is seen by every
+    /// stage, every Newton iterate and every finite-difference probe (kept for comparison).
+    OneSided,
+}
+
+/// The contact forces (F_w along +x at C, F_f along +y at D), in units of m g, under `law`.
+pub fn contact_forces<D: DualNum<Primitive = f64> + Copy>(
+    contact: &Contact,
+    law: Law,
+    y: &[D; 6],
+) -> (D, D) {
+    let (s, c) = y[2].sin_cos();
+    let (pw, pf) = (wall_penetration(y), floor_penetration(y));
+    let wall_rate = c * y[5] - y[3];
+    let floor_rate = -(s * y[5]) - y[4];
+    match law {
+        Law::Switched => (
+            pw * contact.kappa + wall_rate * contact.gamma,
+            pf * contact.kappa + floor_rate * contact.gamma,
+        ),
+        Law::OneSided => (
+            one_sided(contact, pw, wall_rate),
+            one_sided(contact, pf, floor_rate),
+        ),
+    }
+}
+
+/// Energy in units of m g l: ½(ẋ² + ẏ²) + ⅙ θ̇² + y + ½ κ (p_w² + p_f²) (springs while
+/// compressed). Conserved when γ = 0: the blow-up detector of explicit methods.
+pub fn energy(contact: &Contact, y: &[f64; 6]) -> f64 {
+    let (pw, pf) = (wall_penetration(y).max(0.0), floor_penetration(y).max(0.0));
+    0.5 * (y[3] * y[3] + y[4] * y[4])
+        + y[5] * y[5] / 6.0
+        + y[1]
+        + 0.5 * contact.kappa * (pw * pw + pf * pf)
+}
+
+/// The penalty model as an ODE, dimensionless: y = [x, y, θ, ẋ, ẏ, θ̇].
+#[derive(Clone, Copy, Debug)]
+pub struct PenaltyModel {
+    /// The contact parameters.
+    pub contact: Contact,
+    /// How the contacts' one-sidedness is treated.
+    pub law: Law,
+}
+
+impl PenaltyModel {
+    /// Build the model (counted by [`models_built`]).
+    pub fn new(contact: Contact, law: Law) -> Self {
+        MODELS_BUILT.with(|c| c.set(c.get() + 1));
+        PenaltyModel { contact, law }
+    }
+}
+
+impl Ode<6> for PenaltyModel {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 6]) -> [D; 6] {
+        let (fw, ff) = contact_forces(&self.contact, self.law, y);
+        let (s, c) = y[2].sin_cos();
+        // (m l²/3) θ̈ = l (sin θ F_f − cos θ F_w), with m = l = 1.
+        let alpha = (s * ff - c * fw) * 3.0;
+        [y[3], y[4], y[5], fw, ff - 1.0, alpha]
+    }
+    fn max_step(&self, y: &[f64; 6]) -> f64 {
+        event_safe_step(OMEGA2.sqrt(), y[5])
+    }
+    /// Absolute control in the problem's own units: positions against l, velocities against
+    /// √(g l) ω (a relative scale would demand ever more digits of the tiny penetrations).
+    fn scale(&self, _y: &[f64; 6]) -> [f64; 6] {
+        let w = OMEGA2.sqrt();
+        [1.0, 1.0, 1.0, w, w, w]
+    }
+}
+
+/// The rigid model's forces (eqs. (14), (15), dimensionless) along the motion at (θ, θ̇),
+/// with their time derivatives (θ lifted to θ + θ̇ε, θ̇ to θ̇ + θ̈ε, eq. (5)).
+fn rigid_forces(theta: f64, rate: f64) -> (Dual64, Dual64) {
+    let th = Dual64::new(theta, rate);
+    let w = Dual64::new(rate, OMEGA2 * theta.sin());
+    let acc = th.sin() * OMEGA2;
+    let wall = th.cos() * acc - th.sin() * w * w;
+    let floor = -(th.sin() * acc + th.cos() * w * w) + 1.0;
+    (wall, floor)
+}
+
+/// The pre-loaded start: the rigid start (θ0, θ̇0) with each contact compressed so that its
+/// force equals the rigid model's, and compressing at the rate that keeps it so.
+pub fn preloaded_start(contact: &Contact, theta0: f64, rate0: f64) -> [f64; 6] {
+    let (fw, ff) = rigid_forces(theta0, rate0);
+    // κ p + γ ṗ = F with ṗ = Ḟ / κ.
+    let (kw, kf) = (fw.eps / contact.kappa, ff.eps / contact.kappa);
+    let pw = (fw.re - contact.gamma * kw) / contact.kappa;
+    let pf = (ff.re - contact.gamma * kf) / contact.kappa;
+    let (s, c) = theta0.sin_cos();
+    [
+        s - pw,
+        c - pf,
+        theta0,
+        c * rate0 - kw,
+        -s * rate0 - kf,
+        rate0,
+    ]
+}
+
+/// A contact force falling through zero: the wall's (separation) or the floor's (lift-off).
+struct Release {
+    model: PenaltyModel,
+    floor: bool,
+}
+impl Event<6> for Release {
+    fn value(&self, _t: f64, y: &[f64; 6]) -> f64 {
+        let (fw, ff) = contact_forces(&self.model.contact, self.model.law, y);
+        if self.floor {
+            ff
+        } else {
+            fw
+        }
+    }
+    fn direction(&self) -> Direction {
+        Direction::Falling
+    }
+}
+
+/// Where the penalty ladder leaves the wall (dimensionless time).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PenaltySeparation {
+    /// θ_s, rad.
+    pub angle: f64,
+    /// t_s in units of √(l/g).
+    pub time: f64,
+    /// θ̇ at t_s in units of √(g/l).
+    pub rate: f64,
+    /// |E(t_s) − E(0)| in units of m g l.
+    pub energy_change: f64,
+}
+
+/// A penalty run: its result and the work done (also when it failed).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PenaltyRun {
+    /// The separation, or why the run stopped.
+    pub result: Result<PenaltySeparation, RunError>,
+    /// Integrator counters.
+    pub stats: Stats,
+}
+
+/// Integrate the penalty model from the pre-loaded start at (θ0, θ̇0) with `stepper` until the
+/// wall force falls through zero, at most `max_steps` steps.
+pub fn separate_with<St: Stepper<6>>(
+    model: &PenaltyModel,
+    stepper: &mut St,
+    max_steps: u64,
+) -> PenaltyRun {
+    separate_with_ode(model, model, stepper, max_steps)
+}
+
+/// As [`separate_with`], integrating `ode` (the model, or a wrapper of it that changes only how
+/// its Jacobian is formed) while the events and the energy are those of `model`.
+pub fn separate_with_ode<S: Ode<6>, St: Stepper<6>>(
+    model: &PenaltyModel,
+    ode: &S,
+    stepper: &mut St,
+    max_steps: u64,
+) -> PenaltyRun {
+    let e0 = energy(&model.contact, &stepper.y());
+    let wall = Release {
+        model: *model,
+        floor: false,
+    };
+    let floor = Release {
+        model: *model,
+        floor: true,
+    };
+    let end = integrate_phase(ode, stepper, &[&wall, &floor], T_END, max_steps, &mut ());
+    let stats = stepper.stats();
+    let result = end.and_then(|e| match e.event {
+        Some(0) => Ok(PenaltySeparation {
+            angle: e.y[2],
+            time: e.t,
+            rate: e.y[5],
+            energy_change: (energy(&model.contact, &e.y) - e0).abs(),
+        }),
+        Some(_) => Err(RunError::LiftOff {
+            t: e.t,
+            theta: e.y[2],
+        }),
+        None => Err(RunError::Start(format!(
+            "the wall force did not reach zero by t = {T_END} √(l/g)"
+        ))),
+    });
+    PenaltyRun { result, stats }
+}
+
+/// The separation of the penalty ladder started at (θ0, θ̇0) (θ̇0 in units of √(g/l)) with
+/// the method `method` at `control` (dimensionless step or tolerance).
+pub fn separation(
+    contact: Contact,
+    law: Law,
+    theta0: f64,
+    rate0: f64,
+    method: &str,
+    control: Control,
+    max_steps: u64,
+) -> PenaltyRun {
+    let fail = |m: String| PenaltyRun {
+        result: Err(RunError::Start(m)),
+        stats: Stats::default(),
+    };
+    if !(contact.kappa.is_finite() && contact.kappa > 0.0) {
+        return fail(format!("stiffness κ = {} is not usable", contact.kappa));
+    }
+    let (fw0, _) = rigid_forces(theta0, rate0);
+    if theta0 == 0.0 && rate0 == 0.0 {
+        return fail("θ0 = θ̇0 = 0 is the equilibrium: the ladder never leaves the wall".into());
+    }
+    if fw0.re < 0.0 || (fw0.re == 0.0 && theta0 > 0.0) {
+        // The wall would have to pull at once: the ladder leaves it at t = 0.
+        return PenaltyRun {
+            result: Ok(PenaltySeparation {
+                angle: theta0,
+                time: 0.0,
+                rate: rate0,
+                energy_change: 0.0,
+            }),
+            stats: Stats::default(),
+        };
+    }
+    let model = PenaltyModel::new(contact, law);
+    let y0 = preloaded_start(&contact, theta0, rate0);
+    let Some(mut stepper) = AnyStepper::new(method, control, 0.0, y0) else {
+        return fail(format!("method {method} does not take {control:?}"));
+    };
+    separate_with(&model, &mut stepper, max_steps)
+}

@@ -1,0 +1,196 @@
+//! The wall phase at the edges of its domain (src/sim/extreme.rs), the constrained model
+//! (src/sim/constrained.rs), and what a rigid scene does not build.
+
+use proptest::prelude::*;
+use sliding_ladder::sim::constrained::{self, Constrained};
+use sliding_ladder::sim::extreme::{wall_release, WallRelease};
+use sliding_ladder::sim::fall;
+use sliding_ladder::sim::integrators::Control;
+use sliding_ladder::sim::penalty::{self, separation, Contact, Law};
+use sliding_ladder::sim::rigid::Ladder;
+use sliding_ladder::sim::scene;
+use std::f64::consts::FRAC_PI_2;
+
+const UNIT: Ladder = Ladder {
+    mass: 1.0,
+    half_length: 1.0,
+    gravity: 1.0,
+};
+const U: f64 = f64::EPSILON / 2.0;
+
+fn dop853(ladder: &Ladder, theta0: f64, rate0: f64) -> (WallRelease, u64) {
+    let (r, st) = wall_release(
+        ladder,
+        theta0,
+        rate0,
+        "dop853",
+        Control::Tolerance(1e-13),
+        1_000_000,
+    )
+    .unwrap();
+    (r, st.steps)
+}
+
+/// Footnote 4 with the energy integral: cos θ_s = 2/3 cos θ0 + 4 l θ̇0²/(9 g).
+fn theory_cos(l: &Ladder, theta0: f64, rate0: f64) -> f64 {
+    2.0 / 3.0 * theta0.cos() + 4.0 * l.half_length * rate0 * rate0 / (9.0 * l.gravity)
+}
+
+#[test]
+fn starts_from_upright_to_almost_flat_separate_where_theory_says() {
+    for theta0 in [1e-12, 1e-6, 0.3, 1.5, FRAC_PI_2 - 1e-6, FRAC_PI_2 - 1e-9] {
+        let (r, n) = dop853(&UNIT, theta0, 0.0);
+        let WallRelease::Separated(s) = r else {
+            panic!("{theta0}: {r:?}")
+        };
+        // |cos θ_s − theory| ≤ 10 N τ max(θ_s, 1) + 4u (module docs of report::stability_extreme).
+        let bound = 10.0 * n as f64 * 1e-13 * s.angle.max(1.0) + 4.0 * U;
+        let err = (s.angle.cos() - theory_cos(&UNIT, theta0, 0.0)).abs();
+        assert!(err <= bound, "θ0 = {theta0}: {err} > {bound}");
+        assert!(s.angle > theta0 && s.angle < FRAC_PI_2, "{theta0}: {s:?}");
+    }
+}
+
+#[test]
+fn pushes_up_to_and_past_the_immediate_release() {
+    let omega = UNIT.omega2().sqrt();
+    for r in [1e-15, 1e-3, 0.5, 0.999] {
+        let (res, n) = dop853(&UNIT, 0.0, r * omega);
+        let WallRelease::Separated(s) = res else {
+            panic!("{r}: {res:?}")
+        };
+        let err = (s.angle.cos() - theory_cos(&UNIT, 0.0, r * omega)).abs();
+        assert!(err <= 10.0 * n as f64 * 1e-13 + 4.0 * U, "{r}: {err}");
+    }
+    // cos θ_s = 2/3 + θ̇0²/(3ω²) ≥ 1: the wall would pull at once.
+    for r in [1.001, 2.0, 1e10] {
+        assert_eq!(dop853(&UNIT, 0.0, r * omega).0, WallRelease::AtOnce, "{r}");
+    }
+    // A slower push does not (the check can fail).
+    assert_ne!(dop853(&UNIT, 0.0, 0.99 * omega).0, WallRelease::AtOnce);
+}
+
+#[test]
+fn the_equilibrium_never_separates_and_says_so() {
+    assert_eq!(dop853(&UNIT, 0.0, 0.0).0, WallRelease::Equilibrium);
+    let r = separation(
+        Contact {
+            kappa: 1e6,
+            gamma: 0.0,
+        },
+        Law::Switched,
+        0.0,
+        0.0,
+        "radau5",
+        Control::Tolerance(1e-10),
+        1000,
+    );
+    assert!(r.result.unwrap_err().to_string().contains("equilibrium"));
+    // Through a scene ending at a time: θ stays exactly 0, nothing separates, no hang.
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/from-rest.toml"
+    ))
+    .unwrap();
+    let text = text
+        .replace("angle = 0.3", "angle = 0.0")
+        .replace("at = \"separation\"", "at = \"time\"\ntime = 100.0")
+        .replace(
+            "\"separation_rate\", \"energy_error\", \"rhs_evals\", \"trajectory\", \"forces\"",
+            "\"final_state\"",
+        )
+        .replace("\"separation_angle\", \"separation_time\", ", "");
+    let sc = scene::parse("eq.toml", &text).unwrap();
+    let o = fall::run(&sc, 100_000).unwrap();
+    assert_eq!((o.last.0, o.last.1, o.separation), (100.0, 0.0, None));
+}
+
+#[test]
+fn a_rigid_scene_builds_no_penalty_model() {
+    let rigid = scene::load(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/from-rest.toml"
+    )))
+    .unwrap();
+    let before = penalty::models_built();
+    fall::run(&rigid, fall::MAX_STEPS).unwrap();
+    assert_eq!(
+        penalty::models_built(),
+        before,
+        "a rigid scene built a penalty model"
+    );
+    // The counter can fail: the shipped penalty scene builds exactly one.
+    let pen = scene::load(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/penalty.toml"
+    )))
+    .unwrap();
+    fall::run(&pen, fall::MAX_STEPS).unwrap();
+    assert_eq!(penalty::models_built(), before + 1);
+}
+
+#[test]
+fn lagrange_multipliers_give_the_rigid_separation_and_stabilisation_bounds_the_drift() {
+    let rigid = (2.0 / 3.0 * 0.3f64.cos()).acos();
+    let none = Constrained {
+        alpha: 0.0,
+        beta: 0.0,
+    };
+    let stab = Constrained {
+        alpha: 5.0,
+        beta: 5.0,
+    };
+    let tol = Control::Tolerance(1e-10);
+    let angle = constrained::separation_angle(&none, 0.3, 0.0, "dop853", tol, 100_000).unwrap();
+    assert!((angle - rigid).abs() < 1e-9, "{angle}");
+    let checkpoints = [10.0, 100.0, 1000.0];
+    let drift = |m: &Constrained| {
+        constrained::drift(m, 0.3, 0.0, "dop853", tol, &checkpoints, 1_000_000).points
+    };
+    let (d0, d1) = (drift(&none), drift(&stab));
+    // Unstabilised, the drift grows (at least 10× from t = 10 to 1000); stabilised it does not.
+    assert!(d0[2].1 > 10.0 * d0[0].1, "{d0:?}");
+    assert!(
+        d1[2].1 < 10.0 * d1[0].1 + 1e-12 && d1[2].1 < d0[2].1,
+        "{d1:?}"
+    );
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+    /// Any m, l, g in 1e-30..1e30, any start in the domain: an answer (finite, on the right
+    /// side of θ0, or a stated release/equilibrium), never a panic, NaN, infinity or hang.
+    #[test]
+    fn the_whole_domain_answers(
+        em in -30.0..30.0f64, el in -30.0..30.0f64, eg in -30.0..30.0f64,
+        theta0 in prop_oneof![Just(0.0), Just(1e-12), 0.0..FRAC_PI_2, Just(FRAC_PI_2 - 1e-9)],
+        r in prop_oneof![Just(0.0), Just(1e-15), 0.0..2.0f64, Just(1.0)],
+    ) {
+        let ladder = Ladder { mass: 10f64.powf(em), half_length: 10f64.powf(el), gravity: 10f64.powf(eg) };
+        let rate0 = r * ladder.omega2().sqrt();
+        let (res, st) = wall_release(&ladder, theta0, rate0, "dop853", Control::Tolerance(1e-10), 100_000).unwrap();
+        match res {
+            WallRelease::Separated(s) => {
+                prop_assert!(s.angle.is_finite() && s.time.is_finite() && s.rate.is_finite(), "{s:?}");
+                prop_assert!(s.angle >= theta0 && s.angle <= FRAC_PI_2 && s.time >= 0.0, "{s:?}");
+                let err = (s.angle.cos() - theory_cos(&ladder, theta0, rate0).min(theta0.cos())).abs();
+                prop_assert!(err <= 10.0 * st.steps as f64 * 1e-10 * s.angle.max(1.0) + 4.0 * U, "{err}");
+            }
+            // The wall would pull at once when θ_s would lie at or behind θ0: cos θ_s ≥ cos θ0
+            // (for θ0 = 0 that is the cos θ_s ≥ 1).
+            WallRelease::AtOnce => prop_assert!(theory_cos(&ladder, theta0, rate0) >= theta0.cos() - 4.0 * U),
+            WallRelease::Equilibrium => prop_assert!(theta0 == 0.0 && rate0 == 0.0),
+        }
+    }
+
+    /// The penalty model over the same domain and κ from 1e2 to 1e8: finite or a clear error.
+    #[test]
+    fn the_penalty_model_answers(ek in 2.0..8.0f64, theta0 in 0.0..FRAC_PI_2, r in 0.0..2.0f64) {
+        let contact = Contact { kappa: 10f64.powf(ek), gamma: 0.0 };
+        let run = separation(contact, Law::Switched, theta0, r * 0.75f64.sqrt(), "radau5", Control::Tolerance(1e-8), 20_000);
+        match run.result {
+            Ok(s) => prop_assert!(s.angle.is_finite() && s.time.is_finite() && s.rate.is_finite() && s.angle >= theta0 - 1e-6),
+            Err(e) => prop_assert!(!e.to_string().is_empty()),
+        }
+    }
+}
