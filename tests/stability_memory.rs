@@ -61,13 +61,16 @@ fn scalar_only_memory_is_flat_from_1e3_to_1e5_steps_and_a_trace_is_not() {
     let (n5, p5) = measure(1e-1, false);
     println!("scalar-only scene: {n3} steps peak {p3} B, {n5} steps peak {p5} B");
     assert!(n3 >= 1_000 && n5 >= 100_000, "{n3} {n5}");
-    // Model: storing anything per step would add ≥ 8 B × 99 000 steps; flat means equal.
-    assert_eq!(p5, p3, "peak heap grew with the steps");
+    // Model: storing anything per step would add ≥ 8 B × 99 000 steps ≈ 792 kB. The allocator
+    // also counts the test harness's own threads (output capture), which may allocate a few
+    // hundred bytes meanwhile; 4 kB of slack is 0.5% of the smallest per-step growth.
+    const SLACK: usize = 4096;
+    assert!(p5 <= p3 + SLACK, "peak heap grew with the steps: {p3} B -> {p5} B");
     if std::env::var("LADDER_SLOW").is_ok() {
         let (n7, p7) = measure(10.0, false);
         println!("scalar-only scene: {n7} steps peak {p7} B");
         assert!(n7 >= 10_000_000);
-        assert_eq!(p7, p3, "peak heap grew with the steps");
+        assert!(p7 <= p3 + SLACK, "peak heap grew with the steps: {p3} B -> {p7} B");
     }
     // The measurement can fail: a scene that keeps its trajectory grows with the steps.
     let (_, t3) = measure(1e-3, true);
