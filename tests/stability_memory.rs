@@ -65,12 +65,18 @@ fn scalar_only_memory_is_flat_from_1e3_to_1e5_steps_and_a_trace_is_not() {
     // also counts the test harness's own threads (output capture), which may allocate a few
     // hundred bytes meanwhile; 4 kB of slack is 0.5% of the smallest per-step growth.
     const SLACK: usize = 4096;
-    assert!(p5 <= p3 + SLACK, "peak heap grew with the steps: {p3} B -> {p5} B");
+    assert!(
+        p5 <= p3 + SLACK,
+        "peak heap grew with the steps: {p3} B -> {p5} B"
+    );
     if std::env::var("LADDER_SLOW").is_ok() {
         let (n7, p7) = measure(10.0, false);
         println!("scalar-only scene: {n7} steps peak {p7} B");
         assert!(n7 >= 10_000_000);
-        assert!(p7 <= p3 + SLACK, "peak heap grew with the steps: {p3} B -> {p7} B");
+        assert!(
+            p7 <= p3 + SLACK,
+            "peak heap grew with the steps: {p3} B -> {p7} B"
+        );
     }
     // The measurement can fail: a scene that keeps its trajectory grows with the steps.
     let (_, t3) = measure(1e-3, true);
