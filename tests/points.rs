@@ -164,3 +164,31 @@ fn lagrange_by_automatic_differentiation_gives_the_equation_of_motion() {
         );
     }
 }
+
+/// The generic reference points are where their names say: λ = 1/2 on the ladder is B, λ = 1 is
+/// D, the combination (C + D)/2 is B, C + D is E, and a lab point scales with l.
+#[test]
+fn reference_points_are_where_they_say() {
+    let (l, s) = state((2, 5));
+    let at = |k| Reference::Corner(k).position(&l, &s);
+    assert_eq!(Reference::OnLadder(1, 2).position(&l, &s), at(Corner::B));
+    assert_eq!(Reference::OnLadder(1, 1).position(&l, &s), at(Corner::D));
+    assert_eq!(Reference::OnLadder(0, 1).position(&l, &s), at(Corner::C));
+    assert_eq!(
+        Reference::Combination([(0, 1), (1, 2), (1, 2), (0, 1)]).position(&l, &s),
+        at(Corner::B)
+    );
+    assert_eq!(
+        Reference::Combination([(5, 1), (1, 1), (1, 1), (0, 1)]).position(&l, &s),
+        at(Corner::E)
+    );
+    assert_eq!(
+        Reference::Combination([(0, 1), (0, 1), (0, 1), (1, 1)]).position(&l, &s),
+        at(Corner::E)
+    );
+    let lab = Reference::Lab(3, -4, 2).position(&l, &s);
+    assert_eq!(
+        (lab.x, lab.y),
+        (Q::ratio(3, 2) * l.l.clone(), Q::int(-2) * l.l.clone())
+    );
+}
