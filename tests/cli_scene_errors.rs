@@ -1,9 +1,9 @@
 //! Every kind of bad scene: exit code 2, one line on stderr naming the file, the line and the
 //! field, and no output file written. Plus: random and mutated scene text never panics.
 
+mod common;
+
 use proptest::prelude::*;
-use std::path::PathBuf;
-use std::process::Command;
 
 const BASE: &str = "[ladder]
 mass = 1.0
@@ -23,42 +23,14 @@ at = \"separation\"
 want = [\"separation_angle\", \"trajectory\"]
 ";
 
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("ladder-cli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
 /// Run `ladder simulate` on `text`; returns (exit code, stderr, files in the out dir).
 fn simulate(name: &str, text: Option<&str>) -> (i32, String, usize) {
-    let dir = tmp(name);
-    let scene = dir.join("scene.toml");
-    if let Some(t) = text {
-        std::fs::write(&scene, t).unwrap();
-    }
-    let out = dir.join("out");
-    let o = Command::new(env!("CARGO_BIN_EXE_ladder"))
-        .args([
-            "simulate",
-            scene.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
-        .output()
-        .unwrap();
-    let files = std::fs::read_dir(&out).map_or(0, |d| d.count());
-    let _ = std::fs::remove_dir_all(&dir);
-    (
-        o.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&o.stderr).into_owned(),
-        files,
-    )
+    let run = common::simulate_scene("cli", name, text, &[]);
+    (run.code, run.stderr, run.files)
 }
 
 fn with(line: &str, replacement: &str) -> String {
-    assert!(BASE.contains(line), "{line}");
-    BASE.replacen(line, replacement, 1)
+    common::replace_line(BASE, line, replacement)
 }
 
 #[test]

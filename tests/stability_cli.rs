@@ -2,8 +2,10 @@
 //! file, line and field, nothing written), the shipped penalty scene, extreme-scale scenes, and
 //! `ladder stability --json`.
 
+mod common;
+
+use common::replace_line as with;
 use serde_json::Value;
-use std::path::PathBuf;
 use std::process::Command;
 
 /// A valid penalty scene; line numbers below refer to it.
@@ -27,42 +29,10 @@ at = \"separation\"
 want = [\"separation_angle\", \"separation_time\"]
 ";
 
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("ladder-stab-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
 /// `ladder simulate SCENE --json --out DIR` on `text`: (exit code, stdout, stderr, files).
 fn simulate(name: &str, text: &str) -> (i32, String, String, usize) {
-    let dir = tmp(name);
-    let scene = dir.join("scene.toml");
-    std::fs::write(&scene, text).unwrap();
-    let out = dir.join("out");
-    let o = Command::new(env!("CARGO_BIN_EXE_ladder"))
-        .args([
-            "simulate",
-            scene.to_str().unwrap(),
-            "--json",
-            "--out",
-            out.to_str().unwrap(),
-        ])
-        .output()
-        .unwrap();
-    let files = std::fs::read_dir(&out).map_or(0, |d| d.count());
-    let _ = std::fs::remove_dir_all(&dir);
-    (
-        o.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        String::from_utf8_lossy(&o.stderr).into_owned(),
-        files,
-    )
-}
-
-fn with(base: &str, line: &str, replacement: &str) -> String {
-    assert!(base.contains(line), "{line}");
-    base.replacen(line, replacement, 1)
+    let run = common::simulate_scene("stab", name, Some(text), &["--json"]);
+    (run.code, run.stdout, run.stderr, run.files)
 }
 
 #[test]

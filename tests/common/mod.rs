@@ -1,8 +1,11 @@
-//! Strategies shared by the property suites.
+//! Helpers shared by the integration suites: proptest strategies and a runner for
+//! `ladder simulate` on scene text.
 #![allow(dead_code)]
 
 use proptest::prelude::*;
 use sliding_ladder::registry::sample::{RawLadder, RawParticles, EXTRA, PER_PARTICLE};
+use std::path::PathBuf;
+use std::process::Command;
 
 /// Cases per property: at least 1000 (`PROPTEST_CASES` or `LADDER_CASES` raise it).
 pub fn cases(minimum: u32) -> u32 {
@@ -70,4 +73,57 @@ pub fn exact_particle_ints() -> impl Strategy<Value = (usize, Vec<i64>)> {
             (n, v)
         })
     })
+}
+
+/// A fresh empty directory `ladder-{tag}-{pid}-{name}` under the system temp directory.
+pub fn tmp_dir(tag: &str, name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("ladder-{tag}-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// What one `ladder simulate` run produced.
+pub struct SimRun {
+    /// Exit code (-1 when killed by a signal).
+    pub code: i32,
+    /// Standard output.
+    pub stdout: String,
+    /// Standard error.
+    pub stderr: String,
+    /// Number of files written to the output directory.
+    pub files: usize,
+}
+
+/// `ladder simulate SCENE EXTRA.. --out DIR` on scene `text` (no scene file at all when `None`),
+/// in a temporary directory from [`tmp_dir`] that is removed afterwards.
+pub fn simulate_scene(tag: &str, name: &str, text: Option<&str>, extra: &[&str]) -> SimRun {
+    let dir = tmp_dir(tag, name);
+    let scene = dir.join("scene.toml");
+    if let Some(t) = text {
+        std::fs::write(&scene, t).unwrap();
+    }
+    let out = dir.join("out");
+    let o = Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .arg("simulate")
+        .arg(&scene)
+        .args(extra)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    let files = std::fs::read_dir(&out).map_or(0, |d| d.count());
+    let _ = std::fs::remove_dir_all(&dir);
+    SimRun {
+        code: o.status.code().unwrap_or(-1),
+        stdout: String::from_utf8_lossy(&o.stdout).into_owned(),
+        stderr: String::from_utf8_lossy(&o.stderr).into_owned(),
+        files,
+    }
+}
+
+/// `base` with its first occurrence of `line` replaced by `replacement` (`line` must occur).
+pub fn replace_line(base: &str, line: &str, replacement: &str) -> String {
+    assert!(base.contains(line), "{line}");
+    base.replacen(line, replacement, 1)
 }

@@ -8,7 +8,8 @@
 //! rounded to f64 by the compiler). The error weights are `rtol * max(scale(y0), scale(y1))`, as in
 //! [`super::error_norm`], with the combined 5th/3rd-order estimate of dop853.f.
 
-use super::{all_finite, eval, initial_step, Ode, Stats, StepError, Stepper};
+use super::adaptive::{trial_step, AdaptiveState, Controller};
+use super::{all_finite, eval, Ode, Stats, StepError, Stepper};
 
 use super::dop853_tables::*;
 
@@ -30,93 +31,53 @@ fn combine<const N: usize>(
     })
 }
 
+/// The step-size control of dop853.f: plain I control on the combined 5th/3rd-order estimate.
+const CONTROL: Controller = Controller {
+    expo: 0.125,
+    beta: 0.0,
+    fac_lo: 1.0 / 6.0,
+    fac_hi: 1.0 / 0.333,
+};
+
 /// The DOP853 integrator (adaptive, dense output of order 7).
 #[derive(Clone, Debug)]
 pub struct Dop853<const N: usize> {
-    rtol: f64,
-    t: f64,
-    y: [f64; N],
+    state: AdaptiveState<N>,
     comp: [f64; N],
-    f: Option<[f64; N]>,
-    h: f64,
-    facold: f64,
-    last_rejected: bool,
-    t_prev: f64,
-    y_prev: [f64; N],
     k: [[f64; N]; 16],
     cont: Option<[[f64; N]; 8]>,
-    stats: Stats,
 }
 
 impl<const N: usize> Dop853<N> {
     /// Start at `(t0, y0)` with relative tolerance `rtol`.
     pub fn new(t0: f64, y0: [f64; N], rtol: f64) -> Self {
         Dop853 {
-            rtol,
-            t: t0,
-            y: y0,
+            state: AdaptiveState::new(t0, y0, rtol),
             comp: [0.0; N],
-            f: None,
-            h: 0.0,
-            facold: 1e-4,
-            last_rejected: false,
-            t_prev: t0,
-            y_prev: y0,
             k: [[0.0; N]; 16],
             cont: None,
-            stats: Stats::default(),
         }
     }
 }
 
 impl<const N: usize> Stepper<N> for Dop853<N> {
     fn t(&self) -> f64 {
-        self.t
+        self.state.t
     }
     fn y(&self) -> [f64; N] {
-        self.y
+        self.state.y
     }
     fn t_prev(&self) -> f64 {
-        self.t_prev
+        self.state.t_prev
     }
 
     fn step<S: Ode<N>>(&mut self, sys: &S, t_stop: f64) -> Result<(), StepError> {
-        let (t, y) = (self.t, self.y);
-        let f0 = match self.f {
-            Some(f) => f,
-            None => {
-                self.stats.rhs_evals += 1;
-                eval(sys, t, &y)
-            }
-        };
-        if !all_finite(&f0) {
-            return Err(StepError::NotFinite { t });
-        }
-        let h_max = sys.max_step(&y);
-        if self.h == 0.0 {
-            self.h = initial_step(
-                sys,
-                t,
-                &y,
-                &f0,
-                self.rtol,
-                8,
-                h_max,
-                &mut self.stats.rhs_evals,
-            );
-        }
+        let (t, y) = (self.state.t, self.state.y);
+        let (f0, h_max) = self.state.start(sys, 8)?;
         let mut k = [[0.0; N]; 16];
         k[0] = f0;
         loop {
-            let mut h = self.h.min(h_max);
-            // A remainder below 1e-8 h would only be a rounding-sized extra step: take it now.
-            let last = t + h >= t_stop || t_stop - (t + h) <= 1e-8 * h;
-            if last {
-                h = t_stop - t;
-            }
-            if h <= 10.0 * f64::EPSILON * t.abs().max(1e-300) || h <= 0.0 {
-                return Err(StepError::StepTooSmall { t, h });
-            }
+            let (h, last) = trial_step(self.state.h, h_max, t, t_stop)?;
             k[1] = eval(sys, t + C2 * h, &combine(&y, h, &A2, &[0], &k));
             k[2] = eval(sys, t + C3 * h, &combine(&y, h, &A3, &[0, 1], &k));
             k[3] = eval(sys, t + C4 * h, &combine(&y, h, &A4, &I4, &k));
@@ -128,7 +89,7 @@ impl<const N: usize> Stepper<N> for Dop853<N> {
             k[9] = eval(sys, t + C10 * h, &combine(&y, h, &A10, &I10, &k));
             k[10] = eval(sys, t + C11 * h, &combine(&y, h, &A11, &I11, &k));
             k[11] = eval(sys, t + h, &combine(&y, h, &A12, &I12, &k));
-            self.stats.rhs_evals += 11;
+            self.state.stats.rhs_evals += 11;
             // Increment and the two error estimates (dop853.f, labels 41-42).
             let mut incr = [0.0; N];
             let mut y1 = [0.0; N];
@@ -148,7 +109,7 @@ impl<const N: usize> Stepper<N> for Dop853<N> {
             let (s0, s1) = (sys.scale(&y), sys.scale(&y1));
             let (mut err5, mut err3) = (0.0, 0.0);
             for i in 0..N {
-                let sk = (self.rtol * s0[i].max(s1[i])).max(f64::MIN_POSITIVE);
+                let sk = (self.state.rtol * s0[i].max(s1[i])).max(f64::MIN_POSITIVE);
                 err5 += (e5[i] / sk).powi(2);
                 err3 += (e3[i] / sk).powi(2);
             }
@@ -160,41 +121,22 @@ impl<const N: usize> Stepper<N> for Dop853<N> {
             let err = h * err5 / (N as f64 * deno).sqrt();
             if !err.is_finite() || !all_finite(&y1) {
                 // Shrink hard: a non-finite trial step is treated as a large error.
-                self.stats.rejected += 1;
-                self.h = h * 0.1;
-                self.last_rejected = true;
+                self.state.reject_non_finite(h);
                 continue;
             }
-            let fac11 = err.powf(0.125);
-            let fac = (fac11 / 0.9).clamp(1.0 / 6.0, 1.0 / 0.333);
-            if err <= 1.0 {
-                self.facold = err.max(1e-4);
-                let mut h_new = h / fac;
-                if self.last_rejected {
-                    h_new = h_new.min(h);
-                }
-                self.last_rejected = false;
+            if let Some(h_new) = self.state.control(&CONTROL, h, err) {
                 // Compensated (Kahan) update keeps the state's rounding error from accumulating.
                 for i in 0..N {
                     self.comp[i] = incr[i] - (y1[i] - y[i]);
                 }
                 let f1 = eval(sys, t + h, &y1);
-                self.stats.rhs_evals += 1;
+                self.state.stats.rhs_evals += 1;
                 k[12] = f1;
                 self.k = k;
                 self.cont = None;
-                self.t_prev = t;
-                self.y_prev = y;
-                self.t = if last { t_stop } else { t + h };
-                self.y = y1;
-                self.f = Some(f1);
-                self.h = if last { self.h } else { h_new };
-                self.stats.steps += 1;
+                self.state.accept(h, h_new, last, t_stop, y1, f1);
                 return Ok(());
             }
-            self.stats.rejected += 1;
-            self.last_rejected = true;
-            self.h = h / (1.0 / 0.333f64).min(fac11 / 0.9);
         }
     }
 
@@ -202,15 +144,16 @@ impl<const N: usize> Stepper<N> for Dop853<N> {
         if self.cont.is_some() {
             return;
         }
-        let (t, y, h) = (self.t_prev, self.y_prev, self.t - self.t_prev);
+        let st = &self.state;
+        let (t, y, h, y1) = (st.t_prev, st.y_prev, st.t - st.t_prev, st.y);
         let k = &mut self.k;
         k[13] = eval(sys, t + C14 * h, &combine(&y, h, &A14, &I14, k));
         k[14] = eval(sys, t + C15 * h, &combine(&y, h, &A15, &I15, k));
         k[15] = eval(sys, t + C16 * h, &combine(&y, h, &A16, &I16, k));
-        self.stats.rhs_evals += 3;
+        self.state.stats.rhs_evals += 3;
         let mut cont = [[0.0; N]; 8];
         for i in 0..N {
-            let ydiff = self.y[i] - y[i];
+            let ydiff = y1[i] - y[i];
             let bspl = h * k[0][i] - ydiff;
             cont[0][i] = y[i];
             cont[1][i] = ydiff;
@@ -232,8 +175,8 @@ impl<const N: usize> Stepper<N> for Dop853<N> {
             .cont
             .as_ref()
             .expect("prepare_dense before interpolate");
-        let h = self.t - self.t_prev;
-        let s = if h == 0.0 { 1.0 } else { (t - self.t_prev) / h };
+        let (t_prev, h) = (self.state.t_prev, self.state.t - self.state.t_prev);
+        let s = if h == 0.0 { 1.0 } else { (t - t_prev) / h };
         let s1 = 1.0 - s;
         // dop853.f, function CONTD8.
         std::array::from_fn(|i| {
@@ -244,13 +187,13 @@ impl<const N: usize> Stepper<N> for Dop853<N> {
 
     fn restart(&mut self, t: f64, y: [f64; N]) {
         // Keep the step-size proposal: the dynamics change at an event, not their time scale.
-        let (rtol, stats, h) = (self.rtol, self.stats, self.h);
-        *self = Dop853::new(t, y, rtol);
-        self.stats = stats;
-        self.h = h;
+        *self = Dop853 {
+            state: self.state.restarted(t, y),
+            ..Dop853::new(t, y, self.state.rtol)
+        };
     }
 
     fn stats(&self) -> Stats {
-        self.stats
+        self.state.stats
     }
 }

@@ -5,7 +5,8 @@
 //! (coefficients) and sec. II.6 (dense output), and the Fortran code `dopri5.f` (parameters
 //! `D1`..`D7` of its dense output, the PI step-size control with `BETA = 0.04`).
 
-use super::{all_finite, error_norm, eval, initial_step, Ode, Stats, StepError, Stepper};
+use super::adaptive::{trial_step, AdaptiveState, Controller};
+use super::{all_finite, error_norm, eval, Ode, Stats, StepError, Stepper};
 
 const C2: f64 = 1.0 / 5.0;
 const C3: f64 = 3.0 / 10.0;
@@ -68,89 +69,49 @@ fn combine<const N: usize>(y: &[f64; N], h: f64, a: &[f64], k: &[[f64; N]; 7]) -
     })
 }
 
+/// The PI step-size control of dopri5.f: expo1 = 0.2 - 0.75 * beta, beta = 0.04.
+const CONTROL: Controller = Controller {
+    expo: 0.2 - 0.75 * 0.04,
+    beta: 0.04,
+    fac_lo: 0.1,
+    fac_hi: 5.0,
+};
+
 /// The DOPRI5 integrator (adaptive, dense output of order 4).
 #[derive(Clone, Debug)]
 pub struct Dopri5<const N: usize> {
-    rtol: f64,
-    t: f64,
-    y: [f64; N],
-    f: Option<[f64; N]>,
-    h: f64,
-    facold: f64,
-    last_rejected: bool,
-    t_prev: f64,
-    y_prev: [f64; N],
+    state: AdaptiveState<N>,
     k: [[f64; N]; 7],
-    stats: Stats,
 }
 
 impl<const N: usize> Dopri5<N> {
     /// Start at `(t0, y0)` with relative tolerance `rtol`.
     pub fn new(t0: f64, y0: [f64; N], rtol: f64) -> Self {
         Dopri5 {
-            rtol,
-            t: t0,
-            y: y0,
-            f: None,
-            h: 0.0,
-            facold: 1e-4,
-            last_rejected: false,
-            t_prev: t0,
-            y_prev: y0,
+            state: AdaptiveState::new(t0, y0, rtol),
             k: [[0.0; N]; 7],
-            stats: Stats::default(),
         }
     }
 }
 
 impl<const N: usize> Stepper<N> for Dopri5<N> {
     fn t(&self) -> f64 {
-        self.t
+        self.state.t
     }
     fn y(&self) -> [f64; N] {
-        self.y
+        self.state.y
     }
     fn t_prev(&self) -> f64 {
-        self.t_prev
+        self.state.t_prev
     }
 
     fn step<S: Ode<N>>(&mut self, sys: &S, t_stop: f64) -> Result<(), StepError> {
-        let (t, y) = (self.t, self.y);
-        let f0 = match self.f {
-            Some(f) => f,
-            None => {
-                self.stats.rhs_evals += 1;
-                eval(sys, t, &y)
-            }
-        };
-        if !all_finite(&f0) {
-            return Err(StepError::NotFinite { t });
-        }
-        let h_max = sys.max_step(&y);
-        if self.h == 0.0 {
-            self.h = initial_step(
-                sys,
-                t,
-                &y,
-                &f0,
-                self.rtol,
-                5,
-                h_max,
-                &mut self.stats.rhs_evals,
-            );
-        }
+        let (t, y) = (self.state.t, self.state.y);
+        let (f0, h_max) = self.state.start(sys, 5)?;
         let mut k = [[0.0; N]; 7];
         k[0] = f0;
         loop {
-            let mut h = self.h.min(h_max);
-            // A remainder below 1e-8 h would only be a rounding-sized extra step: take it now.
-            let last = t + h >= t_stop || t_stop - (t + h) <= 1e-8 * h;
-            if last {
-                h = t_stop - t;
-            }
-            if h <= 10.0 * f64::EPSILON * t.abs().max(1e-300) || h <= 0.0 {
-                return Err(StepError::StepTooSmall { t, h });
-            }
+            let (h, last) = trial_step(self.state.h, h_max, t, t_stop)?;
             k[1] = eval(sys, t + C2 * h, &combine(&y, h, &[A21], &k));
             k[2] = eval(sys, t + C3 * h, &combine(&y, h, &A3, &k));
             k[3] = eval(sys, t + C4 * h, &combine(&y, h, &A4, &k));
@@ -158,69 +119,46 @@ impl<const N: usize> Stepper<N> for Dopri5<N> {
             k[5] = eval(sys, t + h, &combine(&y, h, &A6, &k));
             let y1 = combine(&y, h, &B, &k);
             k[6] = eval(sys, t + h, &y1);
-            self.stats.rhs_evals += 6;
+            self.state.stats.rhs_evals += 6;
             let e: [f64; N] =
                 std::array::from_fn(|i| h * (0..7).map(|j| E[j] * k[j][i]).sum::<f64>());
-            let err = error_norm(sys, &e, &y, &y1, self.rtol);
+            let err = error_norm(sys, &e, &y, &y1, self.state.rtol);
             if !err.is_finite() || !all_finite(&y1) {
-                self.stats.rejected += 1;
-                self.h = h * 0.1;
-                self.last_rejected = true;
+                self.state.reject_non_finite(h);
                 continue;
             }
-            // PI control of dopri5.f: expo1 = 0.2 - 0.75 * beta, beta = 0.04.
-            let fac11 = err.powf(0.2 - 0.75 * 0.04);
-            if err <= 1.0 {
-                let fac = (fac11 / self.facold.powf(0.04) / 0.9).clamp(0.1, 5.0);
-                self.facold = err.max(1e-4);
-                let mut h_new = h / fac;
-                if self.last_rejected {
-                    h_new = h_new.min(h);
-                }
-                self.last_rejected = false;
+            if let Some(h_new) = self.state.control(&CONTROL, h, err) {
                 self.k = k;
-                self.t_prev = t;
-                self.y_prev = y;
-                self.t = if last { t_stop } else { t + h };
-                self.y = y1;
-                self.f = Some(k[6]);
-                if !last {
-                    self.h = h_new;
-                }
-                self.stats.steps += 1;
+                self.state.accept(h, h_new, last, t_stop, y1, k[6]);
                 return Ok(());
             }
-            self.stats.rejected += 1;
-            self.last_rejected = true;
-            self.h = h / (fac11 / 0.9).min(5.0);
         }
     }
 
     fn prepare_dense<S: Ode<N>>(&mut self, _sys: &S) {}
 
     fn interpolate(&self, t: f64) -> [f64; N] {
-        let h = self.t - self.t_prev;
-        let s = if h == 0.0 { 1.0 } else { (t - self.t_prev) / h };
+        let st = &self.state;
+        let h = st.t - st.t_prev;
+        let s = if h == 0.0 { 1.0 } else { (t - st.t_prev) / h };
         let s1 = 1.0 - s;
         let k = &self.k;
         // dopri5.f, function CONTD5.
         std::array::from_fn(|i| {
-            let ydiff = self.y[i] - self.y_prev[i];
+            let ydiff = st.y[i] - st.y_prev[i];
             let bspl = h * k[0][i] - ydiff;
             let r4 = ydiff - h * k[6][i] - bspl;
             let r5 = h * (0..7).map(|j| D[j] * k[j][i]).sum::<f64>();
-            self.y_prev[i] + s * (ydiff + s1 * (bspl + s * (r4 + s1 * r5)))
+            st.y_prev[i] + s * (ydiff + s1 * (bspl + s * (r4 + s1 * r5)))
         })
     }
 
     fn restart(&mut self, t: f64, y: [f64; N]) {
-        let (rtol, stats, h) = (self.rtol, self.stats, self.h);
-        *self = Dopri5::new(t, y, rtol);
-        self.stats = stats;
-        self.h = h;
+        self.state = self.state.restarted(t, y);
+        self.k = [[0.0; N]; 7];
     }
 
     fn stats(&self) -> Stats {
-        self.stats
+        self.state.stats
     }
 }

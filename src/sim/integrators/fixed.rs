@@ -18,6 +18,27 @@ pub trait FixedMethod<const N: usize> {
     ) -> ([f64; N], Option<[f64; N]>);
 }
 
+/// A one-stage fixed-step method: its step needs only the first slope `f0 = f(t, y)`, so it
+/// evaluates nothing itself (explicit and symplectic Euler). Every such method is a
+/// [`FixedMethod`].
+pub trait SlopeOnlyMethod<const N: usize> {
+    /// The state after a step `h` from `y` with slope `f0`.
+    fn update(y: &[f64; N], f0: &[f64; N], h: f64) -> [f64; N];
+}
+
+impl<M: SlopeOnlyMethod<N>, const N: usize> FixedMethod<N> for M {
+    fn advance<S: Ode<N>>(
+        _sys: &S,
+        _t: f64,
+        y: &[f64; N],
+        f0: &[f64; N],
+        h: f64,
+        _evals: &mut u64,
+    ) -> ([f64; N], Option<[f64; N]>) {
+        (M::update(y, f0, h), None)
+    }
+}
+
 /// A fixed-step integrator built from a [`FixedMethod`].
 #[derive(Clone, Debug)]
 pub struct FixedStep<M, const N: usize> {

@@ -17,6 +17,7 @@
 // Index loops mirror the formulas (a_ij k_j, J_ij) and are kept on purpose.
 #![allow(clippy::needless_range_loop)]
 
+mod adaptive;
 pub mod any;
 pub mod dop853;
 mod dop853_tables;

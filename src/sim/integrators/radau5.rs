@@ -9,7 +9,8 @@
 //! to a real and a complex system): for the ladder N is 2 or 4, where that is simplest and fast.
 //! The dense output is the collocation polynomial itself.
 
-use super::{all_finite, error_norm, eval, initial_step, Ode, Stats, StepError, Stepper};
+use super::adaptive::{start_step, trial_step};
+use super::{all_finite, error_norm, eval, Ode, Stats, StepError, Stepper};
 use num_dual::Dual64;
 
 const SQ6: f64 = 2.449_489_742_783_178;
@@ -186,39 +187,14 @@ impl<const N: usize> Stepper<N> for Radau5<N> {
 
     fn step<S: Ode<N>>(&mut self, sys: &S, t_stop: f64) -> Result<(), StepError> {
         let (t, y) = (self.t, self.y);
-        let f0 = eval(sys, t, &y);
-        self.stats.rhs_evals += 1;
-        if !all_finite(&f0) {
-            return Err(StepError::NotFinite { t });
-        }
-        let h_max = sys.max_step(&y);
-        if self.h == 0.0 {
-            self.h = initial_step(
-                sys,
-                t,
-                &y,
-                &f0,
-                self.rtol,
-                5,
-                h_max,
-                &mut self.stats.rhs_evals,
-            );
-        }
+        let (f0, h_max) = start_step(sys, t, &y, None, self.rtol, 5, &mut self.h, &mut self.stats)?;
         let jac = jacobian(sys, t, &y);
         self.stats.jacobians += 1;
         let n3 = 3 * N;
         let fnewt = (10.0 * f64::EPSILON / self.newton_rtol).max(0.03);
         let mut rejected = false;
         loop {
-            let mut h = self.h.min(h_max);
-            // A remainder below 1e-8 h would only be a rounding-sized extra step: take it now.
-            let last = t + h >= t_stop || t_stop - (t + h) <= 1e-8 * h;
-            if last {
-                h = t_stop - t;
-            }
-            if h <= 10.0 * f64::EPSILON * t.abs().max(1e-300) || h <= 0.0 {
-                return Err(StepError::StepTooSmall { t, h });
-            }
+            let (h, last) = trial_step(self.h, h_max, t, t_stop)?;
             // Iteration matrix I - h (A ⊗ J).
             for a in 0..3 {
                 for i in 0..N {

@@ -4,29 +4,21 @@
 //! For a separable model (acceleration independent of velocity, the wall phase) it is
 //! symplectic, so the energy error stays bounded instead of drifting as with explicit Euler.
 
-use super::fixed::{FixedMethod, FixedStep};
-use super::Ode;
+use super::fixed::{FixedStep, SlopeOnlyMethod};
 
 /// The symplectic Euler step for a second-order state `[q, v]`.
 #[derive(Clone, Copy, Debug)]
 pub struct SymplecticEulerStep;
 
-impl<const N: usize> FixedMethod<N> for SymplecticEulerStep {
-    fn advance<S: Ode<N>>(
-        _sys: &S,
-        _t: f64,
-        y: &[f64; N],
-        f0: &[f64; N],
-        h: f64,
-        _evals: &mut u64,
-    ) -> ([f64; N], Option<[f64; N]>) {
+impl<const N: usize> SlopeOnlyMethod<N> for SymplecticEulerStep {
+    fn update(y: &[f64; N], f0: &[f64; N], h: f64) -> [f64; N] {
         let d = N / 2;
         let mut y1 = *y;
         for i in 0..d {
             y1[d + i] = y[d + i] + h * f0[d + i];
             y1[i] = y[i] + h * y1[d + i];
         }
-        (y1, None)
+        y1
     }
 }
 
