@@ -70,6 +70,14 @@ fn p2<S: Scalar>(l: &Ladder<S>, s: &State<S>, x: &Slide<S>) -> Chains<S> {
     ]
 }
 
+fn p2_kinematic<S: Scalar>(l: &Ladder<S>, s: &State<S>, x: &Slide<S>) -> Chains<S> {
+    let (_, x_eq) = lagrange_residuals(l, s, x);
+    vec![vec![
+        reference("Lagrange's X equation (particle ℒ; AD)", x_eq),
+        printed("m Ẍ", l.m.clone() * x.accel.clone()),
+    ]]
+}
+
 fn p3<S: Scalar>(l: &Ladder<S>, s: &State<S>, x: &Slide<S>) -> Chains<S> {
     let (theta_eq, _) = lagrange_residuals(l, s, x);
     let lhs = (s.sin.clone() * s.sin.clone() + S::ratio(1, 3)) * s.accel.clone()
@@ -148,11 +156,18 @@ pub(super) fn equations() -> Vec<Equation> {
             "Floor phase: the centre keeps its horizontal velocity",
             OnShell,
             &["ladder::floor_phase::centre_acceleration"],
-            vec![check(
-                "Lagrange's X equation (AD) and Newton for the particles",
-                LadderSample::OnShell,
-                floor_fns!(p2),
-            )],
+            vec![
+                check(
+                    "Lagrange's X equation (AD) and Newton for the particles",
+                    LadderSample::OnShell,
+                    floor_fns!(p2),
+                ),
+                check(
+                    "Lagrange's X equation is m Ẍ at any state",
+                    LadderSample::Kinematic,
+                    floor_fns!(p2_kinematic),
+                ),
+            ],
         ),
         e(
             3,
