@@ -74,6 +74,32 @@ fn wall_force_from_rest_at(l: &Ladder<Q>, s: &State<Q>, c0: &Q) -> Q {
     at(0) + (at(1) - at(0)) * rate2
 }
 
+/// Footnote 4 as an identity in θ: on the motion from rest at θ0 (cos θ0 = c0) the wall force
+/// is m l sin θ ω² (3 cos θ − k c0), so it vanishes at cos θ = (k/3) c0; the note says k = 2.
+fn separates_where(c0: &Q, k: i64) -> bool {
+    all(LadderSample::OnShell, |l, s| {
+        let claimed = l.m.clone()
+            * l.l.clone()
+            * s.sin.clone()
+            * l.omega_squared()
+            * (Q::int(3) * s.cos.clone() - Q::int(k) * c0.clone());
+        wall_force_from_rest_at(l, s, c0) == claimed
+    })
+}
+
+/// Sec. 2.6: the wall force at C and the floor force at D (any values) have no torque about the
+/// point `k`; the note says so for E.
+fn contact_torques_vanish_about(k: Corner) -> bool {
+    all(LadderSample::Kinematic, |l, s| {
+        let p = corner_position(k, l, s);
+        let (f_w, f_f) = (Q::int(5), Q::int(-3));
+        let t_w =
+            (corner_position(Corner::C, l, s) - p.clone()).cross(&Vec3::planar(f_w, Q::int(0)));
+        let t_f = (corner_position(Corner::D, l, s) - p).cross(&Vec3::planar(Q::int(0), f_f));
+        t_w.z == Q::int(0) && t_f.z == Q::int(0)
+    })
+}
+
 /// Every prose claim, checked.
 pub fn claims() -> Vec<Claim> {
     use LadderSample::*;
@@ -96,16 +122,7 @@ pub fn claims() -> Vec<Claim> {
     });
     // Footnote 4 (and sec. 2.1 with θ0 = 0): on the motion from rest at θ0 the wall force is
     // m l sin θ · (3g/4l)(3 cos θ − 2 cos θ0), an identity in θ: it vanishes at cos θ = (2/3) cos θ0.
-    let separation = |c0: Q| {
-        all(OnShell, move |l, s| {
-            wall_force_from_rest_at(l, s, &c0)
-                == l.m.clone()
-                    * l.l.clone()
-                    * s.sin.clone()
-                    * l.omega_squared()
-                    * (Q::int(3) * s.cos.clone() - Q::int(2) * c0.clone())
-        })
-    };
+    let separation = |c0: Q| separates_where(&c0, 2);
     let orbital_a = all(Kinematic, |l, s| {
         let sys = as_system(l, s);
         z(sys.centre_of_mass().cross(&sys.cm_velocity().scale(&l.m)))
@@ -124,14 +141,7 @@ pub fn claims() -> Vec<Claim> {
             lp != i.clone() && lp != -i
         })
     };
-    let contact_torques_about_e = all(Kinematic, |l, s| {
-        let e = corner_position(Corner::E, l, s);
-        let (f_w, f_f) = (Q::int(5), Q::int(-3)); // any values: the lines of action pass through E
-        let t_w =
-            (corner_position(Corner::C, l, s) - e.clone()).cross(&Vec3::planar(f_w, Q::int(0)));
-        let t_f = (corner_position(Corner::D, l, s) - e).cross(&Vec3::planar(Q::int(0), f_f));
-        t_w.z == Q::int(0) && t_f.z == Q::int(0)
-    });
+    let contact_torques_about_e = contact_torques_vanish_about(Corner::E);
     let tau_a_from_tau_c = all(Kinematic, |l, s| {
         let sys = as_system(l, s);
         let x_c = corner_position(Corner::C, l, s);
@@ -208,4 +218,22 @@ pub fn claims() -> Vec<Claim> {
         },
         erratum("sec. A.5", "L = L_A written as −(2/3) m l θ̇: a factor l is missing", r"-\frac{2}{3}m l \dot{\theta}", r"-\frac{2}{3}m l^2 \dot{\theta}", la_prose_corrected, la_prose_printed_fails),
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn claims_hold_and_wrong_versions_fail() {
+        assert!(claims()
+            .iter()
+            .all(|c| c.holds && c.printed_fails != Some(false)));
+        // A root at (1/3) or (3/3) cos θ0 instead of (2/3) fails; so do torques about D.
+        assert!(separates_where(&Q::ratio(3, 5), 2) && !separates_where(&Q::ratio(3, 5), 1));
+        assert!(!separates_where(&Q::int(1), 3));
+        assert!(
+            contact_torques_vanish_about(Corner::E) && !contact_torques_vanish_about(Corner::D)
+        );
+    }
 }
