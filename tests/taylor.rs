@@ -40,7 +40,7 @@ fn sin_cos_by_composition(theta: &[Q], s0: &Q, c0: &Q) -> (Vec<Q>, Vec<Q>) {
     for n in 0..=p {
         if n > 0 {
             power = mul(&power, &delta);
-            fact = fact * Q::int(n as i64);
+            fact *= Q::int(n as i64);
         }
         let sign = if (n / 2) % 2 == 0 { 1 } else { -1 };
         let target = if n % 2 == 0 { &mut cos_d } else { &mut sin_d };

@@ -11,6 +11,10 @@ use super::verlet::Verlet;
 use super::{Control, Ode, Stats, StepError, Stepper};
 
 /// Any integrator of this module.
+///
+/// Unboxed although the Taylor variant is large (its series buffers): one stepper per phase
+/// lives on the stack, and boxing would add a heap allocation to every run.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug)]
 pub enum AnyStepper<const N: usize> {
     /// Explicit Euler.
