@@ -17,7 +17,7 @@
 
 use proptest::prelude::*;
 use sliding_ladder::sim::fall::{self, Outcome};
-use sliding_ladder::sim::integrators::{is_adaptive, Control, METHODS};
+use sliding_ladder::sim::integrators::{is_adaptive, Control, RIGID_METHODS};
 use sliding_ladder::sim::output::Output;
 use sliding_ladder::sim::rigid::Ladder;
 use sliding_ladder::sim::scene::{ContactModel, End, Scene};
@@ -60,7 +60,11 @@ fn angle_error_and_bound(sc: &Scene, o: &Outcome, tol: f64) -> (f64, f64) {
 }
 
 fn adaptive() -> Vec<&'static str> {
-    METHODS.iter().copied().filter(|m| is_adaptive(m)).collect()
+    RIGID_METHODS
+        .iter()
+        .copied()
+        .filter(|m| is_adaptive(m))
+        .collect()
 }
 
 fn unit_time(l: &Ladder) -> f64 {

@@ -13,7 +13,7 @@
 
 use super::stability::{blank, Case, U};
 use crate::sim::fall;
-use crate::sim::integrators::{is_adaptive, Control, METHODS};
+use crate::sim::integrators::{is_adaptive, Control, RIGID_METHODS};
 use crate::sim::output::Output;
 use crate::sim::rigid::Ladder;
 use crate::sim::scene::{ContactModel, End, Scene};
@@ -93,7 +93,11 @@ fn sweep_case(ladder: Ladder, theta0: f64, method: &str, tol: f64) -> Case {
 
 /// The sweep's cases (seeded), calling `tick` before each.
 pub fn sweep_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
-    let methods: Vec<&str> = METHODS.iter().copied().filter(|m| is_adaptive(m)).collect();
+    let methods: Vec<&str> = RIGID_METHODS
+        .iter()
+        .copied()
+        .filter(|m| is_adaptive(m))
+        .collect();
     let mut rng = ChaCha8Rng::seed_from_u64(11);
     (0..SWEEP_CASES)
         .map(|i| {

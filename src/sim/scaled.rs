@@ -106,6 +106,9 @@ impl Units {
             RunError::Step(StepError::NewtonFailed { t: at }) => {
                 RunError::Step(StepError::NewtonFailed { t: at * t })
             }
+            RunError::Step(StepError::NoTaylorSeries { t: at }) => {
+                RunError::Step(StepError::NoTaylorSeries { t: at * t })
+            }
             RunError::TooManySteps { limit, t: at } => RunError::TooManySteps { limit, t: at * t },
             RunError::LiftOff { t: at, theta } => RunError::LiftOff { t: at * t, theta },
             other @ RunError::Start(_) => other,
