@@ -3,6 +3,7 @@
 pub mod claims;
 pub mod command;
 pub mod errata;
+pub mod proof;
 
 use crate::registry::check::{run_check, CheckReport, Config};
 use crate::registry::{equations, Equation, Kind};
@@ -55,6 +56,12 @@ pub struct EquationResult {
     /// What went wrong, if anything.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub problems: Vec<String>,
+    /// Every check holds symbolically for all values of the variables (see [`proof`]).
+    pub proved: bool,
+    /// `proved`, `erratum`, `definition`, or why not (`sampled only: …`, `not proved`).
+    pub proof: String,
+    /// Seconds spent on the symbolic proofs of this equation.
+    pub proof_seconds: f64,
 }
 
 /// Judge one equation from its check reports.
@@ -122,7 +129,22 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
             Some(on_shell.iter().all(|&b| b))
         },
         problems,
+        proved: false,
+        proof: "not attempted".into(),
+        proof_seconds: 0.0,
     }
+}
+
+/// Add the symbolic proof verdict to a judged equation (a nonzero difference fails it).
+pub fn add_proof(r: &mut EquationResult, e: &Equation) {
+    let (v, _) = proof::prove_equation(e);
+    if let Some(p) = v.problem {
+        r.problems.push(p);
+        r.status = Status::Failed;
+    }
+    r.proved = v.proved;
+    r.proof = v.proof;
+    r.proof_seconds = v.seconds;
 }
 
 /// Run every check of every equation (on two threads) and judge each equation.
@@ -145,13 +167,15 @@ fn verify_list(eqs: Vec<Equation>, cfg: &Config) -> Vec<EquationResult> {
                         .skip(w)
                         .step_by(2)
                         .map(|e| {
-                            judge(
+                            let mut r = judge(
                                 e,
                                 &e.checks
                                     .iter()
                                     .map(|c| run_check(c, cfg))
                                     .collect::<Vec<_>>(),
-                            )
+                            );
+                            add_proof(&mut r, e);
+                            r
                         })
                         .collect::<Vec<_>>()
                 })
@@ -181,8 +205,8 @@ pub fn counts(results: &[EquationResult]) -> (usize, usize, usize, usize) {
 pub fn table(results: &[EquationResult]) -> String {
     let mut out = String::new();
     out.push_str(&format!(
-        "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9}  {}\n",
-        "eq", "sec", "title", "kind", "checks", "cases", "exact", "residual", "status"
+        "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9} {:>6}  {}\n",
+        "eq", "sec", "title", "kind", "checks", "cases", "exact", "residual", "proved", "status"
     ));
     for r in results {
         let status = match r.status {
@@ -192,7 +216,7 @@ pub fn table(results: &[EquationResult]) -> String {
             Status::Failed => "FAILED",
         };
         out.push_str(&format!(
-            "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9.3}  {}\n",
+            "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9.3} {:>6}  {}\n",
             r.label,
             r.section,
             r.title.chars().take(46).collect::<String>(),
@@ -201,6 +225,7 @@ pub fn table(results: &[EquationResult]) -> String {
             r.cases,
             if r.exact { "yes" } else { "no" },
             r.max_residual,
+            if r.proved { "yes" } else { "no" },
             status
         ));
         for p in &r.problems {
