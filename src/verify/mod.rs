@@ -48,8 +48,12 @@ pub struct EquationResult {
     pub exact: bool,
     /// Largest float residual in units of its error bound (pass: ≤ 4).
     pub max_residual: f64,
+    /// What `max_residual` is measured in (see [`RESIDUAL_UNIT`]).
+    pub max_residual_unit: &'static str,
     /// Largest Schwartz-Zippel bound over the checks: the chance a false identity passed.
     pub sz_bound: f64,
+    /// log10 of `sz_bound`, which does not underflow when the bound is below 1e-308.
+    pub sz_bound_log10: f64,
     /// For on-shell equations: shown to fail off the equation of motion.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fails_off_shell: Option<bool>,
@@ -63,6 +67,11 @@ pub struct EquationResult {
     /// Seconds spent on the symbolic proofs of this equation.
     pub proof_seconds: f64,
 }
+
+/// The unit of `max_residual`: |lhs − rhs| divided by the running error bound of the two sides,
+/// u·(e_lhs + e_rhs) with u = 2⁻⁵³; a float check passes when this is at most 4.
+pub const RESIDUAL_UNIT: &str =
+    "error bounds: |lhs - rhs| / (u (e_lhs + e_rhs)), u = 2^-53; pass <= 4";
 
 /// Judge one equation from its check reports.
 pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
@@ -122,7 +131,12 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
             .iter()
             .map(|r| r.max_scaled_residual)
             .fold(0.0, f64::max),
+        max_residual_unit: RESIDUAL_UNIT,
         sz_bound: reports.iter().map(|r| r.sz_bound).fold(0.0, f64::max),
+        sz_bound_log10: reports
+            .iter()
+            .map(|r| r.sz_bound_log10)
+            .fold(f64::NEG_INFINITY, f64::max),
         fails_off_shell: if on_shell.is_empty() {
             None
         } else {
@@ -206,7 +220,7 @@ pub fn table(results: &[EquationResult]) -> String {
     let mut out = String::new();
     out.push_str(&format!(
         "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9} {:>6}  {}\n",
-        "eq", "sec", "title", "kind", "checks", "cases", "exact", "residual", "proved", "status"
+        "eq", "sec", "title", "kind", "checks", "cases", "exact", "res/bound", "proved", "status"
     ));
     for r in results {
         let status = match r.status {
