@@ -254,3 +254,31 @@ pub fn prove_check(check: &Check) -> CheckProof {
     out.seconds = t.elapsed().as_secs_f64();
     out
 }
+
+/// The difference printed − corrected of every chain of a check that holds both a misprint and
+/// its correction, evaluated as functions of free variables: the ladder with θ, θ̇, θ̈ free
+/// (whatever the check's sort: the difference of two forms, not a statement on the motion), a
+/// particle system with one particle (the summand of a sum over particles). Empty when the check
+/// has no misprint.
+pub fn erratum_difference(check: &Check) -> Vec<Sym> {
+    let chains = match check.eval {
+        Eval::Ladder(_, f) => {
+            let (l, s, _) = symbolic_ladder(LadderSample::Kinematic);
+            (f.symbolic)(&l, &s)
+        }
+        Eval::Floor(..) => return Vec::new(), // the extension has no errata
+        Eval::Particles(sort, f) => {
+            let values = symbolic_particle_values(1);
+            let (sys, p) = particle_system(sort, 1, &values);
+            (f.symbolic)(&sys, &p)
+        }
+    };
+    chains
+        .iter()
+        .filter_map(|c| {
+            let bad = c.iter().find(|s| s.role == Role::Misprint)?;
+            let good = c.iter().find(|s| s.role == Role::Corrected)?;
+            Some(bad.value.clone() - good.value.clone())
+        })
+        .collect()
+}

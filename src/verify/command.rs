@@ -124,6 +124,7 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
             println!("({}) printed:   {}", r.number, r.printed);
             println!("     corrected: {}", r.corrected);
             println!("     why: {}", r.why);
+            println!("     printed − corrected: {}", r.difference_text);
             println!(
                 "     residual at an exact point: printed {} (= {:.6e}), corrected {}",
                 r.printed_residual_exact, r.printed_residual, r.corrected_residual
