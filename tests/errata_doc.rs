@@ -44,6 +44,19 @@ fn every_recorded_erratum_is_on_the_page_and_nothing_else() {
 }
 
 #[test]
+fn every_erratum_difference_is_on_the_page() {
+    let text = page();
+    for r in sliding_ladder::verify::errata::errata(&Default::default()) {
+        assert!(
+            text.contains(&format!("${}$", r.difference_latex)),
+            "({}) printed − corrected not on the page: ${}$",
+            r.number,
+            r.difference_latex
+        );
+    }
+}
+
+#[test]
 fn every_prose_erratum_is_on_the_page() {
     let text = page();
     let mut n = 0;

@@ -70,6 +70,8 @@ pub struct CheckReport {
     pub degree: u32,
     /// Probability that a false identity passed all exact points: (degree/set size)^points.
     pub sz_bound: f64,
+    /// log10 of `sz_bound` (finite where `sz_bound` underflows to 0).
+    pub sz_bound_log10: f64,
     /// For on-shell checks: whether every exact off-shell point failed, as it must.
     pub off_shell_fails: Option<bool>,
 }
@@ -282,6 +284,8 @@ pub fn run_check(check: &Check, cfg: &Config) -> CheckReport {
     rep.exact_points = cfg.exact_points;
     rep.misprints = misprint_ok;
     rep.sz_bound = (f64::from(rep.degree.max(1)) / EXACT_SET_SIZE).powi(cfg.exact_points as i32);
+    rep.sz_bound_log10 =
+        cfg.exact_points as f64 * (f64::from(rep.degree.max(1)) / EXACT_SET_SIZE).log10();
     rep
 }
 

@@ -14,6 +14,7 @@ mod jensen_eqs;
 mod ladder_eqs;
 mod latex;
 mod milne_eqs;
+pub mod prove;
 pub mod sample;
 pub mod side;
 
@@ -23,7 +24,7 @@ pub use side::{corrected, misprint, printed, reference, vector_chains, Chain, Ro
 
 use crate::ladder::floor_phase::Slide;
 use crate::ladder::{Ladder, State};
-use crate::scalar::{Bound, Degree, Rational};
+use crate::scalar::{Bound, Degree, Rational, Sym};
 use crate::system::{Point, System};
 use serde::Serialize;
 
@@ -76,6 +77,8 @@ pub struct FloorFns {
     pub exact: FloorChains<Rational>,
     /// In degree-counting mode (Schwartz-Zippel).
     pub degree: FloorChains<Degree>,
+    /// In symbolic rational functions (proofs).
+    pub symbolic: FloorChains<Sym>,
 }
 
 /// Instantiate a generic floor-phase check.
@@ -87,6 +90,7 @@ macro_rules! floor_fns {
             bound: $f,
             exact: $f,
             degree: $f,
+            symbolic: $f,
         }
     };
 }
@@ -102,6 +106,8 @@ pub struct LadderFns {
     pub exact: LadderChains<Rational>,
     /// In degree-counting mode (Schwartz-Zippel).
     pub degree: LadderChains<Degree>,
+    /// In symbolic rational functions (proofs).
+    pub symbolic: LadderChains<Sym>,
 }
 
 /// A particle-system check instantiated in every scalar type.
@@ -115,6 +121,8 @@ pub struct ParticleFns {
     pub exact: ParticleChains<Rational>,
     /// In degree-counting mode (Schwartz-Zippel).
     pub degree: ParticleChains<Degree>,
+    /// In symbolic rational functions (proofs).
+    pub symbolic: ParticleChains<Sym>,
 }
 
 /// Instantiate a generic ladder check `fn f<S: Scalar>(&Ladder<S>, &State<S>) -> Vec<Chain<S>>`.
@@ -126,6 +134,7 @@ macro_rules! ladder_fns {
             bound: $f,
             exact: $f,
             degree: $f,
+            symbolic: $f,
         }
     };
 }
@@ -139,6 +148,7 @@ macro_rules! particle_fns {
             bound: $f,
             exact: $f,
             degree: $f,
+            symbolic: $f,
         }
     };
 }

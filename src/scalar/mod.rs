@@ -7,9 +7,11 @@
 //! * in [`Bound`], a running error bound (Higham, *Accuracy and Stability of Numerical
 //!   Algorithms*, sec. 3.3) that gives every float check its tolerance,
 //! * in [`Rational`] (exact, zero residual) with time derivatives by [`Jet`], a first-order dual
-//!   number over any scalar, and
+//!   number over any scalar,
 //! * in [`Degree`], which carries no value at all but the degree of the rational function being
-//!   built, so the Schwartz-Zippel bound of every exact check is computed, not guessed.
+//!   built, so the Schwartz-Zippel bound of every exact check is computed, not guessed, and
+//! * in [`Sym`], exact rational functions of the variables themselves (normal form modulo
+//!   s² + c² = 1, see [`poly`]), so an identity is proved rather than sampled.
 //!
 //! No equation ever takes sin or cos: the ladder state carries sin θ and cos θ, which is what
 //! makes exact evaluation possible.
@@ -20,10 +22,15 @@
 mod bound;
 mod degree;
 mod jet;
+pub mod poly;
+mod sym_print;
+mod symbolic;
 
 pub use bound::{Bound, UNIT_ROUNDOFF};
 pub use degree::Degree;
 pub use jet::Jet;
+pub use sym_print::{latex, text};
+pub use symbolic::{Den, Sym};
 
 use num_bigint::BigInt;
 use num_dual::{Dual, DualNum};

@@ -17,10 +17,12 @@ pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
     let extensions = crate::verify::verify_extensions(cfg);
     let seconds = t.elapsed().as_secs_f64();
     let (v, e, d, f) = counts(&results);
+    let (proved, sampled_only, proof_seconds) = proof_counts(&results);
     if json_out {
         let out = json!({
             "equations": results,
             "summary": {"verified": v, "erratum": e, "definition": d, "failed": f,
+                         "proved": proved, "sampled_only": sampled_only, "proof_seconds": proof_seconds,
                          "float_cases_per_check": cfg.float_cases, "exact_points_per_check": cfg.exact_points,
                          "seed": cfg.seed, "seconds": seconds},
             "docs": {"problems": docs.problems, "sections": docs.equations_found, "examples_run": docs.examples_run},
@@ -75,11 +77,28 @@ pub fn summary_line(results: &[EquationResult], cfg: &Config, seconds: f64) -> S
     let (v, e, d, f) = counts(results);
     let checks: usize = results.iter().map(|r| r.checks.len()).sum();
     let exact = results.iter().filter(|r| r.exact).count();
-    let worst_sz = results.iter().map(|r| r.sz_bound).fold(0.0, f64::max);
+    let worst_sz = results
+        .iter()
+        .map(|r| r.sz_bound_log10)
+        .fold(f64::NEG_INFINITY, f64::max);
+    let (proved, sampled_only, proof_seconds) = proof_counts(results);
     format!(
-        "{} equations: {v} verified, {e} erratum, {d} definition, {f} failed; {checks} checks, {} float cases each, {exact} exact (Schwartz-Zippel bound ≤ {worst_sz:.1e}); {seconds:.2} s",
+        "{} equations: {v} verified, {e} erratum, {d} definition, {f} failed; {checks} checks, {} float cases each, {exact} exact (Schwartz-Zippel bound ≤ 1e{}); {proved} proved symbolically, {sampled_only} sampled only ({proof_seconds:.2} s of proofs); {seconds:.2} s",
         results.len(),
-        cfg.float_cases
+        cfg.float_cases,
+        worst_sz.ceil()
+    )
+}
+
+/// (equations proved, equations only sampled, seconds spent on proofs).
+pub fn proof_counts(results: &[EquationResult]) -> (usize, usize, f64) {
+    (
+        results.iter().filter(|r| r.proved).count(),
+        results
+            .iter()
+            .filter(|r| r.proof.starts_with("sampled only"))
+            .count(),
+        results.iter().map(|r| r.proof_seconds).sum(),
     )
 }
 
@@ -105,6 +124,7 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
             println!("({}) printed:   {}", r.number, r.printed);
             println!("     corrected: {}", r.corrected);
             println!("     why: {}", r.why);
+            println!("     printed − corrected: {}", r.difference_text);
             println!(
                 "     residual at an exact point: printed {} (= {:.6e}), corrected {}",
                 r.printed_residual_exact, r.printed_residual, r.corrected_residual

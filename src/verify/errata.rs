@@ -24,6 +24,41 @@ pub struct ErratumReport {
     pub printed_residual_exact: String,
     /// Corrected form minus the reference: exactly zero.
     pub corrected_residual: String,
+    /// printed − corrected as a function of free variables (s = sin θ, c = cos θ, θ̇, θ̈, …;
+    /// for a sum over particles, the summand of particle 1), simplified modulo s² + c² = 1, as
+    /// plain text; a vector is (x, y, z).
+    pub difference_text: String,
+    /// The same difference as LaTeX.
+    pub difference_latex: String,
+}
+
+/// printed − corrected of an equation's erratum, as (text, LaTeX) (see [`ErratumReport`]).
+pub fn difference(e: &crate::registry::Equation) -> (String, String) {
+    let d = e
+        .checks
+        .iter()
+        .map(crate::registry::prove::erratum_difference)
+        .find(|d| !d.is_empty())
+        .unwrap_or_default();
+    match d.as_slice() {
+        [one] => (crate::scalar::text(one), crate::scalar::latex(one)),
+        many => (
+            format!(
+                "({})",
+                many.iter()
+                    .map(crate::scalar::text)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+            format!(
+                "\\left({}\\right)",
+                many.iter()
+                    .map(crate::scalar::latex)
+                    .collect::<Vec<_>>()
+                    .join(",\\ ")
+            ),
+        ),
+    }
 }
 
 fn residuals(chains: &[Chain<Rational>]) -> Option<(Rational, Rational)> {
@@ -79,6 +114,7 @@ pub fn errata(_cfg: &Config) -> Vec<ErratumReport> {
             }
         }
         let (bad, good) = found.unwrap_or((Rational::int(0), Rational::int(1)));
+        let (difference_text, difference_latex) = difference(&e);
         out.push(ErratumReport {
             number: e.number,
             printed: err.printed,
@@ -87,6 +123,8 @@ pub fn errata(_cfg: &Config) -> Vec<ErratumReport> {
             printed_residual: bad.to_f64(),
             printed_residual_exact: bad.to_string(),
             corrected_residual: good.to_string(),
+            difference_text,
+            difference_latex,
         });
     }
     out

@@ -3,6 +3,7 @@
 pub mod claims;
 pub mod command;
 pub mod errata;
+pub mod proof;
 
 use crate::registry::check::{run_check, CheckReport, Config};
 use crate::registry::{equations, Equation, Kind};
@@ -47,15 +48,30 @@ pub struct EquationResult {
     pub exact: bool,
     /// Largest float residual in units of its error bound (pass: ≤ 4).
     pub max_residual: f64,
+    /// What `max_residual` is measured in (see [`RESIDUAL_UNIT`]).
+    pub max_residual_unit: &'static str,
     /// Largest Schwartz-Zippel bound over the checks: the chance a false identity passed.
     pub sz_bound: f64,
+    /// log10 of `sz_bound`, which does not underflow when the bound is below 1e-308.
+    pub sz_bound_log10: f64,
     /// For on-shell equations: shown to fail off the equation of motion.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fails_off_shell: Option<bool>,
     /// What went wrong, if anything.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub problems: Vec<String>,
+    /// Every check holds symbolically for all values of the variables (see [`proof`]).
+    pub proved: bool,
+    /// `proved`, `erratum`, `definition`, or why not (`sampled only: …`, `not proved`).
+    pub proof: String,
+    /// Seconds spent on the symbolic proofs of this equation.
+    pub proof_seconds: f64,
 }
+
+/// The unit of `max_residual`: |lhs − rhs| divided by the running error bound of the two sides,
+/// u·(e_lhs + e_rhs) with u = 2⁻⁵³; a float check passes when this is at most 4.
+pub const RESIDUAL_UNIT: &str =
+    "error bounds: |lhs - rhs| / (u (e_lhs + e_rhs)), u = 2^-53; pass <= 4";
 
 /// Judge one equation from its check reports.
 pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
@@ -115,14 +131,34 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
             .iter()
             .map(|r| r.max_scaled_residual)
             .fold(0.0, f64::max),
+        max_residual_unit: RESIDUAL_UNIT,
         sz_bound: reports.iter().map(|r| r.sz_bound).fold(0.0, f64::max),
+        sz_bound_log10: reports
+            .iter()
+            .map(|r| r.sz_bound_log10)
+            .fold(f64::NEG_INFINITY, f64::max),
         fails_off_shell: if on_shell.is_empty() {
             None
         } else {
             Some(on_shell.iter().all(|&b| b))
         },
         problems,
+        proved: false,
+        proof: "not attempted".into(),
+        proof_seconds: 0.0,
     }
+}
+
+/// Add the symbolic proof verdict to a judged equation (a nonzero difference fails it).
+pub fn add_proof(r: &mut EquationResult, e: &Equation) {
+    let (v, _) = proof::prove_equation(e);
+    if let Some(p) = v.problem {
+        r.problems.push(p);
+        r.status = Status::Failed;
+    }
+    r.proved = v.proved;
+    r.proof = v.proof;
+    r.proof_seconds = v.seconds;
 }
 
 /// Run every check of every equation (on two threads) and judge each equation.
@@ -145,13 +181,15 @@ fn verify_list(eqs: Vec<Equation>, cfg: &Config) -> Vec<EquationResult> {
                         .skip(w)
                         .step_by(2)
                         .map(|e| {
-                            judge(
+                            let mut r = judge(
                                 e,
                                 &e.checks
                                     .iter()
                                     .map(|c| run_check(c, cfg))
                                     .collect::<Vec<_>>(),
-                            )
+                            );
+                            add_proof(&mut r, e);
+                            r
                         })
                         .collect::<Vec<_>>()
                 })
@@ -181,8 +219,8 @@ pub fn counts(results: &[EquationResult]) -> (usize, usize, usize, usize) {
 pub fn table(results: &[EquationResult]) -> String {
     let mut out = String::new();
     out.push_str(&format!(
-        "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9}  {}\n",
-        "eq", "sec", "title", "kind", "checks", "cases", "exact", "residual", "status"
+        "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9} {:>6}  {}\n",
+        "eq", "sec", "title", "kind", "checks", "cases", "exact", "res/bound", "proved", "status"
     ));
     for r in results {
         let status = match r.status {
@@ -192,7 +230,7 @@ pub fn table(results: &[EquationResult]) -> String {
             Status::Failed => "FAILED",
         };
         out.push_str(&format!(
-            "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9.3}  {}\n",
+            "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9.3} {:>6}  {}\n",
             r.label,
             r.section,
             r.title.chars().take(46).collect::<String>(),
@@ -201,6 +239,7 @@ pub fn table(results: &[EquationResult]) -> String {
             r.cases,
             if r.exact { "yes" } else { "no" },
             r.max_residual,
+            if r.proved { "yes" } else { "no" },
             status
         ));
         for p in &r.problems {
