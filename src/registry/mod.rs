@@ -16,6 +16,7 @@ mod latex;
 mod milne_eqs;
 pub mod sample;
 pub mod side;
+pub mod units;
 
 pub use latex::printed_latex;
 pub use sample::{LadderSample, ParticleSample};
@@ -23,7 +24,7 @@ pub use side::{corrected, misprint, printed, reference, vector_chains, Chain, Ro
 
 use crate::ladder::floor_phase::Slide;
 use crate::ladder::{Ladder, State};
-use crate::scalar::{Bound, Degree, Rational};
+use crate::scalar::{Bound, Degree, Dim, Rational};
 use crate::system::{Point, System};
 use serde::Serialize;
 
@@ -76,6 +77,8 @@ pub struct FloorFns {
     pub exact: FloorChains<Rational>,
     /// In degree-counting mode (Schwartz-Zippel).
     pub degree: FloorChains<Degree>,
+    /// In physical dimensions (dimensional analysis).
+    pub units: FloorChains<Dim>,
 }
 
 /// Instantiate a generic floor-phase check.
@@ -87,6 +90,7 @@ macro_rules! floor_fns {
             bound: $f,
             exact: $f,
             degree: $f,
+            units: $f,
         }
     };
 }
@@ -102,6 +106,8 @@ pub struct LadderFns {
     pub exact: LadderChains<Rational>,
     /// In degree-counting mode (Schwartz-Zippel).
     pub degree: LadderChains<Degree>,
+    /// In physical dimensions (dimensional analysis).
+    pub units: LadderChains<Dim>,
 }
 
 /// A particle-system check instantiated in every scalar type.
@@ -115,6 +121,8 @@ pub struct ParticleFns {
     pub exact: ParticleChains<Rational>,
     /// In degree-counting mode (Schwartz-Zippel).
     pub degree: ParticleChains<Degree>,
+    /// In physical dimensions (dimensional analysis).
+    pub units: ParticleChains<Dim>,
 }
 
 /// Instantiate a generic ladder check `fn f<S: Scalar>(&Ladder<S>, &State<S>) -> Vec<Chain<S>>`.
@@ -126,6 +134,7 @@ macro_rules! ladder_fns {
             bound: $f,
             exact: $f,
             degree: $f,
+            units: $f,
         }
     };
 }
@@ -139,6 +148,7 @@ macro_rules! particle_fns {
             bound: $f,
             exact: $f,
             degree: $f,
+            units: $f,
         }
     };
 }

@@ -9,7 +9,9 @@
 //! * in [`Rational`] (exact, zero residual) with time derivatives by [`Jet`], a first-order dual
 //!   number over any scalar, and
 //! * in [`Degree`], which carries no value at all but the degree of the rational function being
-//!   built, so the Schwartz-Zippel bound of every exact check is computed, not guessed.
+//!   built, so the Schwartz-Zippel bound of every exact check is computed, not guessed, and
+//! * in [`Dim`], which carries the physical dimension of each value (dimensional analysis: a sum
+//!   of unlike dimensions is recorded as an inconsistency).
 //!
 //! No equation ever takes sin or cos: the ladder state carries sin θ and cos θ, which is what
 //! makes exact evaluation possible.
@@ -19,10 +21,12 @@
 
 mod bound;
 mod degree;
+mod dimension;
 mod jet;
 
 pub use bound::{Bound, UNIT_ROUNDOFF};
 pub use degree::Degree;
+pub use dimension::{Clash, Dim, Dimension, Exponent, Inconsistency};
 pub use jet::Jet;
 
 use num_bigint::BigInt;

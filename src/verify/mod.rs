@@ -5,6 +5,7 @@ pub mod command;
 pub mod errata;
 
 use crate::registry::check::{run_check, CheckReport, Config};
+use crate::registry::units::{equation_units, Units};
 use crate::registry::{equations, Equation, Kind};
 use serde::Serialize;
 
@@ -55,6 +56,11 @@ pub struct EquationResult {
     /// What went wrong, if anything.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub problems: Vec<String>,
+    /// Dimensional analysis of every form ([`crate::registry::units`]).
+    pub units: Units,
+    /// Why `inconsistent` (the clash and where) or `not applicable`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub units_detail: Option<String>,
 }
 
 /// Judge one equation from its check reports.
@@ -85,6 +91,10 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
             ));
         }
     }
+    // Dimensional analysis: a side that must hold and mixes units is a defect like a residual.
+    let units_found = equation_units(e);
+    problems.extend(units_found.problems.iter().map(|p| format!("units: {p}")));
+    let (units, units_detail) = units_found.verdict();
     let on_shell = reports
         .iter()
         .filter_map(|r| r.off_shell_fails)
@@ -122,6 +132,8 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
             Some(on_shell.iter().all(|&b| b))
         },
         problems,
+        units,
+        units_detail,
     }
 }
 
@@ -181,8 +193,8 @@ pub fn counts(results: &[EquationResult]) -> (usize, usize, usize, usize) {
 pub fn table(results: &[EquationResult]) -> String {
     let mut out = String::new();
     out.push_str(&format!(
-        "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9}  {}\n",
-        "eq", "sec", "title", "kind", "checks", "cases", "exact", "residual", "status"
+        "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9}  {:<14} {}\n",
+        "eq", "sec", "title", "kind", "checks", "cases", "exact", "residual", "units", "status"
     ));
     for r in results {
         let status = match r.status {
@@ -192,7 +204,7 @@ pub fn table(results: &[EquationResult]) -> String {
             Status::Failed => "FAILED",
         };
         out.push_str(&format!(
-            "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9.3}  {}\n",
+            "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9.3}  {:<14} {}\n",
             r.label,
             r.section,
             r.title.chars().take(46).collect::<String>(),
@@ -201,10 +213,14 @@ pub fn table(results: &[EquationResult]) -> String {
             r.cases,
             if r.exact { "yes" } else { "no" },
             r.max_residual,
+            r.units.name(),
             status
         ));
         for p in &r.problems {
             out.push_str(&format!("      ! {p}\n"));
+        }
+        if let (Units::Inconsistent, Some(d)) = (r.units, &r.units_detail) {
+            out.push_str(&format!("      units: {d}\n"));
         }
     }
     out
