@@ -88,7 +88,10 @@ impl Dimension {
                 continue;
             }
             let (base, exp) = match factor.split_once('^') {
-                Some((b, e)) => (b, e.trim_matches(|c| c == '{' || c == '}' || c == '(' || c == ')')),
+                Some((b, e)) => (
+                    b,
+                    e.trim_matches(|c| c == '{' || c == '}' || c == '(' || c == ')'),
+                ),
                 None => (factor, "1"),
             };
             let exp: Exponent = match exp.split_once('/') {
@@ -145,7 +148,10 @@ fn superscript(e: Exponent) -> String {
             .map(|c| match c {
                 '-' => '⁻',
                 '/' => 'ᐟ',
-                d => "⁰¹²³⁴⁵⁶⁷⁸⁹".chars().nth(d as usize - '0' as usize).unwrap_or(d),
+                d => "⁰¹²³⁴⁵⁶⁷⁸⁹"
+                    .chars()
+                    .nth(d as usize - '0' as usize)
+                    .unwrap_or(d),
             })
             .collect()
     };

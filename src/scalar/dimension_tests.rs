@@ -39,7 +39,10 @@ fn a_sum_of_unlike_dimensions_is_recorded_with_both() {
     assert_eq!(i.to_string(), "M L² T⁻¹ + L² T⁻¹");
     // It absorbs later operations and keeps the first clash and the first place given.
     let later = (bad * m() - l()).at("form 3").at("form 4");
-    assert_eq!(later.inconsistency().unwrap().to_string(), "M L² T⁻¹ + L² T⁻¹ in form 3");
+    assert_eq!(
+        later.inconsistency().unwrap().to_string(),
+        "M L² T⁻¹ + L² T⁻¹ in form 3"
+    );
     // Like dimensions add without complaint.
     assert_eq!(m() * rate() + m() * rate(), Dim::new(1, 0, -1));
     assert!((m() - l()).inconsistency().is_some());
