@@ -168,3 +168,53 @@ fn a_chain_of_pure_numbers_is_dimensionless_and_of_zeros_not_applicable() {
     assert_eq!(zeros.verdict().0, Units::NotApplicable);
     assert_eq!(judge_chains(&[]).verdict().0, Units::NotApplicable);
 }
+
+#[test]
+fn errata_md_carries_the_units_witness_of_every_erratum() {
+    use sliding_ladder::verify::units::erratum_units;
+    let page = std::fs::read_to_string(sliding_ladder::docs::default_dir().join("ERRATA.md"))
+        .expect("equations/ERRATA.md");
+    let mut caught = Vec::new();
+    for e in equations().iter().filter(|e| e.erratum.is_some()) {
+        let u = erratum_units(e);
+        assert_ne!(
+            u.corrected,
+            Units::Inconsistent,
+            "({}): {:?}",
+            e.number,
+            u.corrected_detail
+        );
+        assert!(
+            page.contains(&format!("{}\n", u.doc_line())),
+            "({}) ERRATA.md lacks the line\n{}",
+            e.number,
+            u.doc_line()
+        );
+        if u.caught_by_units() {
+            caught.push(e.number);
+        }
+    }
+    assert_eq!(caught, vec![49, 62, 68]);
+}
+
+#[test]
+fn prose_quantities_have_consistent_units_except_the_a5_slip() {
+    use sliding_ladder::verify::units::prose_units;
+    let rows = prose_units();
+    assert!(rows.len() >= 5);
+    for r in &rows {
+        if r.location == "sec. A.5" {
+            assert_eq!(r.units, Units::Inconsistent);
+            assert_eq!(r.corrected, Some(Units::Consistent));
+            assert!(r.units_detail.as_deref().unwrap().contains("M L T⁻¹"));
+        } else {
+            assert_eq!(
+                r.units,
+                Units::Consistent,
+                "{}: {:?}",
+                r.location,
+                r.units_detail
+            );
+        }
+    }
+}

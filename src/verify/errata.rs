@@ -1,6 +1,7 @@
 //! `ladder errata`: the note's misprints, each with the residual of the printed form (nonzero)
 //! and of the corrected form (zero) at an exact rational sample point.
 
+use super::units::{erratum_units, ErratumUnits};
 use crate::registry::check::Config;
 use crate::registry::sample::{exact_ladder, particle_system, EXTRA, LADDER_DRAWS, PER_PARTICLE};
 use crate::registry::{equations, Chain, Eval, Role};
@@ -24,6 +25,8 @@ pub struct ErratumReport {
     pub printed_residual_exact: String,
     /// Corrected form minus the reference: exactly zero.
     pub corrected_residual: String,
+    /// The second witness: dimensional analysis of the printed and corrected forms.
+    pub units: ErratumUnits,
 }
 
 fn residuals(chains: &[Chain<Rational>]) -> Option<(Rational, Rational)> {
@@ -87,6 +90,7 @@ pub fn errata(_cfg: &Config) -> Vec<ErratumReport> {
             printed_residual: bad.to_f64(),
             printed_residual_exact: bad.to_string(),
             corrected_residual: good.to_string(),
+            units: erratum_units(&e),
         });
     }
     out

@@ -3,6 +3,7 @@
 pub mod claims;
 pub mod command;
 pub mod errata;
+pub mod units;
 
 use crate::registry::check::{run_check, CheckReport, Config};
 use crate::registry::units::{equation_units, Units};
