@@ -2,7 +2,7 @@
 //!
 //! # Map
 //! * [`scalar`], [`vector`]: the number types every equation is evaluated in (f64 with num-dual
-//!   derivatives, running error bounds, exact rationals, jets, degrees) and 3-vectors over them.
+//!   derivatives, running error bounds, exact rationals, jets, degrees, physical dimensions) and 3-vectors over them.
 //! * [`system`]: systems of particles and moving reference points, Appendix A (29)-(41).
 //! * [`ladder`]: the note's ladder: geometry, energy, forces, torque analyses about A-E and any
 //!   point, Jensen's methods; plus the three-particle model used as the independent reference.

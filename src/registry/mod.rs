@@ -17,6 +17,7 @@ mod milne_eqs;
 pub mod prove;
 pub mod sample;
 pub mod side;
+pub mod units;
 
 pub use latex::printed_latex;
 pub use sample::{LadderSample, ParticleSample};
@@ -24,7 +25,7 @@ pub use side::{corrected, misprint, printed, reference, vector_chains, Chain, Ro
 
 use crate::ladder::floor_phase::Slide;
 use crate::ladder::{Ladder, State};
-use crate::scalar::{Bound, Degree, Rational, Sym};
+use crate::scalar::{Bound, Degree, Dim, Rational, Sym};
 use crate::system::{Point, System};
 use serde::Serialize;
 
@@ -79,6 +80,8 @@ pub struct FloorFns {
     pub degree: FloorChains<Degree>,
     /// In symbolic rational functions (proofs).
     pub symbolic: FloorChains<Sym>,
+    /// In physical dimensions (dimensional analysis).
+    pub units: FloorChains<Dim>,
 }
 
 /// Instantiate a generic floor-phase check.
@@ -91,6 +94,7 @@ macro_rules! floor_fns {
             exact: $f,
             degree: $f,
             symbolic: $f,
+            units: $f,
         }
     };
 }
@@ -108,6 +112,8 @@ pub struct LadderFns {
     pub degree: LadderChains<Degree>,
     /// In symbolic rational functions (proofs).
     pub symbolic: LadderChains<Sym>,
+    /// In physical dimensions (dimensional analysis).
+    pub units: LadderChains<Dim>,
 }
 
 /// A particle-system check instantiated in every scalar type.
@@ -123,6 +129,8 @@ pub struct ParticleFns {
     pub degree: ParticleChains<Degree>,
     /// In symbolic rational functions (proofs).
     pub symbolic: ParticleChains<Sym>,
+    /// In physical dimensions (dimensional analysis).
+    pub units: ParticleChains<Dim>,
 }
 
 /// Instantiate a generic ladder check `fn f<S: Scalar>(&Ladder<S>, &State<S>) -> Vec<Chain<S>>`.
@@ -135,6 +143,7 @@ macro_rules! ladder_fns {
             exact: $f,
             degree: $f,
             symbolic: $f,
+            units: $f,
         }
     };
 }
@@ -149,6 +158,7 @@ macro_rules! particle_fns {
             exact: $f,
             degree: $f,
             symbolic: $f,
+            units: $f,
         }
     };
 }

@@ -11,7 +11,9 @@
 //! * in [`Degree`], which carries no value at all but the degree of the rational function being
 //!   built, so the Schwartz-Zippel bound of every exact check is computed, not guessed, and
 //! * in [`Sym`], exact rational functions of the variables themselves (normal form modulo
-//!   s² + c² = 1, see [`poly`]), so an identity is proved rather than sampled.
+//!   s² + c² = 1, see [`poly`]), so an identity is proved rather than sampled, and
+//! * in [`Dim`], which carries the physical dimension of each value (dimensional analysis: a sum
+//!   of unlike dimensions is recorded as an inconsistency).
 //!
 //! No equation ever takes sin or cos: the ladder state carries sin θ and cos θ, which is what
 //! makes exact evaluation possible.
@@ -21,6 +23,7 @@
 
 mod bound;
 mod degree;
+mod dimension;
 mod jet;
 pub mod poly;
 mod sym_print;
@@ -28,6 +31,7 @@ mod symbolic;
 
 pub use bound::{Bound, UNIT_ROUNDOFF};
 pub use degree::Degree;
+pub use dimension::{Clash, Dim, Dimension, Exponent, Inconsistency};
 pub use jet::Jet;
 pub use sym_print::{latex, text};
 pub use symbolic::{Den, Sym};

@@ -3,6 +3,7 @@
 use super::errata::errata;
 use super::{counts, table, verify_all, EquationResult};
 use crate::registry::check::Config;
+use crate::registry::units::Units;
 use serde_json::json;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -108,10 +109,14 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
     let prose = super::claims::claims();
     let all_good = prose
         .iter()
-        .all(|c| c.holds && c.printed_fails != Some(false));
+        .all(|c| c.holds && c.printed_fails != Some(false))
+        && list
+            .iter()
+            .all(|r| r.units.corrected != Units::Inconsistent);
     if json_out {
         let prose_errata: Vec<_> = prose.iter().filter(|c| c.erratum.is_some()).collect();
-        let out = json!({"errata": list, "prose": prose_errata, "claims": prose});
+        let out = json!({"errata": list, "prose": prose_errata, "claims": prose,
+                         "prose_units": super::units::prose_units()});
         println!(
             "{}",
             serde_json::to_string_pretty(&out).expect("JSON of plain data")
@@ -129,6 +134,7 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
                 "     residual at an exact point: printed {} (= {:.6e}), corrected {}",
                 r.printed_residual_exact, r.printed_residual, r.corrected_residual
             );
+            println!("     {}", r.units.doc_line().trim_start_matches("- "));
         }
         println!("\nclaims made in the prose, checked exactly at three random states:");
         for c in &prose {
@@ -146,6 +152,25 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
             if let Some((printed, corrected)) = c.erratum {
                 println!("  {:<16}   printed: {printed}   corrected: {corrected}", "");
             }
+        }
+    }
+    if !json_out {
+        println!("\nquantities stated in the prose, in dimensions (m: M, l: L, g: L T⁻², θ̇: T⁻¹):");
+        for p in super::units::prose_units() {
+            let detail = p
+                .units_detail
+                .map(|d| format!(" ({d})"))
+                .unwrap_or_default();
+            let fix = p
+                .corrected
+                .map(|c| format!("; corrected {}", c.name()))
+                .unwrap_or_default();
+            println!(
+                "  {:<20} {}: {}{detail}{fix}",
+                p.location,
+                p.stated,
+                p.units.name()
+            );
         }
     }
     if all_good {

@@ -1,6 +1,7 @@
 //! `ladder errata`: the note's misprints, each with the residual of the printed form (nonzero)
 //! and of the corrected form (zero) at an exact rational sample point.
 
+use super::units::{erratum_units, ErratumUnits};
 use crate::registry::check::Config;
 use crate::registry::sample::{exact_ladder, particle_system, EXTRA, LADDER_DRAWS, PER_PARTICLE};
 use crate::registry::{equations, Chain, Eval, Role};
@@ -30,6 +31,8 @@ pub struct ErratumReport {
     pub difference_text: String,
     /// The same difference as LaTeX.
     pub difference_latex: String,
+    /// The second witness: dimensional analysis of the printed and corrected forms.
+    pub units: ErratumUnits,
 }
 
 /// printed − corrected of an equation's erratum, as (text, LaTeX) (see [`ErratumReport`]).
@@ -125,6 +128,7 @@ pub fn errata(_cfg: &Config) -> Vec<ErratumReport> {
             corrected_residual: good.to_string(),
             difference_text,
             difference_latex,
+            units: erratum_units(&e),
         });
     }
     out

@@ -4,8 +4,10 @@ pub mod claims;
 pub mod command;
 pub mod errata;
 pub mod proof;
+pub mod units;
 
 use crate::registry::check::{run_check, CheckReport, Config};
+use crate::registry::units::{equation_units, Units};
 use crate::registry::{equations, Equation, Kind};
 use serde::Serialize;
 
@@ -66,6 +68,11 @@ pub struct EquationResult {
     pub proof: String,
     /// Seconds spent on the symbolic proofs of this equation.
     pub proof_seconds: f64,
+    /// Dimensional analysis of every form ([`crate::registry::units`]).
+    pub units: Units,
+    /// Why `inconsistent` (the clash and where) or `not applicable`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub units_detail: Option<String>,
 }
 
 /// The unit of `max_residual`: |lhs − rhs| divided by the running error bound of the two sides,
@@ -101,6 +108,10 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
             ));
         }
     }
+    // Dimensional analysis: a side that must hold and mixes units is a defect like a residual.
+    let units_found = equation_units(e);
+    problems.extend(units_found.problems.iter().map(|p| format!("units: {p}")));
+    let (units, units_detail) = units_found.verdict();
     let on_shell = reports
         .iter()
         .filter_map(|r| r.off_shell_fails)
@@ -146,6 +157,8 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
         proved: false,
         proof: "not attempted".into(),
         proof_seconds: 0.0,
+        units,
+        units_detail,
     }
 }
 
@@ -219,8 +232,8 @@ pub fn counts(results: &[EquationResult]) -> (usize, usize, usize, usize) {
 pub fn table(results: &[EquationResult]) -> String {
     let mut out = String::new();
     out.push_str(&format!(
-        "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9} {:>6}  {}\n",
-        "eq", "sec", "title", "kind", "checks", "cases", "exact", "res/bound", "proved", "status"
+        "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9} {:>6}  {:<14} {}\n",
+        "eq", "sec", "title", "kind", "checks", "cases", "exact", "res/bound", "proved", "units", "status"
     ));
     for r in results {
         let status = match r.status {
@@ -230,7 +243,7 @@ pub fn table(results: &[EquationResult]) -> String {
             Status::Failed => "FAILED",
         };
         out.push_str(&format!(
-            "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9.3} {:>6}  {}\n",
+            "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9.3} {:>6}  {:<14} {}\n",
             r.label,
             r.section,
             r.title.chars().take(46).collect::<String>(),
@@ -240,10 +253,14 @@ pub fn table(results: &[EquationResult]) -> String {
             if r.exact { "yes" } else { "no" },
             r.max_residual,
             if r.proved { "yes" } else { "no" },
+            r.units.name(),
             status
         ));
         for p in &r.problems {
             out.push_str(&format!("      ! {p}\n"));
+        }
+        if let (Units::Inconsistent, Some(d)) = (r.units, &r.units_detail) {
+            out.push_str(&format!("      units: {d}\n"));
         }
     }
     out

@@ -1,0 +1,203 @@
+//! The errata's second witness: dimensional analysis of each misprint and its correction, and of
+//! the prose claims that state a quantity with units (see [`crate::registry::units`]).
+//!
+//! A misprint the exact check catches by value may also be caught by units alone (a dropped mass
+//! or length leaves terms that cannot be added, or a form of another dimension than the rest of
+//! its chain); one that swaps like for like (θ̇² for θ̈ beside g/l, a dropped term) cannot be.
+
+use crate::ladder::analysis::{angular_momentum_about, AngularMomentum, Reference};
+use crate::ladder::forces::wall_force;
+use crate::ladder::geometry::{corner_position, Corner};
+use crate::ladder::particles::{as_system, external_torque_about};
+use crate::ladder::torque::{angular_momentum_about_a, eq13_moment_of_inertia_about_corner};
+use crate::registry::sample::LadderSample;
+use crate::registry::units::{dimensioned_ladder, equation_units, judge_chains, Units};
+use crate::registry::{corrected, misprint, printed, reference, Equation};
+use crate::scalar::{sq, Dim, Scalar};
+use crate::vector::Vec3;
+use serde::Serialize;
+
+/// Dimensional analysis of one erratum.
+#[derive(Clone, Debug, Serialize)]
+pub struct ErratumUnits {
+    /// The printed form: `inconsistent` when units alone catch the misprint, else `consistent`.
+    pub printed: Units,
+    /// What units see in the printed form (the clash and where), when inconsistent.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub printed_detail: Option<String>,
+    /// The corrected form and every other side: must be `consistent` (or `dimensionless`).
+    pub corrected: Units,
+    /// What went wrong with the corrected form, if anything.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub corrected_detail: Option<String>,
+}
+
+impl ErratumUnits {
+    /// True when units alone would have caught the misprint.
+    pub fn caught_by_units(&self) -> bool {
+        self.printed == Units::Inconsistent
+    }
+    /// The line `equations/ERRATA.md` carries for this erratum (held in step by a test).
+    pub fn doc_line(&self) -> String {
+        let printed = match &self.printed_detail {
+            Some(d) => format!(
+                "printed form inconsistent ({})",
+                d.trim_start_matches("inconsistent: ")
+            ),
+            None => {
+                "printed form consistent (wrong in value only: units alone cannot see it)".into()
+            }
+        };
+        format!(
+            "- units: {printed}; corrected form {}",
+            self.corrected.name()
+        )
+    }
+}
+
+/// The units witness of an erratum's equation.
+pub fn erratum_units(e: &Equation) -> ErratumUnits {
+    let found = equation_units(e);
+    let printed_detail = found.misprints.iter().find_map(|m| m.1.clone());
+    let (corrected, corrected_detail) = match found.problems.first() {
+        Some(p) => (Units::Inconsistent, Some(p.clone())),
+        None => {
+            let mut ok = found.clone();
+            ok.misprints.clear();
+            ok.verdict()
+        }
+    };
+    ErratumUnits {
+        printed: if printed_detail.is_some() {
+            Units::Inconsistent
+        } else {
+            Units::Consistent
+        },
+        printed_detail,
+        corrected,
+        corrected_detail,
+    }
+}
+
+/// Dimensional analysis of one prose claim that states a quantity.
+#[derive(Clone, Debug, Serialize)]
+pub struct ProseUnits {
+    /// Where in the note.
+    pub location: &'static str,
+    /// The quantity as the note states it.
+    pub stated: &'static str,
+    /// The verdict on the stated form (for a prose erratum: on the printed wording).
+    pub units: Units,
+    /// The clash, when inconsistent.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub units_detail: Option<String>,
+    /// For a prose erratum: the verdict on the corrected form.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub corrected: Option<Units>,
+}
+
+/// The prose claims that state a quantity with units, each in dimensions against the quantity it
+/// names (computed by the code's independent route).
+pub fn prose_units() -> Vec<ProseUnits> {
+    let (l, s) = dimensioned_ladder(LadderSample::Kinematic);
+    let (m, len, w) = (l.m.clone(), l.l.clone(), s.rate.clone());
+    let sys = as_system(&l, &s);
+    let l_a = angular_momentum_about_a(&l, &s);
+    // sec. A.5: L = L_A written as −(2/3) m l θ̇ (a prose erratum), corrected −(2/3) m l² θ̇.
+    let la = judge_chains(&[vec![
+        reference("(12): L_A", l_a),
+        misprint(
+            "−(2/3) m l θ̇",
+            -(Dim::ratio(2, 3) * m.clone() * len.clone() * w.clone()),
+        ),
+        corrected(
+            "−(2/3) m l² θ̇",
+            -(Dim::ratio(2, 3) * m.clone() * sq(&len) * w.clone()),
+        ),
+    ]]);
+    // sec. 2.2: the orbital angular momentum of the centre of mass about A is −m l² θ̇.
+    let orbital = sys.centre_of_mass().cross(&sys.cm_velocity().scale(&m)).z;
+    let orbital = judge_chains(&[vec![
+        reference("x_cm × m v_cm of the particles", orbital),
+        printed("−m l² θ̇", -(m.clone() * sq(&len) * w.clone())),
+    ]]);
+    // Footnote 4: F_w = m l sin θ ω² (3 cos θ − 2 cos θ0), ω² = 3g/4l; cos θ0 a pure number.
+    let cos0 = Dim::int(1).require_dimensionless("cos θ0");
+    let f_w = m.clone()
+        * len.clone()
+        * s.sin.clone()
+        * l.omega_squared()
+        * (Dim::int(3) * s.cos.clone() - Dim::int(2) * cos0.clone());
+    let footnote = judge_chains(&[
+        vec![
+            reference("F_w, eq. (14)", wall_force(&l, &s)),
+            printed("m l sin θ ω² (3 cos θ − 2 cos θ0)", f_w),
+        ],
+        vec![
+            reference("cos θ", s.cos.clone()),
+            printed("(2/3) cos θ0", Dim::ratio(2, 3) * cos0),
+        ],
+    ]);
+    // sec. 2.2: L'_C = I_C θ̇.
+    let c = Reference::Corner(Corner::C);
+    let rigid = judge_chains(&[vec![
+        reference(
+            "L'_C of the particles",
+            angular_momentum_about(&c, AngularMomentum::Relative, &l, &s),
+        ),
+        printed(
+            "I_C θ̇",
+            eq13_moment_of_inertia_about_corner(&l)[1].clone() * w,
+        ),
+    ]]);
+    // sec. A.5 (end): τ_A = τ_C + x_C × m a_cm.
+    let x_c = corner_position(Corner::C, &l, &s);
+    let torque = judge_chains(&[vec![
+        reference(
+            "τ_A of the external forces",
+            external_torque_about(&l, &sys, &Vec3::zero()).z,
+        ),
+        printed(
+            "τ_C + x_C × m a_cm",
+            (external_torque_about(&l, &sys, &x_c) + x_c.cross(&sys.cm_acceleration().scale(&m))).z,
+        ),
+    ]]);
+    let row = |location, stated, f: crate::registry::units::UnitsFindings, erratum: bool| {
+        let (units, units_detail) = f.verdict();
+        ProseUnits {
+            location,
+            stated,
+            units,
+            units_detail,
+            corrected: erratum.then(|| {
+                if f.problems.is_empty() {
+                    Units::Consistent
+                } else {
+                    Units::Inconsistent
+                }
+            }),
+        }
+    };
+    vec![
+        row(
+            "sec. 2.1, footnote 4",
+            "F_w = m l sin θ ω² (3 cos θ − 2 cos θ0), zero at cos θ = (2/3) cos θ0",
+            footnote,
+            false,
+        ),
+        row(
+            "sec. 2.2",
+            "x_cm × m v_cm about A = −m l² θ̇",
+            orbital,
+            false,
+        ),
+        row("sec. 2.2", "L'_C = I_C θ̇", rigid, false),
+        row(
+            "sec. A.5",
+            "L = L_A = −(2/3) m l θ̇ (printed; corrected −(2/3) m l² θ̇)",
+            la,
+            true,
+        ),
+        row("sec. A.5 (end)", "τ_A = τ_C + x_C × m a_cm", torque, false),
+    ]
+}

@@ -1,0 +1,220 @@
+//! Dimensional analysis (issue 14): every check of the registry evaluated in physical dimensions.
+//! Verified displays are consistent; the errata that drop a dimensional factor are caught by units
+//! alone and their corrected forms are consistent; a planted slip (a dropped m) is reported.
+
+use sliding_ladder::ladder::torque::angular_momentum_about_a;
+use sliding_ladder::registry::sample::{LadderSample, ParticleSample};
+use sliding_ladder::registry::units::{
+    dimension_chains, dimensioned_ladder, dimensioned_particles, equation_units, judge_chains,
+    Units,
+};
+use sliding_ladder::registry::{equations, extensions, printed, reference, Role};
+use sliding_ladder::scalar::{sq, Dim, Dimension, Scalar};
+
+#[test]
+fn every_display_has_a_units_verdict_and_only_misprints_are_inconsistent() {
+    let mut caught = Vec::new();
+    for e in equations().iter().chain(extensions().iter()) {
+        let found = equation_units(e);
+        assert!(
+            found.problems.is_empty(),
+            "{}: {:?}",
+            e.label(),
+            found.problems
+        );
+        let (units, detail) = found.verdict();
+        match units {
+            Units::Inconsistent => {
+                assert!(
+                    e.erratum.is_some(),
+                    "{} inconsistent: {detail:?}",
+                    e.label()
+                );
+                caught.push(e.number);
+            }
+            Units::NotApplicable => assert!(detail.is_some(), "{} needs a reason", e.label()),
+            Units::Consistent | Units::Dimensionless => {}
+        }
+    }
+    // The three errata that drop or misplace a dimensional factor: (49) a mass in a sum, (62) a
+    // length, (68) a mass. (28) and (54) are wrong in value only.
+    assert_eq!(caught, vec![49, 62, 68]);
+    // The twelve derivations of the equation of motion: residuals and solved θ̈ consistent.
+    for (name, checks) in sliding_ladder::method::methods() {
+        for c in &checks {
+            let found = sliding_ladder::registry::units::check_units(c);
+            assert!(found.problems.is_empty(), "{name}: {:?}", found.problems);
+            assert_eq!(found.verdict().0, Units::Consistent, "{name}");
+        }
+    }
+}
+
+#[test]
+fn the_misprint_of_49_is_named_with_both_dimensions() {
+    let e = equations().into_iter().find(|e| e.number == 49).unwrap();
+    let (units, detail) = equation_units(&e).verdict();
+    assert_eq!(units, Units::Inconsistent);
+    let detail = detail.unwrap();
+    assert!(
+        detail.starts_with("inconsistent: M L² T⁻¹ + L² T⁻¹ in '"),
+        "{detail}"
+    );
+    assert!(detail.contains("(as printed)"), "{detail}");
+}
+
+#[test]
+fn corrected_forms_of_every_erratum_are_consistent() {
+    for e in equations().iter().filter(|e| e.erratum.is_some()) {
+        let mut corrected = 0;
+        for c in &e.checks {
+            for chain in dimension_chains(c) {
+                let base = chain
+                    .iter()
+                    .find(|s| s.role == Role::Reference)
+                    .and_then(|s| s.value.dimension());
+                for s in chain.iter().filter(|s| s.role == Role::Corrected) {
+                    corrected += 1;
+                    assert!(
+                        s.value.inconsistency().is_none(),
+                        "({}) {}",
+                        e.number,
+                        s.label
+                    );
+                    if let (Some(b), Some(d)) = (base, s.value.dimension()) {
+                        assert_eq!(b, d, "({}) {}", e.number, s.label);
+                    }
+                }
+            }
+        }
+        assert!(corrected > 0, "({}) has no corrected side", e.number);
+    }
+}
+
+/// A planted slip: (12)'s L_A = −2ml²θ̇/3 with the m dropped, as a side beside the reference,
+/// and as a sum with the correct form. Both are reported; the unplanted chain is consistent.
+#[test]
+fn a_dropped_mass_is_reported() {
+    let (l, s) = dimensioned_ladder(LadderSample::Kinematic);
+    let right = angular_momentum_about_a(&l, &s);
+    let dropped = -(Dim::ratio(2, 3) * sq(&l.l) * s.rate.clone());
+    let good = judge_chains(&[vec![
+        reference("L_A", right.clone()),
+        printed("−2ml²θ̇/3", right.clone()),
+    ]]);
+    assert!(good.problems.is_empty());
+    assert_eq!(good.verdict().0, Units::Consistent);
+    let side = judge_chains(&[vec![
+        reference("L_A", right.clone()),
+        printed("−2l²θ̇/3", dropped.clone()),
+    ]]);
+    assert_eq!(
+        side.problems,
+        vec!["'−2l²θ̇/3' has dimension L² T⁻¹, 'L_A' has M L² T⁻¹".to_string()]
+    );
+    let sum = judge_chains(&[vec![
+        reference("L_A", right.clone() + right.clone()),
+        printed("−2ml²θ̇/3 − 2l²θ̇/3", right + dropped),
+    ]]);
+    assert_eq!(sum.verdict().0, Units::Inconsistent);
+    assert_eq!(
+        sum.problems,
+        vec!["inconsistent: M L² T⁻¹ + L² T⁻¹ in '−2ml²θ̇/3 − 2l²θ̇/3'".to_string()]
+    );
+}
+
+/// Perturbing any sample's dimension is caught: a ladder with g of dimension L T⁻¹ makes the
+/// equation of motion (5) inconsistent.
+#[test]
+fn a_wrong_dimension_of_g_is_caught_by_the_equation_of_motion() {
+    let e5 = equations().into_iter().find(|e| e.number == 5).unwrap();
+    let (mut l, s) = dimensioned_ladder(LadderSample::Kinematic);
+    l.g = Dim::new(0, 1, -1);
+    let s = s.with_accel(sliding_ladder::ladder::energy::angular_acceleration(&l, &s));
+    let sliding_ladder::registry::Eval::Ladder(_, f) = e5.checks[0].eval else {
+        panic!("(5) is a ladder check")
+    };
+    assert!(!judge_chains(&(f.units)(&l, &s)).problems.is_empty());
+}
+
+#[test]
+fn dimensioned_samples_have_the_physical_dimensions() {
+    let (l, s) = dimensioned_ladder(LadderSample::OnShellFromRest);
+    assert_eq!(l.g, Dim::new(0, 1, -2), "g solved from the energy");
+    assert_eq!(s.accel, Dim::new(0, 0, -2), "θ̈ from (5)");
+    assert_eq!(s.sin, Dim::int(1));
+    for sort in [
+        ParticleSample::General,
+        ParticleSample::TorqueFree,
+        ParticleSample::PlanarRigid,
+    ] {
+        let (sys, p) = dimensioned_particles(sort, 2);
+        let q = &sys.particles[1];
+        assert_eq!(q.m, Dim::Of(Dimension::MASS));
+        assert_eq!(q.x.x, Dim::new(0, 1, 0));
+        assert_eq!(q.v.y, Dim::new(0, 1, -1));
+        assert_eq!(q.a.x, Dim::new(0, 1, -2), "{sort:?}");
+        assert_eq!(p.x.x, Dim::new(0, 1, 0));
+    }
+}
+
+#[test]
+fn a_chain_of_pure_numbers_is_dimensionless_and_of_zeros_not_applicable() {
+    let pure = judge_chains(&[vec![
+        printed("cos θ", Dim::int(1)),
+        reference("2/3", Dim::ratio(2, 3)),
+    ]]);
+    assert_eq!(pure.verdict().0, Units::Dimensionless);
+    let zeros = judge_chains(&[vec![printed("0", Dim::int(0)), reference("0", Dim::int(0))]]);
+    assert_eq!(zeros.verdict().0, Units::NotApplicable);
+    assert_eq!(judge_chains(&[]).verdict().0, Units::NotApplicable);
+}
+
+#[test]
+fn errata_md_carries_the_units_witness_of_every_erratum() {
+    use sliding_ladder::verify::units::erratum_units;
+    let page = std::fs::read_to_string(sliding_ladder::docs::default_dir().join("ERRATA.md"))
+        .expect("equations/ERRATA.md");
+    let mut caught = Vec::new();
+    for e in equations().iter().filter(|e| e.erratum.is_some()) {
+        let u = erratum_units(e);
+        assert_ne!(
+            u.corrected,
+            Units::Inconsistent,
+            "({}): {:?}",
+            e.number,
+            u.corrected_detail
+        );
+        assert!(
+            page.contains(&format!("{}\n", u.doc_line())),
+            "({}) ERRATA.md lacks the line\n{}",
+            e.number,
+            u.doc_line()
+        );
+        if u.caught_by_units() {
+            caught.push(e.number);
+        }
+    }
+    assert_eq!(caught, vec![49, 62, 68]);
+}
+
+#[test]
+fn prose_quantities_have_consistent_units_except_the_a5_slip() {
+    use sliding_ladder::verify::units::prose_units;
+    let rows = prose_units();
+    assert!(rows.len() >= 5);
+    for r in &rows {
+        if r.location == "sec. A.5" {
+            assert_eq!(r.units, Units::Inconsistent);
+            assert_eq!(r.corrected, Some(Units::Consistent));
+            assert!(r.units_detail.as_deref().unwrap().contains("M L T⁻¹"));
+        } else {
+            assert_eq!(
+                r.units,
+                Units::Consistent,
+                "{}: {:?}",
+                r.location,
+                r.units_detail
+            );
+        }
+    }
+}
