@@ -20,6 +20,7 @@ pub mod docs;
 pub mod ladder;
 pub mod method;
 pub mod milne;
+pub mod print;
 pub mod registry;
 pub mod report;
 pub mod scalar;

@@ -144,7 +144,7 @@ fn residual_degree(chains: &[Chain<Degree>]) -> u32 {
     d
 }
 
-fn exact_ladder_draw(rng: &mut impl Rng) -> [Rational; LADDER_DRAWS] {
+pub(crate) fn exact_ladder_draw(rng: &mut impl Rng) -> [Rational; LADDER_DRAWS] {
     let big = 1i64 << 62;
     let mut signed_nonzero = || loop {
         let v = rng.gen_range(-big..=big);
@@ -160,7 +160,7 @@ fn exact_ladder_draw(rng: &mut impl Rng) -> [Rational; LADDER_DRAWS] {
     [t, m, l, g, rate, accel, jerk].map(Rational::int)
 }
 
-fn exact_particle_draw(rng: &mut impl Rng) -> (usize, Vec<Rational>) {
+pub(crate) fn exact_particle_draw(rng: &mut impl Rng) -> (usize, Vec<Rational>) {
     let big = 1i64 << 62;
     let n = rng.gen_range(1..=8);
     let values = (0..n * PER_PARTICLE + EXTRA)

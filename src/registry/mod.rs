@@ -14,6 +14,7 @@ mod jensen_eqs;
 mod ladder_eqs;
 mod latex;
 mod milne_eqs;
+pub mod print_check;
 pub mod prove;
 pub mod sample;
 pub mod side;

@@ -25,7 +25,8 @@ pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
             "summary": {"verified": v, "erratum": e, "definition": d, "failed": f,
                          "proved": proved, "sampled_only": sampled_only, "proof_seconds": proof_seconds,
                          "float_cases_per_check": cfg.float_cases, "exact_points_per_check": cfg.exact_points,
-                         "seed": cfg.seed, "seconds": seconds},
+                         "seed": cfg.seed, "seconds": seconds,
+                         "print": print_summary(&results)},
             "docs": {"problems": docs.problems, "sections": docs.equations_found, "examples_run": docs.examples_run},
             "methods": methods,
             "extensions": extensions,
@@ -37,6 +38,10 @@ pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
     } else {
         print!("{}", table(&results));
         println!("{}", summary_line(&results, cfg, seconds));
+        let (pd, nd, pf, nf, pm) = super::print_coverage(&results);
+        println!(
+            "print: {pd} of {nd} displays parsed in full, {pf} of {nf} printed forms parsed and checked, {pm} displays with every Rust form matching the print (equations/symbols.toml)"
+        );
         println!("beyond the note: the floor phase after the ladder leaves the wall (equations/phase2.md)");
         print!(
             "{}",
@@ -71,6 +76,11 @@ pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
     } else {
         ExitCode::from(1)
     }
+}
+
+fn print_summary(results: &[EquationResult]) -> serde_json::Value {
+    let (pd, nd, pf, nf, pm) = super::print_coverage(results);
+    json!({"displays_parsed": pd, "displays": nd, "forms_parsed": pf, "forms": nf, "displays_matching_code": pm})
 }
 
 /// One line: the counts and the work done.

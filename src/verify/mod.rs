@@ -73,6 +73,17 @@ pub struct EquationResult {
     /// Why `inconsistent` (the clash and where) or `not applicable`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub units_detail: Option<String>,
+    /// Forms in the display's print (issue 9; 0 for an extension beyond the note).
+    pub print_forms: usize,
+    /// Forms of the print parsed and evaluated.
+    pub print_parsed: usize,
+    /// Forms of the print held against another printed form.
+    pub print_checked: usize,
+    /// Every Rust form equals a parsed printed form (misprints included).
+    pub print_matches_code: bool,
+    /// Why forms of the print were not parsed or evaluated.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub print_unparsed: Vec<String>,
 }
 
 /// The unit of `max_residual`: |lhs − rhs| divided by the running error bound of the two sides,
@@ -159,6 +170,11 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
         proof_seconds: 0.0,
         units,
         units_detail,
+        print_forms: 0,
+        print_parsed: 0,
+        print_checked: 0,
+        print_matches_code: false,
+        print_unparsed: Vec::new(),
     }
 }
 
@@ -172,6 +188,43 @@ pub fn add_proof(r: &mut EquationResult, e: &Equation) {
     r.proved = v.proved;
     r.proof = v.proof;
     r.proof_seconds = v.seconds;
+
+/// Judge an equation and its print: the print's failures become the equation's problems.
+pub fn judge_with_print(e: &Equation, reports: &[CheckReport], cfg: &Config) -> EquationResult {
+    let r = judge(e, reports);
+    if e.number > crate::registry::EXTENSION_BASE {
+        return r;
+    }
+    judge_print(r, e, e.latex(), cfg)
+}
+
+/// Add the verdict on a display's print (given as LaTeX) to an equation's result.
+pub fn judge_print(
+    mut r: EquationResult,
+    e: &Equation,
+    latex: &str,
+    cfg: &Config,
+) -> EquationResult {
+    let p = crate::registry::print_check::check_print(e, latex, cfg);
+    r.print_forms = p.forms;
+    r.print_parsed = p.parsed;
+    r.print_checked = p.checked;
+    r.print_matches_code = p.matches_code;
+    r.print_unparsed = p.unparsed.clone();
+    // Every display of the note parses today: a form that no longer parses or evaluates is a
+    // defect of the print's copy (or of the symbol table), so it fails the display.
+    let unparsed = p.unparsed.iter().map(|u| format!("print not parsed: {u}"));
+    // A Rust form that equals no printed form disagrees with the print.
+    let code = p
+        .code_mismatches
+        .iter()
+        .map(|c| format!("print vs code: {c}"));
+    let problems: Vec<String> = p.problems.into_iter().chain(unparsed).chain(code).collect();
+    if !problems.is_empty() {
+        r.problems.extend(problems);
+        r.status = Status::Failed;
+    }
+    r
 }
 
 /// Run every check of every equation (on two threads) and judge each equation.
@@ -194,12 +247,13 @@ fn verify_list(eqs: Vec<Equation>, cfg: &Config) -> Vec<EquationResult> {
                         .skip(w)
                         .step_by(2)
                         .map(|e| {
-                            let mut r = judge(
+                            let mut r = judge_with_print(
                                 e,
                                 &e.checks
                                     .iter()
                                     .map(|c| run_check(c, cfg))
                                     .collect::<Vec<_>>(),
+                                cfg,
                             );
                             add_proof(&mut r, e);
                             r
@@ -215,6 +269,21 @@ fn verify_list(eqs: Vec<Equation>, cfg: &Config) -> Vec<EquationResult> {
     });
     results.sort_by_key(|r| r.number);
     results
+}
+
+/// Print coverage: (displays fully parsed, displays, forms parsed, forms, displays whose Rust
+/// forms all match the print).
+pub fn print_coverage(results: &[EquationResult]) -> (usize, usize, usize, usize, usize) {
+    let note: Vec<_> = results.iter().filter(|r| r.print_forms > 0).collect();
+    (
+        note.iter()
+            .filter(|r| r.print_parsed == r.print_forms)
+            .count(),
+        note.len(),
+        note.iter().map(|r| r.print_parsed).sum(),
+        note.iter().map(|r| r.print_forms).sum(),
+        note.iter().filter(|r| r.print_matches_code).count(),
+    )
 }
 
 /// Counts of each verdict: (verified, erratum, definition, failed).
@@ -242,8 +311,18 @@ pub fn table(results: &[EquationResult]) -> String {
             Status::Definition => "definition",
             Status::Failed => "FAILED",
         };
+        let print = if r.print_forms > 0 {
+            format!(
+                "  print {}/{}{}",
+                r.print_parsed,
+                r.print_forms,
+                if r.print_matches_code { "" } else { " (code?)" }
+            )
+        } else {
+            String::new()
+        };
         out.push_str(&format!(
-            "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9.3} {:>6}  {:<14} {}\n",
+            "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9.3} {:>6}  {:<14} {}{}\n",
             r.label,
             r.section,
             r.title.chars().take(46).collect::<String>(),
@@ -254,8 +333,12 @@ pub fn table(results: &[EquationResult]) -> String {
             r.max_residual,
             if r.proved { "yes" } else { "no" },
             r.units.name(),
-            status
+            status,
+            print
         ));
+        for u in &r.print_unparsed {
+            out.push_str(&format!("      · print: {u}\n"));
+        }
         for p in &r.problems {
             out.push_str(&format!("      ! {p}\n"));
         }

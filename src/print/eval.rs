@@ -1,0 +1,226 @@
+//! Evaluating a parsed form in any [`Scalar`], against the project's independent models.
+//!
+//! Symbols resolve through the symbol table to quantities of the three-particle ladder or of a
+//! general particle system ([`super::quantity`]), never to the formula being checked. `d/dt`
+//! evaluates its operand on the context lifted along the motion and reads the ε part; ∂/∂θ and
+//! ∂/∂θ̇ lift only that variable. A dotted symbol without an entry of its own is the time
+//! derivative of the undotted one. No sin or cos is ever taken: `\sin\theta` is the state's
+//! carried sin θ.
+//!
+//! Derivatives nest through the type parameter `D` ([`Depth`]): evaluating in `S` at depth `D`
+//! evaluates a derivative's operand in `S::Dual` at `D::Next`. The chain stops at depth 3 with an
+//! error, which keeps the instantiation finite (an unbounded `eval::<S>` → `eval::<S::Dual>` would
+//! not compile); (4) needs depth 2.
+
+use super::ast::Expr;
+use super::quantity::{eps, resolve, Model, Value};
+use super::symbols::{lookup, Entry};
+use crate::scalar::Scalar;
+use crate::vector::Vec3;
+
+/// Where a form is evaluated.
+pub struct Ctx<'t, S: Scalar> {
+    /// The model the symbols resolve in.
+    pub model: std::rc::Rc<Model<S>>,
+    /// The section of the display (chooses the meaning of reused symbols).
+    pub section: &'t str,
+    /// The display's number (for equation-specific symbol entries).
+    pub number: u32,
+    /// True in Milne's part of the display.
+    pub milne: bool,
+    /// The particle a Σ is at.
+    pub index: Option<usize>,
+    /// The symbol table.
+    pub table: &'t [Entry],
+}
+
+/// How to lift a context for a derivative.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Lift {
+    /// Along the motion (d/dt).
+    Motion,
+    /// θ alone (∂/∂θ).
+    Angle,
+    /// θ̇ alone (∂/∂θ̇).
+    Rate,
+}
+
+impl<'t, S: Scalar> Ctx<'t, S> {
+    fn lifted(&self, how: Lift) -> Result<Ctx<'t, S::Dual>, String> {
+        Ok(Ctx {
+            model: std::rc::Rc::new(self.model.lifted(how)?),
+            section: self.section,
+            number: self.number,
+            milne: self.milne,
+            index: self.index,
+            table: self.table,
+        })
+    }
+    fn at(&self, index: usize) -> Ctx<'t, S> {
+        Ctx {
+            model: self.model.clone(),
+            section: self.section,
+            number: self.number,
+            milne: self.milne,
+            index: Some(index),
+            table: self.table,
+        }
+    }
+}
+
+/// Derivative depth: evaluates a derivative's operand one dual level up.
+pub trait Depth {
+    /// Evaluate `e` in the lifted context and return its ε part.
+    fn derive<S: Scalar>(e: &Expr, ctx: &Ctx<S>, how: Lift) -> Result<Value<S>, String>;
+}
+
+macro_rules! depth {
+    ($d:ident, $next:ident) => {
+        /// A derivative depth.
+        pub struct $d;
+        impl Depth for $d {
+            fn derive<S: Scalar>(e: &Expr, ctx: &Ctx<S>, how: Lift) -> Result<Value<S>, String> {
+                let lifted = ctx.lifted(how)?;
+                Ok(eps::<S>(eval::<S::Dual, $next>(e, &lifted)?))
+            }
+        }
+    };
+}
+depth!(D0, D1);
+depth!(D1, D2);
+depth!(D2, D3);
+/// The deepest level: no further derivative.
+pub struct D3;
+impl Depth for D3 {
+    fn derive<S: Scalar>(_: &Expr, _: &Ctx<S>, _: Lift) -> Result<Value<S>, String> {
+        Err("derivatives nested deeper than three".into())
+    }
+}
+
+/// Evaluate a form at depth 0.
+pub fn evaluate<S: Scalar>(e: &Expr, ctx: &Ctx<S>) -> Result<Value<S>, String> {
+    eval::<S, D0>(e, ctx)
+}
+
+/// Evaluate a form.
+pub fn eval<S: Scalar, D: Depth>(e: &Expr, ctx: &Ctx<S>) -> Result<Value<S>, String> {
+    use Value::{Scalar as Sc, Vector as Ve};
+    let ev = |x: &Expr| eval::<S, D>(x, ctx);
+    Ok(match e {
+        Expr::Int(n) => Sc(S::int(*n)),
+        Expr::Sym(k) => symbol::<S, D>(k, ctx)?,
+        Expr::Const => return Err("\\text{const} is only a right side of '='".into()),
+        Expr::Neg(a) => ev(a)?.neg(),
+        Expr::Add(a, b) => ev(a)?.add(ev(b)?)?,
+        Expr::Sub(a, b) => ev(a)?.add(ev(b)?.neg())?,
+        Expr::Mul(a, b) => ev(a)?.mul(ev(b)?)?,
+        Expr::Div(a, b) => match (ev(a)?, ev(b)?) {
+            (Sc(x), Sc(y)) => Sc(x / y),
+            (Ve(x), Sc(y)) => Ve(x.div(&y)),
+            _ => return Err("division by a vector".into()),
+        },
+        Expr::Pow(a, n) => match ev(a)? {
+            Sc(x) => Sc((1..*n).fold(x.clone(), |acc, _| acc * x.clone())),
+            Ve(v) if *n == 2 => Sc(v.dot(&v)),
+            Ve(_) => return Err("a vector to a power other than 2".into()),
+        },
+        Expr::Cross(a, b) => match (ev(a)?, ev(b)?) {
+            (Ve(x), Ve(y)) => Ve(x.cross(&y)),
+            _ => return Err("× of a scalar".into()),
+        },
+        Expr::Sin(a) | Expr::Cos(a) => {
+            let is_angle =
+                matches!(&**a, Expr::Sym(k) if quantity_of(k, ctx).as_deref() == Some("theta"));
+            if !is_angle {
+                return Err("sin/cos of anything but θ".into());
+            }
+            let sin = matches!(e, Expr::Sin(_));
+            ctx.model.trig(sin)?
+        }
+        Expr::Tuple(items) => {
+            let mut c = Vec::new();
+            for it in items {
+                match ev(it)? {
+                    Sc(x) => c.push(x),
+                    Ve(_) => return Err("a vector inside a tuple".into()),
+                }
+            }
+            match c.len() {
+                2 => Ve(Vec3::planar(c[0].clone(), c[1].clone())),
+                3 => Ve(Vec3::new(c[0].clone(), c[1].clone(), c[2].clone())),
+                _ => return Err("a tuple of other than 2 or 3 components".into()),
+            }
+        }
+        Expr::Sum(a) => {
+            let n = ctx.model.particle_count()?;
+            let mut acc: Option<Value<S>> = None;
+            for i in 0..n {
+                let v = eval::<S, D>(a, &ctx.at(i))?;
+                acc = Some(match acc {
+                    None => v,
+                    Some(s) => s.add(v)?,
+                });
+            }
+            acc.ok_or("a sum over no particles")?
+        }
+        Expr::Deriv(a) => D::derive(a, ctx, Lift::Motion)?,
+        Expr::Partial(a, wrt) => {
+            let how = match quantity_of(wrt, ctx).as_deref() {
+                Some("theta") => Lift::Angle,
+                Some("theta_rate") => Lift::Rate,
+                _ => return Err(format!("∂/∂{wrt} is not supported")),
+            };
+            D::derive(a, ctx, how)?
+        }
+        Expr::ZComp(a) => match ev(a)? {
+            Ve(v) => Sc(v.z),
+            Sc(_) => return Err("|_z of a scalar".into()),
+        },
+        Expr::At(a, _) => ev(a)?,
+    })
+}
+
+fn quantity_of<S: Scalar>(key: &str, ctx: &Ctx<S>) -> Option<String> {
+    lookup(ctx.table, key, ctx.section, ctx.number, ctx.milne).map(|e| e.quantity.clone())
+}
+
+/// A symbol: its entry's quantity; else, for `\dot{X}` / `\ddot{X}`, the time derivative of X.
+fn symbol<S: Scalar, D: Depth>(key: &str, ctx: &Ctx<S>) -> Result<Value<S>, String> {
+    if let Some(q) = quantity_of(key, ctx) {
+        return resolve(&q, ctx.index, &ctx.model);
+    }
+    for (accent, inner) in [("\\dot{", 1), ("\\ddot{", 2)] {
+        if let Some(rest) = key.strip_prefix(accent) {
+            // `\dot{X}_{sub}`: the base is `X_{sub}`.
+            if let Some(close) = matching_brace(rest) {
+                let base = format!("{}{}", &rest[..close], &rest[close + 1..]);
+                let mut e = Expr::Sym(base);
+                for _ in 0..inner {
+                    e = Expr::Deriv(Box::new(e));
+                }
+                return eval::<S, D>(&e, ctx);
+            }
+        }
+    }
+    Err(format!(
+        "symbol {key} is not in the symbol table for sec. {}",
+        ctx.section
+    ))
+}
+
+fn matching_brace(s: &str) -> Option<usize> {
+    let mut depth = 1;
+    for (i, c) in s.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(i);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}
