@@ -97,11 +97,11 @@ pub fn worked_example(number: u32) -> Result<String, String> {
     let mut out = String::new();
     out.push_str(&format!(
         "**Worked example** (generated from the code, `docs::worked`): m = {m} kg, l = {l} m, \
-         g = {g} m/s², θ = {deg}°, released from rest upright, so θ̇ = {} s⁻¹ by (10). On the \
-         motion θ̈ = {} s⁻² by (5); off it, the same θ and θ̇ with θ̈ = 0. The law is the {} `=` of \
+         g = {g} m/s², θ = {deg}°, released from rest upright, so θ̇ = {:.3} s⁻¹ by (10). On the \
+         motion θ̈ = {:.3} s⁻² by (5); off it, the same θ and θ̇ with θ̈ = 0. The law is the {} `=` of \
          the display: {}.\n\n",
-        format!("{:.3}", on.rate),
-        format!("{:.3}", on.accel),
+        on.rate,
+        on.accel,
         crate::docs::ordinal(law.step),
         law.statement
     ));
