@@ -1,12 +1,12 @@
 //! Cost of the exact phase-one solution: `PhaseOne::new` + `separation()` for several starts,
 //! `separation()` alone, θ(t), t(θ); and, as a peer in the same run, the textbook separation
-//! time F(ψ_s|m)/ω from `ellip::ellipf` for a start from rest (which loses digits near the
+//! time F(ψ_s|m)/Ω from `ellip::ellipf` for a start from rest (which loses digits near the
 //! separatrix, see src/sim/exact/mod.rs). Run: `cargo bench --bench exact`.
 use criterion::{criterion_group, criterion_main, Criterion};
 use sliding_ladder::sim::exact::PhaseOne;
 use std::hint::black_box;
 
-/// (label, θ₀, θ̇₀, ω²)
+/// (label, θ₀, θ̇₀, Ω²)
 const STARTS: [(&str, f64, f64, f64); 6] = [
     ("rest_0.3", 0.3, 0.0, 1.0),
     ("rest_1e-12", 1e-12, 0.0, 1.0),

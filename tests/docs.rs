@@ -115,3 +115,101 @@ fn a_missing_directory_is_a_problem_not_a_panic() {
     assert_eq!(rep.problems.len(), 1);
     assert!(rep.problems[0].contains("cannot read the directory"));
 }
+
+#[test]
+fn a_stated_figure_that_drifted_from_the_code_is_reported() {
+    use sliding_ladder::docs::facts::{check_facts, facts};
+    let good = std::fs::read_to_string(default_dir().join("README.md")).expect("README");
+    let mut problems = Vec::new();
+    check_facts(&default_dir(), &facts(), &mut problems);
+    assert!(problems.is_empty(), "{problems:?}");
+    // The same page with the old figure (200 states) must be caught, naming the file.
+    let stale = good.replace(
+        "1000 random states per check",
+        "200 random states per check",
+    );
+    assert_ne!(stale, good, "the phrase is not on the page");
+    let dir = scratch("facts", &[("README.md", stale)]);
+    let mut problems = Vec::new();
+    check_facts(&dir, &facts(), &mut problems);
+    assert_eq!(problems.len(), 1, "{problems:?}");
+    assert!(problems[0].contains("README.md") && problems[0].contains("1000 random states"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The ASCII figure of equations/README.md: E stands directly above D (the rectangle A-D-E-C),
+/// C directly above A, and θ is marked at C, between the wall and the ladder.
+#[test]
+fn the_figure_puts_e_above_d_and_theta_at_c() {
+    let text = std::fs::read_to_string(default_dir().join("README.md")).expect("README");
+    let start = text.find("```\n y\n").expect("the figure");
+    let fig: Vec<&str> = text[start + 4..]
+        .lines()
+        .take_while(|l| !l.starts_with("```"))
+        .collect();
+    // Column (in characters) of the first occurrence of `pat` in the row that starts the point.
+    let at = |row: &str, pat: char| row.chars().position(|c| c == pat);
+    let row_of = |lead: &str| {
+        fig.iter()
+            .position(|r| r.starts_with(lead))
+            .unwrap_or_else(|| panic!("no row starting {lead:?}"))
+    };
+    let (top, bottom) = (fig[row_of(" C")], fig[row_of(" A")]);
+    assert_eq!(at(top, 'C'), at(bottom, 'A'), "C is not above A");
+    assert_eq!(at(top, 'E'), at(bottom, 'D'), "E is not above D");
+    // θ sits in the wedge just below C: right of the wall, left of the ladder's stroke.
+    let wedge = fig[row_of(" C") + 1..row_of(" C") + 3].iter().any(|row| {
+        let (wall, theta, stroke) = (at(row, '|'), at(row, 'θ'), at(row, '\\'));
+        theta.is_some() && wall < theta && theta < stroke
+    });
+    assert!(wedge, "θ is not at C between the wall and the ladder");
+}
+
+/// `LADDER_BLESS_DOCS=1 cargo test --test docs` rewrites the generated worked examples of the
+/// book after a deliberate change of the code; without it this only checks that blessing is a
+/// no-op on the committed book (so the committed text is exactly what the code generates).
+#[test]
+fn worked_examples_are_what_the_code_generates() {
+    use sliding_ladder::docs::worked::{bless, blocks};
+    let mut found = 0;
+    for f in [
+        "02-point-a.md",
+        "03-point-b.md",
+        "04-point-c.md",
+        "05-point-d.md",
+        "06-point-e.md",
+    ] {
+        let path = default_dir().join(f);
+        let text = std::fs::read_to_string(&path).expect("section file");
+        let fresh = bless(&text).expect("every block regenerates");
+        if std::env::var_os("LADDER_BLESS_DOCS").is_some() {
+            std::fs::write(&path, &fresh).expect("write");
+        } else {
+            assert_eq!(
+                fresh, text,
+                "{f}: run LADDER_BLESS_DOCS=1 cargo test --test docs"
+            );
+        }
+        found += blocks(&fresh).len();
+    }
+    assert_eq!(found, 5, "one worked example per torque-analysis section");
+}
+
+/// The harness reports a worked example whose numbers no longer match the code.
+#[test]
+fn a_stale_worked_example_is_reported() {
+    let path = default_dir().join("05-point-d.md");
+    let text = std::fs::read_to_string(&path).expect("05-point-d.md");
+    let stale = text.replacen("4.9050 N·m", "4.9060 N·m", 1);
+    assert_ne!(stale, text, "the example states 4.9050 N·m");
+    let dir = scratch("stale-worked", &[("05-point-d.md", stale)]);
+    let rep = check_book(&dir);
+    assert!(
+        rep.problems
+            .iter()
+            .any(|p| p.contains("05-point-d.md:") && p.contains("worked example of (25)")),
+        "{:?}",
+        rep.problems
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -1,6 +1,6 @@
-//! θ(t) of the exact phase-one solution obeys eq. (5), θ̈ = ω² sin θ, and the energy integral:
+//! θ(t) of the exact phase-one solution obeys eq. (5), θ̈ = Ω² sin θ, and the energy integral:
 //! derivatives come from automatic differentiation (num_dual) of the closed form itself, so no
-//! derivative is transcribed by hand. A perturbed ω or modulus must fail the same checks.
+//! derivative is transcribed by hand. A perturbed Ω or modulus must fail the same checks.
 mod exact_common;
 use exact_common::{input_condition, SEPARATION, U};
 use num_dual::{Dual, Dual64};
@@ -13,12 +13,12 @@ use sliding_ladder::sim::exact::PhaseOne;
 const C: f64 = 38.0;
 
 /// Largest residual/tolerance over the checks of one motion at times t = frac·t_s.
-/// `omega2` is the ω² the checks believe in (the motion may have been built with another).
+/// `omega2` is the Ω² the checks believe in (the motion may have been built with another).
 fn worst_ratio(p: &PhaseOne, omega2: f64, t_end: f64) -> f64 {
     let (theta0, rate0) = (p.theta0(), p.rate0());
     // Initial conditions: with eq. (5) they fix the solution. The start phase is an R_F value
-    // of relative error ≤ C·u, i.e. a time shift ≤ C·u·2K/ω (none on the separatrix, where
-    // the formula has no phase), plus the start's own condition κu/ω.
+    // of relative error ≤ C·u, i.e. a time shift ≤ C·u·2K/Ω (none on the separatrix, where
+    // the formula has no phase), plus the start's own condition κu/Ω.
     let omega = omega2.sqrt();
     let k = p.quarter_period();
     let shift = if k.is_finite() {
@@ -39,14 +39,14 @@ fn worst_ratio(p: &PhaseOne, omega2: f64, t_end: f64) -> f64 {
         let accel = omega2 * theta.sin();
         // dθ/dt from the angle formula against the separate rate formula.
         let r1 = (th.eps - rate).abs() / (C * U * rate.max(f64::MIN_POSITIVE));
-        // Eq. (5) on the rate formula: dθ̇/dt = ω² sin θ; δθ moves sin θ by cos θ δθ.
+        // Eq. (5) on the rate formula: dθ̇/dt = Ω² sin θ; δθ moves sin θ by cos θ δθ.
         let scale = C * U * (accel + omega2 * theta * theta.cos());
         let r2 = (rt.eps - accel).abs() / scale;
         // Eq. (5) on the angle formula alone, by nested duals: d²θ/dt².
         let t2 = Dual::new(Dual64::new(t, 1.0), Dual64::new(1.0, 0.0));
         let (th2, _) = p.theta_rate_dual(t2);
         let r3 = (th2.eps.eps - accel).abs() / scale;
-        // Energy: θ̇² = θ̇₀² + 2ω²(cos θ₀ − cos θ), the difference of cosines as a product.
+        // Energy: θ̇² = θ̇₀² + 2Ω²(cos θ₀ − cos θ), the difference of cosines as a product.
         let drop = 4.0 * omega2 * (0.5 * (theta - theta0)).sin() * (0.5 * (theta + theta0)).sin();
         let residual = rate * rate - rate0 * rate0 - drop;
         let tol = C * U * (2.0 * rate * rate + 2.0 * omega2 * theta * theta.sin())
@@ -70,7 +70,7 @@ fn closed_form_obeys_equation_of_motion_and_energy() {
         assert!(ratio <= 1.0, "{row:?}: residual/tolerance = {ratio}");
         worst = worst.max(ratio);
     }
-    // The separatrix itself (a = 0 exactly): sin(θ₀/2) = θ̇₀/(2ω) with ω = 1.
+    // The separatrix itself (a = 0 exactly): sin(θ₀/2) = θ̇₀/(2Ω) with Ω = 1.
     let theta0 = 0.4f64;
     let rate0 = 2.0 * (0.5 * theta0).sin();
     let p = PhaseOne::new(theta0, rate0, 1.0).unwrap();
@@ -88,7 +88,7 @@ fn equation_of_motion_check_fails_for_wrong_omega() {
         let p = PhaseOne::new(row[0], row[1], omega2).unwrap();
         assert!(
             worst_ratio(&p, row[2], row[4]) > 1.0,
-            "ω(1 + 1e-9) passed for {row:?}"
+            "Ω(1 + 1e-9) passed for {row:?}"
         );
     }
 }

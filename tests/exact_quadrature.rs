@@ -1,7 +1,7 @@
 //! The closed-form times of the exact phase-one solution against an independent quadrature of
 //! t(θ) = ∫ dθ/θ̇ written here: tanh-sinh (double-exponential) on the offset d = θ − θ₀, which
 //! absorbs the 1/√d endpoint singularity of a start from rest and the 1/d stretch of a start
-//! near the separatrix, with θ̇² = θ̇₀² + 2ω²(cos θ₀ − cos θ) straight from the energy integral.
+//! near the separatrix, with θ̇² = θ̇₀² + 2Ω²(cos θ₀ − cos θ) straight from the energy integral.
 mod exact_common;
 use exact_common::{input_condition, SEPARATION, U};
 use rand::{Rng, SeedableRng};
@@ -91,7 +91,7 @@ fn quadrature_time(theta0: f64, rate0: f64, omega2: f64, theta: f64) -> (f64, f6
 /// Error model for |closed form − quadrature|: the quadrature's own estimate; 4u of the
 /// integrand (two sines, products, a sum of positives, a root and a reciprocal) and 6u of the
 /// nodes and weights, 2u of the compensated sum, 4u of the closed form: 16u·t; the rounding of
-/// the upper end θ₀ + (θ − θ₀), worth u·θ/θ̇(θ); and the start's own condition κu/ω.
+/// the upper end θ₀ + (θ − θ₀), worth u·θ/θ̇(θ); and the start's own condition κu/Ω.
 fn tolerance(theta0: f64, rate0: f64, omega2: f64, theta: f64, t: f64, estimate: f64) -> f64 {
     let end_rate = rate_at_offset(theta0, rate0, omega2, theta - theta0);
     estimate
@@ -132,7 +132,7 @@ fn closed_form_times_match_quadrature() {
 
 #[test]
 fn quadrature_catches_a_wrong_modulus() {
-    // t(θ) does not use the Jacobi modulus; perturb ω instead, by 1e-9 (as the issue asks).
+    // t(θ) does not use the Jacobi modulus; perturb Ω instead, by 1e-9 (as the issue asks).
     let worst = worst_ratio(|a, b, c| PhaseOne::new(a, b, c * (1.0 + 2e-9)).unwrap());
     assert!(
         worst > 1.0,

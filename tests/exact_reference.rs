@@ -12,7 +12,7 @@ fn phase(row: &[f64; 9]) -> PhaseOne {
 }
 
 /// Worst ulp errors (angle, time, rate) of `sep_of` over the table, with the time allowance
-/// κu/ω of the ill-conditioned starts (see `input_condition`) removed before counting ulps.
+/// κu/Ω of the ill-conditioned starts (see `input_condition`) removed before counting ulps.
 fn worst_separation_ulps(sep_of: impl Fn(&[f64; 9]) -> Separation) -> [f64; 3] {
     let mut worst = [0.0f64; 3];
     for row in SEPARATION.iter() {
@@ -51,7 +51,7 @@ fn separation_within_four_ulps_of_mpmath() {
 
 #[test]
 fn separation_check_fails_for_wrong_omega() {
-    // ω·(1 + 1e-9): times scale by 1/ω, so the check must see some 4e6 ulps.
+    // Ω·(1 + 1e-9): times scale by 1/Ω, so the check must see some 4e6 ulps.
     let worst = worst_separation_ulps(|row| {
         let omega2 = row[2] * (1.0 + 1e-9) * (1.0 + 1e-9);
         PhaseOne::new(row[0], row[1], omega2)
@@ -67,7 +67,7 @@ fn separation_check_fails_for_wrong_omega() {
 
 /// Error model for θ(t), θ̇(t): the phase u₀ + Ωt (or v₀ − Ωt), of size at most 2K plus Ωt, is
 /// rounded to a few ulps, i.e. the state is the exact one at a time shifted by at most
-/// C·u·(2K/ω + t), on top of relative errors C·u in the Jacobi recurrence (≤ 4 roundings per
+/// C·u·(2K/Ω + t), on top of relative errors C·u in the Jacobi recurrence (≤ 4 roundings per
 /// Landen level, ≤ 8 levels here, all on positive terms): C = 4·8 + 6 = 38.
 fn theta_tolerance(p: &PhaseOne, t: f64, theta: f64, rate: f64, row: &[f64; 9]) -> (f64, f64) {
     const C: f64 = 38.0;
@@ -178,7 +178,7 @@ fn jacobi_functions_match_mpmath() {
 
 #[test]
 fn scale_invariance_is_exact_for_powers_of_four() {
-    // ω² = 4^j makes ω = 2^j exact: times must scale as 1/ω bit for bit, angles not at all.
+    // Ω² = 4^j makes Ω = 2^j exact: times must scale as 1/Ω bit for bit, angles not at all.
     for row in SEPARATION.iter().filter(|row| row[2] == 1.0) {
         let base = phase(row);
         let s1 = base.separation().unwrap();
@@ -219,7 +219,7 @@ fn equilibrium_never_separates_and_fast_starts_separate_at_once() {
     let rest = PhaseOne::new(0.0, 0.0, 1.0).unwrap();
     assert_eq!(rest.separation(), None);
     assert_eq!(rest.theta_rate(5.0), (0.0, 0.0));
-    // θ̇₀² ≥ ω² cos θ₀: the wall force m l sin θ (ω² cos θ − θ̇²) is ≤ 0 at the start.
+    // θ̇₀² ≥ Ω² cos θ₀: the wall force m l sin θ (Ω² cos θ − θ̇²) is ≤ 0 at the start.
     for (theta0, rate0) in [
         (0.0, 1.0),
         (0.0, 1.5),
@@ -297,7 +297,7 @@ fn angle_at_separation_time_is_separation_angle() {
 
 #[test]
 fn textbook_legendre_form_loses_the_digits_this_module_keeps() {
-    // The conditioning claim of the module docs, measured: t_s = F(ψ_s|m)/ω with m = 1 − k'²
+    // The conditioning claim of the module docs, measured: t_s = F(ψ_s|m)/Ω with m = 1 − k'²
     // and ψ_s from arcsin, for starts from rest, against the same references.
     let textbook = |theta0: f64| {
         let kp2 = (0.5 * theta0).sin().powi(2);
@@ -322,7 +322,7 @@ fn textbook_legendre_form_loses_the_digits_this_module_keeps() {
 
 #[test]
 fn wall_force_pushes_until_separation_and_pulls_after() {
-    // F_w = m l sin θ (ω² cos θ − θ̇²) (eqs. (5), (6), (8)) must be > 0 before t_s and < 0 after:
+    // F_w = m l sin θ (Ω² cos θ − θ̇²) (eqs. (5), (6), (8)) must be > 0 before t_s and < 0 after:
     // separation is the first and only sign change on the both-contacts motion.
     for row in SEPARATION
         .iter()

@@ -48,9 +48,9 @@ fn dop853_meets_the_accuracy_target_from_rest() {
     }
 }
 
-/// The note's problem: θ0 = 0, θ̇0 = 1e-6. The separation time is ~(1/ω) ln(1/θ̇0), so its
+/// The note's problem: θ0 = 0, θ̇0 = 1e-6. The separation time is ~(1/Ω) ln(1/θ̇0), so its
 /// relative error is the relative error of θ in the early, exponentially growing phase; the
-/// error norm measures (θ, θ̇/ω) relative to the motion's own size (`WallPhase::scale`), not
+/// error norm measures (θ, θ̇/Ω) relative to the motion's own size (`WallPhase::scale`), not
 /// against an absolute tolerance, and the time comes out to 1e-12 relative.
 #[test]
 fn classic_start_separation_time_to_1e12() {
@@ -165,7 +165,7 @@ fn separation_is_refined_inside_a_step_and_no_step_is_long() {
         st.t()
     );
     let g = rigid::separation_factor(sys.omega2, end.y[0], end.y[1]);
-    // |g'| ~ 3ω² sin θ θ̇ ≈ 40 s⁻³; one ulp of t (~1e-16 s) moves g by ~4e-15; allow 4 ulps.
+    // |g'| ~ 3Ω² sin θ θ̇ ≈ 40 s⁻³; one ulp of t (~1e-16 s) moves g by ~4e-15; allow 4 ulps.
     assert!(g.abs() <= 2e-14, "g at the root = {g:e}");
     assert!(
         watch.max_dtheta <= 0.625,

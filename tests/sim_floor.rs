@@ -44,7 +44,7 @@ fn phase2_equation_conserves_energy_and_a_perturbed_one_does_not() {
     }
 }
 
-/// At separation (θ̇² = ω² cos θ) the phase-2 θ̈ equals eq. (5)'s ω² sin θ and the floor force
+/// At separation (θ̇² = Ω² cos θ) the phase-2 θ̈ equals eq. (5)'s Ω² sin θ and the floor force
 /// equals the wall phase's (mg/4 there); F_w is zero.
 #[test]
 fn phase2_continues_phase1_at_separation() {

@@ -223,7 +223,7 @@ fn every_bad_penalty_scene_gets_one_line_exit_2_and_no_file() {
     }
 }
 
-/// A scene at (m, l, g) from rest with a push of 0.1 ω: (θ_s, t_s, θ̇_s) from `simulate`.
+/// A scene at (m, l, g) from rest with a push of 0.1 Ω: (θ_s, t_s, θ̇_s) from `simulate`.
 fn separation_at(m: f64, l: f64, g: f64, contact: &str) -> [f64; 3] {
     let omega = (0.75 * g / l).sqrt();
     let text = with(

@@ -62,7 +62,7 @@ fn pushes_up_to_and_past_the_immediate_release() {
         let err = (s.angle.cos() - theory_cos(&UNIT, 0.0, r * omega)).abs();
         assert!(err <= 10.0 * n as f64 * 1e-13 + 4.0 * U, "{r}: {err}");
     }
-    // cos θ_s = 2/3 + θ̇0²/(3ω²) ≥ 1: the wall would pull at once.
+    // cos θ_s = 2/3 + θ̇0²/(3Ω²) ≥ 1: the wall would pull at once.
     for r in [1.001, 2.0, 1e10] {
         assert_eq!(dop853(&UNIT, 0.0, r * omega).0, WallRelease::AtOnce, "{r}");
     }

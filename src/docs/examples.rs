@@ -37,7 +37,7 @@ pub fn all() -> Vec<Example> {
 }
 
 /// θ at which the wall force (14) on the motion, with θ̈ from (5) and θ̇² from the energy of a
-/// start (θ0, θ̇0) (units m = l = 1, g = 4/3 so that ω² = 3g/4l = 1), changes sign: found by
+/// start (θ0, θ̇0) (units m = l = 1, g = 4/3 so that Ω² = 3g/4l = 1), changes sign: found by
 /// bisection on [θ0, π/2] down to adjacent floats. Inputs: θ0, θ̇0.
 pub fn separation_angle(x: &[f64]) -> Result<f64, String> {
     let (theta0, rate0) = (x[0], x[1]);

@@ -14,6 +14,8 @@
 //! `file:line: message`; nothing panics on malformed input.
 
 pub mod examples;
+pub mod facts;
+pub mod worked;
 
 use crate::registry::{equations, extensions};
 use pulldown_cmark::{Event, Options, Parser, Tag, TagEnd};
@@ -91,6 +93,7 @@ pub fn check_book(dir: &Path) -> BookReport {
             ));
         }
     }
+    facts::check_facts(dir, &facts::facts(), &mut rep.problems);
     rep.equations_found = seen.keys().filter(|&&n| n <= 90).count();
     rep
 }
@@ -196,6 +199,17 @@ pub fn check_file(name: &str, src: &str, seen: &mut BTreeMap<u32, String>, rep: 
         }
         let _ = in_header;
     }
+    for (number, line, text) in worked::blocks(src) {
+        match worked::worked_example(number) {
+            Ok(want) if normalize_latex(&want) == normalize_latex(&text) => {}
+            Ok(_) => rep.problems.push(format!(
+                "{name}:{line}: the worked example of ({number}) differs from what the code gives now \
+                 (regenerate: LADDER_BLESS_DOCS=1 cargo test --test docs)"
+            )),
+            Err(e) => rep.problems.push(format!("{name}:{line}: worked example: {e}")),
+        }
+        rep.examples_run += 1;
+    }
     for (k, s) in sections.iter().enumerate() {
         let end = sections.get(k + 1).map_or(src.len(), |n| n.start);
         check_section(name, &src[s.start..end], s, &registry, rep);
@@ -265,6 +279,7 @@ fn check_section(
             ));
         }
     }
+    check_law_line(&at(s.line), body, entry, rep);
     let kind = body
         .lines()
         .find_map(|l| l.split("Kind:*").nth(1).or_else(|| l.split("Kind:").nth(1)));
@@ -288,5 +303,46 @@ fn check_section(
             at(s.line),
             s.number
         )),
+    }
+}
+
+/// "1st", "2nd", "3rd", "4th", ...
+pub fn ordinal(n: u32) -> String {
+    let suffix = match (n % 10, n % 100) {
+        (1, k) if k != 11 => "st",
+        (2, k) if k != 12 => "nd",
+        (3, k) if k != 13 => "rd",
+        _ => "th",
+    };
+    format!("{n}{suffix}")
+}
+
+/// The line that marks the law of motion in a section: `*Law:* the 2nd `=` ...`.
+pub fn law_line(step: u32) -> String {
+    format!("*Law:* the {} `=`", ordinal(step))
+}
+
+/// A display whose registry entry marks a law step must say so in a `*Law:*` line naming the
+/// same `=`; a display without one must not claim a law step.
+fn check_law_line(at: &str, body: &str, entry: &crate::registry::Equation, rep: &mut BookReport) {
+    let stated = body.lines().find(|l| l.starts_with("*Law:*"));
+    match (entry.law, stated) {
+        (Some(law), Some(line)) if line.starts_with(&law_line(law.step)) => {}
+        (Some(law), Some(line)) => rep.problems.push(format!(
+            "{at}: ({}) marks the law as \"{}\", the registry at the {} `=`",
+            entry.number,
+            line.chars().take(40).collect::<String>(),
+            ordinal(law.step)
+        )),
+        (Some(law), None) => rep.problems.push(format!(
+            "{at}: ({}) does not say which `=` is the law of motion (expected a line \"{} ...\")",
+            entry.number,
+            law_line(law.step)
+        )),
+        (None, Some(_)) => rep.problems.push(format!(
+            "{at}: ({}) has a *Law:* line but the registry marks no law step",
+            entry.number
+        )),
+        (None, None) => {}
     }
 }

@@ -46,7 +46,7 @@ impl<T: Scalar> Ladder<T> {
             g: T::constant(self.g.clone()),
         }
     }
-    /// ω² = 3g/(4l), the rate constant of the equation of motion (5).
+    /// Ω² = 3g/(4l), the rate constant of the equation of motion (5).
     pub fn omega_squared(&self) -> T {
         T::ratio(3, 4) * self.g.clone() / self.l.clone()
     }

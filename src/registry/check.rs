@@ -74,6 +74,10 @@ pub struct CheckReport {
     pub sz_bound_log10: f64,
     /// For on-shell checks: whether every exact off-shell point failed, as it must.
     pub off_shell_fails: Option<bool>,
+    /// For on-shell ladder checks: the `=` of the display (counted from 1) at which the chain
+    /// breaks off the motion, when it is the same at every exact point ([`super::law::breaks`]);
+    /// `Some(vec![])` never happens for a passing on-shell check.
+    pub off_motion_breaks: Option<Vec<u32>>,
 }
 
 impl CheckReport {
@@ -208,6 +212,7 @@ pub fn run_check(check: &Check, cfg: &Config) -> CheckReport {
             };
             rep.degree = residual_degree(&degree_chains);
             let mut off_shell_all_fail = true;
+            let mut breaks: Option<Option<Vec<u32>>> = None;
             for _ in 0..cfg.exact_points {
                 let draw = exact_ladder_draw(&mut rng);
                 let (l, s) = exact_ladder(sort, draw.clone());
@@ -216,12 +221,23 @@ pub fn run_check(check: &Check, cfg: &Config) -> CheckReport {
                 note_misprints(mis);
                 if sort.on_shell() {
                     let (l, s) = exact_ladder(LadderSample::Kinematic, draw);
-                    let (ok_off, _) = guarded(|| exact_residual(&(f.exact)(&l, &s)));
+                    let off = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                        let c = (f.exact)(&l, &s);
+                        (exact_residual(&c).0, super::law::breaks(&c))
+                    }));
+                    let (ok_off, here) = off.map_or((false, None), |(ok, b)| (ok, Some(b)));
                     off_shell_all_fail &= !ok_off;
+                    // Keep the breaks only while every point agrees.
+                    breaks = Some(match breaks {
+                        None => here,
+                        Some(prev) if prev == here => prev,
+                        Some(_) => None,
+                    });
                 }
             }
             if sort.on_shell() {
                 rep.off_shell_fails = Some(off_shell_all_fail);
+                rep.off_motion_breaks = breaks.flatten();
             }
         }
         Eval::Floor(sort, f) => {

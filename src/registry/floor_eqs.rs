@@ -193,7 +193,7 @@ pub(super) fn equations() -> Vec<Equation> {
         e(
             4,
             "Floor phase: floor force",
-            Kinematic,
+            Newton,
             &["ladder::floor_phase::floor_force"],
             vec![check(
                 "against Newton for the particles",

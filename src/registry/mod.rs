@@ -13,6 +13,7 @@ mod general_eqs;
 mod jensen_eqs;
 mod ladder_eqs;
 mod latex;
+pub mod law;
 mod milne_eqs;
 pub mod print_check;
 pub mod prove;
@@ -21,6 +22,7 @@ pub mod side;
 pub mod units;
 
 pub use latex::printed_latex;
+pub use law::Law;
 pub use sample::{LadderSample, ParticleSample};
 pub use side::{corrected, misprint, printed, reference, vector_chains, Chain, Role, Side};
 
@@ -36,8 +38,13 @@ use serde::Serialize;
 pub enum Kind {
     /// Introduces a symbol; checked against an independent model of the same quantity.
     Definition,
-    /// Holds for any θ, θ̇, θ̈ (and any m, l, g).
+    /// Geometry and differentiation: holds for any θ, θ̇, θ̈ (and any m, l, g), whatever the
+    /// forces.
     Kinematic,
+    /// Newton's second law for the whole ladder, F = m a_cm, solved for a contact force (or used
+    /// in a torque of the contact forces): the force is what the motion requires, so it holds for
+    /// any θ̈; only the torque law then picks out the motion.
+    Newton,
     /// Holds only on the equation of motion (5) (and, where stated, the energy (10)); also shown
     /// to fail off it.
     OnShell,
@@ -53,6 +60,7 @@ impl Kind {
         match self {
             Kind::Definition => "definition",
             Kind::Kinematic => "kinematic",
+            Kind::Newton => "newton",
             Kind::OnShell => "on-shell",
             Kind::General => "general",
             Kind::Notation => "notation",
@@ -212,6 +220,10 @@ pub struct Equation {
     pub checks: Vec<Check>,
     /// Present when the printed form is wrong.
     pub erratum: Option<Erratum>,
+    /// Which `=` of the display is the law of motion (the rest are algebra and kinematics);
+    /// `None` when no `=` is (a definition, kinematics, Newton's law solved for a force) or the
+    /// law sits inside a general identity of particles, whose model has F_i = m_i a_i built in.
+    pub law: Option<Law>,
 }
 
 /// Numbers of the extension equations (beyond the note) start here: (P1) is 1001.
@@ -258,6 +270,7 @@ pub(crate) fn eq(
         functions,
         checks,
         erratum: None,
+        law: None,
     }
 }
 
@@ -284,5 +297,8 @@ pub fn equations() -> Vec<Equation> {
     all.extend(jensen_eqs::equations());
     all.extend(milne_eqs::equations());
     all.sort_by_key(|e| e.number);
+    for e in &mut all {
+        e.law = law::law_of(e.number);
+    }
     all
 }

@@ -1,5 +1,6 @@
 //! Reports: the work-precision sweep, output files written all-or-nothing, SVG plots.
 
+pub mod diagram;
 pub mod files;
 pub mod plot;
 pub mod stability;

@@ -5,7 +5,7 @@
 //! well conditioned everywhere, whereas θ_s itself cannot be resolved better than an ulp of
 //! π/2 when the ladder starts almost flat. Times are judged against the exact reference
 //! (`sim::exact`), relative. An adaptive method with relative tolerance τ on θ (scale
-//! max(θ, θ̇/ω)) taking N steps has an absolute angle error up to 10 N τ max(θ_s, 1), and the
+//! max(θ, θ̇/Ω)) taking N steps has an absolute angle error up to 10 N τ max(θ_s, 1), and the
 //! time error is that over the angle travelled: 10 N τ max(θ_s, 1) / (θ_s − θ0) relative —
 //! large for a start 1e-9 below flat, where the ladder moves only 3e-10 rad before it leaves.
 
@@ -104,7 +104,7 @@ fn start_rows(name: &str, theta0: f64, rate0: f64, tick: &mut impl FnMut(&str, u
     rows
 }
 
-/// Starts at rest from 1e-12 to π/2 − 1e-9, pushes at θ0 = 0 up to and past ω, the
+/// Starts at rest from 1e-12 to π/2 − 1e-9, pushes at θ0 = 0 up to and past Ω, the
 /// equilibrium.
 pub fn extreme_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
     let mut cases = Vec::new();
@@ -121,7 +121,7 @@ pub fn extreme_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
     }
     let omega = UNIT.omega2().sqrt();
     for r in [1e-15, 1e-8, 1e-3, 0.5, 0.999, 1.0, 1.001, 2.0] {
-        let name = format!("θ0=0 θ̇0={r:e}·ω");
+        let name = format!("θ0=0 θ̇0={r:e}·Ω");
         cases.extend(start_rows(&name, 0.0, r * omega, tick));
     }
     tick("equilibrium", 3);

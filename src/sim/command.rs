@@ -303,7 +303,7 @@ pub fn files(scene: &Scene, o: &Outcome) -> Vec<OutFile> {
         ));
         let cs = separation_cosine(scene.ladder.omega2(), scene.theta0, scene.rate0);
         let th_spec = PlotSpec {
-            title: "contact forces against θ (marker: cos θ = (2 cos θ0 + θ̇0²/ω²)/3)".into(),
+            title: "contact forces against θ (marker: cos θ = (2 cos θ0 + θ̇0²/Ω²)/3)".into(),
             x_label: "θ (rad)".into(),
             y_label: "force (N)".into(),
             vlines: vec![cs.acos()],

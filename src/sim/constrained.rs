@@ -30,7 +30,7 @@ use super::rigid::event_safe_step;
 use super::run::{integrate_phase, Observer, RunError};
 use num_dual::DualNum;
 
-/// ω = √(3/4), eq. (5) with l = g = 1.
+/// Ω = √(3/4), eq. (5) with l = g = 1.
 const OMEGA: f64 = 0.866_025_403_784_438_6;
 
 /// The constrained rod: y = [x, y, θ, ẋ, ẏ, θ̇], Baumgarte's α and β (0, 0: unstabilised).

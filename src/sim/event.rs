@@ -2,9 +2,9 @@
 //! to full f64 precision.
 //!
 //! **Never stepping over the separation.** On the wall-phase motion the wall force is
-//! F_w = m l sin θ · g(θ, θ̇) with g = ω² cos θ − θ̇² (see [`super::rigid::separation_factor`]).
+//! F_w = m l sin θ · g(θ, θ̇) with g = Ω² cos θ − θ̇² (see [`super::rigid::separation_factor`]).
 //! Watching g, not F_w, removes the roots of sin θ at θ = 0 (the start of the classic problem)
-//! and θ = π. On the energy integral g = 3ω² cos θ − 2ω² cos θ0 − θ̇0², so g < 0 exactly on
+//! and θ = π. On the energy integral g = 3Ω² cos θ − 2Ω² cos θ0 − θ̇0², so g < 0 exactly on
 //! (θ_s, 2π − θ_s): its two roots are at least π apart in θ. The integrators therefore never take
 //! a step with |Δθ| > 5/8 rad ([`super::rigid::event_safe_step`], enforced through
 //! `Ode::max_step`), and a sign check at the step ends cannot miss a crossing. This costs no

@@ -2,14 +2,14 @@
 //! upright to almost flat, pushes from 1e-15 rad/s to past the speed at which the top leaves
 //! the wall at once, and the equilibrium. Every start gets an answer, never a hang:
 //!
-//! * θ0 = θ̇0 = 0 is an equilibrium (the wall force m l sin θ (ω² cos θ − θ̇²) is zero for all
+//! * θ0 = θ̇0 = 0 is an equilibrium (the wall force m l sin θ (Ω² cos θ − θ̇²) is zero for all
 //!   time): the ladder never leaves the wall; said so without integrating.
-//! * When ω² cos θ0 − θ̇0² ≤ 0 (for θ0 = 0: θ̇0 ≥ ω, i.e. cos θ_s = 2/3 + θ̇0²/(3ω²) ≥ 1) the
+//! * When Ω² cos θ0 − θ̇0² ≤ 0 (for θ0 = 0: θ̇0 ≥ Ω, i.e. cos θ_s = 2/3 + θ̇0²/(3Ω²) ≥ 1) the
 //!   wall would have to pull from the first instant: the top leaves at once, t_s = 0, θ_s = θ0.
 //! * Otherwise the wall phase (5) is integrated *in the ladder's own units as given*, with the
 //!   end time scaled by the time unit √(l/g), so that the integrators' scale invariance is put to
 //!   the test rather than assumed. The separation angle must not depend on m, l, g; times scale
-//!   as √(l/g) and forces as m g (the forces are products m l ω² ..., each within f64's range
+//!   as √(l/g) and forces as m g (the forces are products m l Ω² ..., each within f64's range
 //!   for factors in 1e-30..1e30).
 
 use super::event::{Direction, Event};
@@ -31,7 +31,7 @@ pub enum WallRelease {
     Equilibrium,
 }
 
-/// Separation: the factor ω² cos θ − θ̇² of the wall force falls through zero.
+/// Separation: the factor Ω² cos θ − θ̇² of the wall force falls through zero.
 struct Factor(f64);
 impl Event<2> for Factor {
     fn value(&self, _t: f64, y: &[f64; 2]) -> f64 {
@@ -55,7 +55,7 @@ pub fn wall_release(
     let omega2 = ladder.omega2();
     if !(omega2.is_finite() && omega2 > 0.0 && theta0.is_finite() && rate0.is_finite()) {
         return Err(RunError::Start(format!(
-            "no wall phase for ω² = {omega2}, θ0 = {theta0}, θ̇0 = {rate0}"
+            "no wall phase for Ω² = {omega2}, θ0 = {theta0}, θ̇0 = {rate0}"
         )));
     }
     if theta0 == 0.0 && rate0 == 0.0 {

@@ -204,7 +204,7 @@ impl Observer<4> for TraceObserver<'_> {
     }
 }
 
-/// Separation: the factor g = ω² cos θ − θ̇² of the wall force falls through zero.
+/// Separation: the factor g = Ω² cos θ − θ̇² of the wall force falls through zero.
 struct SeparationEvent(f64);
 impl Event<2> for SeparationEvent {
     fn value(&self, _t: f64, y: &[f64; 2]) -> f64 {

@@ -15,7 +15,7 @@ use super::rigid::{event_safe_step, Ladder};
 use num_dual::DualNum;
 
 /// Phase-2 equation of motion: θ̈ = sin θ (g/l − cos θ θ̇²) / (sin² θ + 1/3).
-/// At separation (θ̇² = ω² cos θ) it equals the wall phase's ω² sin θ, so θ̈ is continuous.
+/// At separation (θ̇² = Ω² cos θ) it equals the wall phase's Ω² sin θ, so θ̈ is continuous.
 pub fn angular_acceleration<D: DualNum<Primitive = f64> + Copy>(
     g_over_l: f64,
     theta: D,

@@ -55,7 +55,7 @@ use super::run::{integrate_phase, RunError};
 use num_dual::{Dual64, DualNum};
 use std::cell::Cell;
 
-/// ω² = 3g/(4l) in units where l = g = 1 (eq. (5)).
+/// Ω² = 3g/(4l) in units where l = g = 1 (eq. (5)).
 pub const OMEGA2: f64 = 0.75;
 /// Dimensionless stiffness accepted by scenes: below 1 the springs are not contacts, above 1e15
 /// the rounding of positions alone makes the force meaningless (κ·u ≳ 0.1).
@@ -192,7 +192,7 @@ impl Ode<6> for PenaltyModel {
         event_safe_step(OMEGA2.sqrt(), y[5])
     }
     /// Absolute control in the problem's own units: positions against l, velocities against
-    /// √(g l) ω (a relative scale would demand ever more digits of the tiny penetrations).
+    /// √(g l) Ω (a relative scale would demand ever more digits of the tiny penetrations).
     fn scale(&self, _y: &[f64; 6]) -> [f64; 6] {
         let w = OMEGA2.sqrt();
         [1.0, 1.0, 1.0, w, w, w]

@@ -19,26 +19,26 @@ pub struct Ladder {
 }
 
 impl Ladder {
-    /// ω² = 3g/(4l), the coefficient of eq. (5).
+    /// Ω² = 3g/(4l), the coefficient of eq. (5).
     pub fn omega2(&self) -> f64 {
         3.0 * self.gravity / (4.0 * self.half_length)
     }
 }
 
-/// Eq. (5): θ̈ = (3g/4l) sin θ = ω² sin θ.
+/// Eq. (5): θ̈ = (3g/4l) sin θ = Ω² sin θ.
 pub fn angular_acceleration<D: DualNum<Primitive = f64> + Copy>(omega2: f64, theta: D) -> D {
     theta.sin() * omega2
 }
 
-/// The factor of the wall force that changes sign at separation: g(θ, θ̇) = ω² cos θ − θ̇².
+/// The factor of the wall force that changes sign at separation: g(θ, θ̇) = Ω² cos θ − θ̇².
 ///
-/// From eqs. (5) and (14), F_w = m l (cos θ θ̈ − sin θ θ̇²) = m l sin θ (ω² cos θ − θ̇²): the
+/// From eqs. (5) and (14), F_w = m l (cos θ θ̈ − sin θ θ̇²) = m l sin θ (Ω² cos θ − θ̇²): the
 /// factor sin θ vanishes at θ = 0 and π, which are not separations, so events watch this factor.
 pub fn separation_factor(omega2: f64, theta: f64, rate: f64) -> f64 {
     omega2 * theta.cos() - rate * rate
 }
 
-/// Eq. (14) on the motion (5): the wall force F_w = m l sin θ (ω² cos θ − θ̇²), along +x at C.
+/// Eq. (14) on the motion (5): the wall force F_w = m l sin θ (Ω² cos θ − θ̇²), along +x at C.
 pub fn wall_force(ladder: &Ladder, theta: f64, rate: f64) -> f64 {
     ladder.mass * ladder.half_length * theta.sin() * separation_factor(ladder.omega2(), theta, rate)
 }
@@ -57,15 +57,15 @@ pub fn energy(ladder: &Ladder, theta: f64, rate: f64) -> f64 {
 }
 
 /// Footnote 4, generalised to a start with θ̇0 ≠ 0 by the energy integral (9):
-/// cos θ_s = (2 ω² cos θ0 + θ̇0²) / (3 ω²). Above 1 the wall would have to pull at the start.
+/// cos θ_s = (2 Ω² cos θ0 + θ̇0²) / (3 Ω²). Above 1 the wall would have to pull at the start.
 pub fn separation_cosine(omega2: f64, theta0: f64, rate0: f64) -> f64 {
     (2.0 * omega2 * theta0.cos() + rate0 * rate0) / (3.0 * omega2)
 }
 
-/// The wall phase as an ODE for the integrators: y = [θ, θ̇], y' = [θ̇, ω² sin θ].
+/// The wall phase as an ODE for the integrators: y = [θ, θ̇], y' = [θ̇, Ω² sin θ].
 #[derive(Clone, Copy, Debug)]
 pub struct WallPhase {
-    /// ω² = 3g/(4l).
+    /// Ω² = 3g/(4l).
     pub omega2: f64,
     omega: f64,
 }
@@ -81,8 +81,8 @@ impl WallPhase {
     }
 }
 
-/// Longest step that keeps |Δθ| ≤ 0.625 rad when |θ̈| ≤ ω²: h (|θ̇| + ω) ≤ 1/2 gives
-/// |Δθ| ≤ h|θ̇| + h²ω²/2 ≤ 1/2 + 1/8. Used by both phases (see `sim::event` for why).
+/// Longest step that keeps |Δθ| ≤ 0.625 rad when |θ̈| ≤ Ω²: h (|θ̇| + Ω) ≤ 1/2 gives
+/// |Δθ| ≤ h|θ̇| + h²Ω²/2 ≤ 1/2 + 1/8. Used by both phases (see `sim::event` for why).
 pub fn event_safe_step(omega: f64, rate: f64) -> f64 {
     0.5 / (rate.abs() + omega)
 }
@@ -94,7 +94,7 @@ impl Ode<2> for WallPhase {
     fn max_step(&self, y: &[f64; 2]) -> f64 {
         event_safe_step(self.omega, y[1])
     }
-    /// θ and θ̇/ω are both angles: one relative scale for the pair, so that a start at θ = 0
+    /// θ and θ̇/Ω are both angles: one relative scale for the pair, so that a start at θ = 0
     /// (or θ̇ = 0) is measured against the motion's size, not against an absolute tolerance.
     fn scale(&self, y: &[f64; 2]) -> [f64; 2] {
         let s = y[0].abs().max(y[1].abs() / self.omega);

@@ -75,7 +75,7 @@ fn wall_force_from_rest_at(l: &Ladder<Q>, s: &State<Q>, c0: &Q) -> Q {
 }
 
 /// Footnote 4 as an identity in θ: on the motion from rest at θ0 (cos θ0 = c0) the wall force
-/// is m l sin θ ω² (3 cos θ − k c0), so it vanishes at cos θ = (k/3) c0; the note says k = 2.
+/// is m l sin θ Ω² (3 cos θ − k c0), so it vanishes at cos θ = (k/3) c0; the note says k = 2.
 fn separates_where(c0: &Q, k: i64) -> bool {
     all(LadderSample::OnShell, |l, s| {
         let claimed = l.m.clone()

@@ -59,6 +59,14 @@ pub struct EquationResult {
     /// For on-shell equations: shown to fail off the equation of motion.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fails_off_shell: Option<bool>,
+    /// The `=` of the display (counted from 1) that is the law of motion; every other `=` is
+    /// algebra or kinematics. Confirmed by computation: off the motion the chain breaks there
+    /// and only there ([`crate::registry::law`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub law_step: Option<u32>,
+    /// The law used at that `=`, in words.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub law: Option<&'static str>,
     /// What went wrong, if anything.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub problems: Vec<String>,
@@ -123,6 +131,29 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
     let units_found = equation_units(e);
     problems.extend(units_found.problems.iter().map(|p| format!("units: {p}")));
     let (units, units_detail) = units_found.verdict();
+    if let Some(law) = e.law {
+        // Every on-shell check of the display must break off the motion at the marked `=` only.
+        let found: Vec<_> = reports
+            .iter()
+            .filter(|r| r.off_shell_fails.is_some())
+            .map(|r| (r.name, r.off_motion_breaks.clone()))
+            .collect();
+        if found.is_empty() {
+            problems.push(format!(
+                "the law is marked at `=` no. {} but no check evaluates the display off the motion",
+                law.step
+            ));
+        }
+        for (name, b) in found {
+            if b.as_deref() != Some(&[law.step][..]) {
+                problems.push(format!(
+                    "{name}: the law is marked at `=` no. {}, but off the motion the display breaks at {:?}",
+                    law.step,
+                    b.unwrap_or_default()
+                ));
+            }
+        }
+    }
     let on_shell = reports
         .iter()
         .filter_map(|r| r.off_shell_fails)
@@ -164,6 +195,8 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
         } else {
             Some(on_shell.iter().all(|&b| b))
         },
+        law_step: e.law.map(|l| l.step),
+        law: e.law.map(|l| l.statement),
         problems,
         proved: false,
         proof: "not attempted".into(),

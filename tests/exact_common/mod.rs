@@ -11,7 +11,7 @@
 // K(0) = π/2 appears among them as printed.
 #![allow(clippy::approx_constant)]
 
-/// A row: θ₀, θ̇₀, ω², separation angle, time, rate, t_mid (binary64 nearest t_s/2),
+/// A row: θ₀, θ̇₀, Ω², separation angle, time, rate, t_mid (binary64 nearest t_s/2),
 /// θ(t_mid), θ̇(t_mid). Immediate separations have time 0 and t_mid = 0.
 #[rustfmt::skip]
 pub const SEPARATION: [[f64; 9]; 31] = [
@@ -65,10 +65,10 @@ pub const JACOBI: [[f64; 7]; 12] = [
     [1e-12, 14.5, 1.0, 29.01731547704843884716372, 0.9999999999995085832128574, 0.0000009913796317682885995028851, 0.0000009913796317687929471654526],
 ];
 
-/// Condition κ = 2s₀²/|a| of the energy offset a = sin²(θ₀/2) − (θ̇₀/2ω)² with respect to the
+/// Condition κ = 2s₀²/|a| of the energy offset a = sin²(θ₀/2) − (θ̇₀/2Ω)² with respect to the
 /// rounding of sin(θ₀/2). It is large only near the separatrix with both θ₀ > 0 and θ̇₀ > 0,
 /// where a is a small difference of inputs; a relative error u in s₀ then moves the times by
-/// about κu/(2ω) — the problem's own condition, which no f64 algorithm escapes.
+/// about κu/(2Ω) — the problem's own condition, which no f64 algorithm escapes.
 pub fn input_condition(theta0: f64, rate0: f64, omega2: f64) -> f64 {
     let s0 = (0.5 * theta0).sin();
     let rho = 0.5 * rate0 / omega2.sqrt();

@@ -43,7 +43,7 @@ pub(super) fn equations() -> Vec<Equation> {
     e54.erratum = Some(Erratum {
         printed: r"\frac{4m l^2 \dot{\theta}^2}{3} = m g l \sin \theta",
         corrected: r"\frac{4m l^2 \ddot{\theta}}{3} = m g l \sin \theta",
-        why: "cancelling −2ml²θ̈ sin²θ and −4ml²θ̇² cos θ sin θ between the two sides of (53) leaves θ̈, not θ̇²; the printed form is the energy-like θ̇², which is wrong",
+        why: "in (53) the term −4ml²θ̇² cos θ sin θ is on both sides and cancels; −2ml²θ̈ sin²θ is on the right only, and moved to the left it makes ml²θ̈ (1/3 + cos²θ + sin²θ) = 4ml²θ̈/3: θ̈, not θ̇²",
     });
     let mut e62 = eq(
         62,
@@ -147,7 +147,7 @@ pub(super) fn equations() -> Vec<Equation> {
             51,
             "A.1",
             "Torque about C",
-            Kinematic,
+            Newton,
             &["ladder::jensen::eq51_torque_about_c"],
             vec![k("against τ_C of the particles", ladder_fns!(eq51))],
         ),
@@ -155,7 +155,7 @@ pub(super) fn equations() -> Vec<Equation> {
             52,
             "A.1",
             "Torque side of (38) about C",
-            Kinematic,
+            Newton,
             &["ladder::jensen::eq52_modified_torque_c"],
             vec![k(
                 "against τ_C + m v_cm × v_C of the particles",

@@ -103,7 +103,7 @@ pub(super) fn equations() -> Vec<Equation> {
             6,
             "2.1",
             "Wall force from the horizontal acceleration",
-            Definition,
+            Newton,
             &["ladder::forces::wall_force_from_acceleration"],
             vec![k("m a_x against Σ m_i a_i,x", ladder_fns!(eq6))],
         ),
@@ -188,7 +188,7 @@ pub(super) fn equations() -> Vec<Equation> {
             14,
             "2.2",
             "Wall force",
-            Kinematic,
+            Newton,
             &[
                 "ladder::forces::wall_force_via_acceleration",
                 "ladder::forces::wall_force",
@@ -199,7 +199,7 @@ pub(super) fn equations() -> Vec<Equation> {
             15,
             "2.2",
             "Floor force",
-            Kinematic,
+            Newton,
             &[
                 "ladder::forces::floor_force_via_acceleration",
                 "ladder::forces::floor_force",

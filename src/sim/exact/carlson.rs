@@ -1,25 +1,25 @@
 //! Elapsed time between two angles of the both-contacts motion, in Carlson's symmetric form.
 //!
-//! With s = sin(θ/2) the energy integral reads θ̇² = 4ω²(s² − a) (see the parent module), and
+//! With s = sin(θ/2) the energy integral reads θ̇² = 4Ω²(s² − a) (see the parent module), and
 //! with x = s² the time is a cubic elliptic integral,
 //!
-//!   ω t = ½ ∫_{s₁²}^{s₂²} dx / √(x (1 − x) (x − a)).
+//!   Ω t = ½ ∫_{s₁²}^{s₂²} dx / √(x (1 − x) (x − a)).
 //!
 //! DLMF 19.29.4 (with its fourth factor equal to 1) evaluates any such integral between two
 //! points *directly*: with X₁ = s₂, X₂ = c₂ = cos(θ₂/2), X₃ = √(s₂² − a) and Y₁, Y₂, Y₃ the same
 //! at θ₁,
 //!
-//!   ω t = R_F(U₁₂², U₁₃², U₁₄²),  (s₂² − s₁²) U₁₂ = X₁X₂Y₃ + Y₁Y₂X₃,
+//!   Ω t = R_F(U₁₂², U₁₃², U₁₄²),  (s₂² − s₁²) U₁₂ = X₁X₂Y₃ + Y₁Y₂X₃,
 //!   (s₂² − s₁²) U₁₃ = X₁X₃Y₂ + Y₁Y₃X₂,  (s₂² − s₁²) U₁₄ = X₁Y₂Y₃ + Y₁X₂X₃,
 //!
 //! and by homogeneity of R_F (DLMF 19.16.1: degree −½)
 //!
-//!   ω t = (s₂² − s₁²) · R_F(W₁₂², W₁₃², W₁₄²),   W = (s₂² − s₁²) U.
+//!   Ω t = (s₂² − s₁²) · R_F(W₁₂², W₁₃², W₁₄²),   W = (s₂² − s₁²) U.
 //!
 //! Every W is a sum of products of non-negative numbers, R_F has relative condition at most ½
 //! in each argument, so the result carries the relative errors of its inputs plus a few ulps,
 //! whatever a is: on the separatrix, near it, or far from it. Compare the textbook route
-//! t = [F(ψ₂|k) − F(ψ₁|k)]/ω with sin²ψ = (s² − k'²)/(k² s²): it subtracts two logarithmically
+//! t = [F(ψ₂|k) − F(ψ₁|k)]/Ω with sin²ψ = (s² − k'²)/(k² s²): it subtracts two logarithmically
 //! large integrals, forms k² = 1 − k'² and evaluates arcsin near 1, each of which loses digits
 //! as k' → 0.
 //!
@@ -49,11 +49,11 @@ pub struct End {
     pub s: f64,
     /// cos(θ/2).
     pub c: f64,
-    /// √(s² − a) = θ̇/(2ω), from the energy integral.
+    /// √(s² − a) = θ̇/(2Ω), from the energy integral.
     pub r: f64,
 }
 
-/// ω times the time from `from` to `to`, given d = s_to² − s_from² computed by the caller
+/// Ω times the time from `from` to `to`, given d = s_to² − s_from² computed by the caller
 /// without cancellation.
 pub fn omega_time(from: End, to: End, d: f64) -> f64 {
     if d == 0.0 {

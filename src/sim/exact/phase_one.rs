@@ -10,22 +10,22 @@ use std::f64::consts::FRAC_PI_2;
 /// that carry the energy would leave the normal range of f64.
 const MIN_OFFSET: f64 = 1e-140;
 
-/// Largest θ̇₀/(2ω) accepted, so that its square (and 1 + its square) stay finite. Any start
-/// with θ̇₀ ≥ ω separates at once anyway.
+/// Largest θ̇₀/(2Ω) accepted, so that its square (and 1 + its square) stay finite. Any start
+/// with θ̇₀ ≥ Ω separates at once anyway.
 const MAX_RATE_RATIO: f64 = 1e140;
 
 /// The moment the wall force (6) = m a_x of the note, with a_x from (8), first vanishes.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Separation {
-    /// θ_s, rad: cos θ_s = (2/3) cos θ₀ + θ̇₀²/(3ω²) (footnote 4 of the note, moving start).
+    /// θ_s, rad: cos θ_s = (2/3) cos θ₀ + θ̇₀²/(3Ω²) (footnote 4 of the note, moving start).
     pub angle: f64,
     /// t_s, s, from the start.
     pub time: f64,
-    /// θ̇_s, rad/s: at separation θ̇_s² = ω² cos θ_s.
+    /// θ̇_s, rad/s: at separation θ̇_s² = Ω² cos θ_s.
     pub rate: f64,
 }
 
-/// The exact solution of eq. (5), θ̈ = ω² sin θ, while the ladder touches wall and floor.
+/// The exact solution of eq. (5), θ̈ = Ω² sin θ, while the ladder touches wall and floor.
 #[derive(Clone, Debug)]
 pub struct PhaseOne {
     theta0: f64,
@@ -35,7 +35,7 @@ pub struct PhaseOne {
     /// sin(θ₀/2), cos(θ₀/2).
     s0: f64,
     c0: f64,
-    /// ρ = θ̇₀/(2ω), so that θ̇² = 4ω²(sin²(θ/2) − a) with a = s₀² − ρ².
+    /// ρ = θ̇₀/(2Ω), so that θ̇² = 4Ω²(sin²(θ/2) − a) with a = s₀² − ρ².
     rho: f64,
     orbit: Orbit,
 }
@@ -45,7 +45,7 @@ pub struct PhaseOne {
 enum Orbit {
     /// θ₀ = θ̇₀ = 0: the ladder stands still.
     Equilibrium,
-    /// a = 0: tan(θ/4) = tan(θ₀/4) e^{ωt}.
+    /// a = 0: tan(θ/4) = tan(θ₀/4) e^{Ωt}.
     Separatrix { tan_quarter0: f64 },
     /// a ≠ 0: the phase u = u0 + phase_rate·t runs from the origin (the turning point if a > 0;
     /// θ = 0 if a < 0, `rotation`: the ladder passed upright) to the quarter period K, where
@@ -61,7 +61,7 @@ enum Orbit {
     },
 }
 
-/// cos θ_s = (2/3) cos θ₀ + θ̇₀²/(3ω²): where the wall force m l sin θ (ω² cos θ − θ̇²) of
+/// cos θ_s = (2/3) cos θ₀ + θ̇₀²/(3Ω²): where the wall force m l sin θ (Ω² cos θ − θ̇²) of
 /// eqs. (5), (6), (8) and the energy integral vanishes (footnote 4 of the note, generalised to a
 /// moving start). When it is ≥ cos θ₀ the wall force is already ≤ 0 at the start.
 pub fn separation_cos(theta0: f64, rate0: f64, omega2: f64) -> f64 {
@@ -69,7 +69,7 @@ pub fn separation_cos(theta0: f64, rate0: f64, omega2: f64) -> f64 {
 }
 
 impl PhaseOne {
-    /// The motion from θ₀ ∈ [0, π/2), θ̇₀ ≥ 0 with ω² = 3g/(4l) > 0 (eq. (5)).
+    /// The motion from θ₀ ∈ [0, π/2), θ̇₀ ≥ 0 with Ω² = 3g/(4l) > 0 (eq. (5)).
     pub fn new(theta0: f64, rate0: f64, omega2: f64) -> Result<PhaseOne, String> {
         if !(theta0.is_finite() && (0.0..FRAC_PI_2).contains(&theta0)) {
             return Err(format!(
@@ -134,13 +134,13 @@ impl PhaseOne {
             };
             let agm = Box::new(Agm::new(kc, k2));
             let (u0, v0, phase_rate) = if rotation {
-                // Phase w = (ω/k)(time since θ = 0); origin-to-start and start-to-bottom parts.
+                // Phase w = (Ω/k)(time since θ = 0); origin-to-start and start-to-bottom parts.
                 let h = (-a).sqrt();
                 let u0 = e.sqrt() * s0 * carlson_rf(c0 * c0 * h * h, rho * rho, h * h);
                 let v0 = c0 * e.sqrt() * carlson_rf(e * s0 * s0, e, rho * rho);
                 (u0, v0, omega * e.sqrt())
             } else {
-                // Phase u = ω (time since the turning point sin(θ/2) = k').
+                // Phase u = Ω (time since the turning point sin(θ/2) = k').
                 let u0 = rho * carlson_rf(kc * kc * e, s0 * s0 * e, kc * kc * c0 * c0);
                 let v0 = c0 * carlson_rf(s0 * s0 * e, e, rho * rho);
                 (u0, v0, omega)
@@ -177,7 +177,7 @@ impl PhaseOne {
         self.rate0
     }
 
-    /// ω² = 3g/(4l), 1/s².
+    /// Ω² = 3g/(4l), 1/s².
     pub fn omega2(&self) -> f64 {
         self.omega2
     }
@@ -193,12 +193,12 @@ impl PhaseOne {
 
     /// First time the wall force vanishes (footnote 4 of the note, for a moving start); `None`
     /// at the equilibrium θ₀ = θ̇₀ = 0, where the ladder never moves. If the wall force is
-    /// already ≤ 0 at the start (θ̇₀² ≥ ω² cos θ₀) separation is immediate: t_s = 0.
+    /// already ≤ 0 at the start (θ̇₀² ≥ Ω² cos θ₀) separation is immediate: t_s = 0.
     pub fn separation(&self) -> Option<Separation> {
         if let Orbit::Equilibrium = self.orbit {
             return None;
         }
-        // cos θ₀ − θ̇₀²/ω² in double-double: near immediate separation it is a small difference.
+        // cos θ₀ − θ̇₀²/Ω² in double-double: near immediate separation it is a small difference.
         let margin = cos_minus_ratio(self.theta0.cos(), self.rate0, self.omega2);
         if margin <= 0.0 || margin.is_nan() {
             let (angle, rate) = (self.theta0, self.rate0);
@@ -253,7 +253,7 @@ impl PhaseOne {
         self.theta_rate(t).1
     }
 
-    /// The wall force over m l at time t, F_w/(m l) = sin θ (ω² cos θ − θ̇²): eq. (6) with a_x
+    /// The wall force over m l at time t, F_w/(m l) = sin θ (Ω² cos θ − θ̇²): eq. (6) with a_x
     /// from (8) and θ̈ from (5). Positive (the wall pushes) on 0 < t < t_s, zero at t_s.
     pub fn wall_force_per_ml(&self, t: f64) -> f64 {
         let (theta, rate) = self.theta_rate(t);
@@ -293,11 +293,11 @@ impl PhaseOne {
                 });
                 let kc = D::from(*kc);
                 if *rotation {
-                    // sin(θ/2) = k' sd(u), cos(θ/2) = cd(u), θ̇ = 2ω (k'/k)/dn(u).
+                    // sin(θ/2) = k' sd(u), cos(θ/2) = cd(u), θ̇ = 2Ω (k'/k)/dn(u).
                     let theta = (kc * j.sn).atan2(j.cn) * 2.0;
                     (theta, (kc / *k) / j.dn * (2.0 * omega))
                 } else {
-                    // sin(θ/2) = k'/dn(u), cos(θ/2) = k cn(u)/dn(u), θ̇ = 2ω k k' sn(u)/dn(u).
+                    // sin(θ/2) = k'/dn(u), cos(θ/2) = k cn(u)/dn(u), θ̇ = 2Ω k k' sn(u)/dn(u).
                     let theta = kc.atan2(j.cn * *k) * 2.0;
                     (theta, kc * j.sn / j.dn * (2.0 * omega * k))
                 }

@@ -14,7 +14,7 @@ pub fn two_sum(a: f64, b: f64) -> (f64, f64) {
     (hi, (a - (hi - bb)) + (b - bb))
 }
 
-/// cos θ₀ − θ̇₀²/ω², the wall-force margin ω⁻²(ω² cos θ₀ − θ̇₀²) at the start, with the
+/// cos θ₀ − θ̇₀²/Ω², the wall-force margin Ω⁻²(Ω² cos θ₀ − θ̇₀²) at the start, with the
 /// square and the quotient carried in double-double: the only error left is that of `cos0`.
 pub fn cos_minus_ratio(cos0: f64, rate0: f64, omega2: f64) -> f64 {
     let (p, p_lo) = two_prod(rate0, rate0);
@@ -22,7 +22,7 @@ pub fn cos_minus_ratio(cos0: f64, rate0: f64, omega2: f64) -> f64 {
         return f64::NEG_INFINITY;
     }
     let q = p / omega2;
-    // Remainder of the division, exact by fma: p + p_lo − q ω² = r.
+    // Remainder of the division, exact by fma: p + p_lo − q Ω² = r.
     let r = (-q).mul_add(omega2, p) + p_lo;
     let q_lo = r / omega2;
     let (d, d_lo) = two_sum(cos0, -q);
