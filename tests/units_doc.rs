@@ -11,7 +11,7 @@ use sliding_ladder::ladder::torque::{
 };
 use sliding_ladder::registry::sample::{LadderSample, ParticleSample};
 use sliding_ladder::registry::units::{dimensioned_ladder, dimensioned_particles};
-use sliding_ladder::scalar::{Dim, Dimension};
+use sliding_ladder::scalar::{Dim, Dimension, Scalar};
 use sliding_ladder::sim::{command::to_json, fall, scene};
 use std::collections::BTreeMap;
 

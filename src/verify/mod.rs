@@ -221,6 +221,7 @@ pub fn add_proof(r: &mut EquationResult, e: &Equation) {
     r.proved = v.proved;
     r.proof = v.proof;
     r.proof_seconds = v.seconds;
+}
 
 /// Judge an equation and its print: the print's failures become the equation's problems.
 pub fn judge_with_print(e: &Equation, reports: &[CheckReport], cfg: &Config) -> EquationResult {
@@ -335,7 +336,17 @@ pub fn table(results: &[EquationResult]) -> String {
     let mut out = String::new();
     out.push_str(&format!(
         "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9} {:>6}  {:<14} {}\n",
-        "eq", "sec", "title", "kind", "checks", "cases", "exact", "res/bound", "proved", "units", "status"
+        "eq",
+        "sec",
+        "title",
+        "kind",
+        "checks",
+        "cases",
+        "exact",
+        "res/bound",
+        "proved",
+        "units",
+        "status"
     ));
     for r in results {
         let status = match r.status {
