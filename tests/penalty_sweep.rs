@@ -12,7 +12,9 @@
 use num_dual::DualNum;
 use sliding_ladder::sim::integrators::radau5::Radau5;
 use sliding_ladder::sim::integrators::{Control, Ode};
-use sliding_ladder::sim::penalty::{preloaded_start, separate_with_ode, separation, Contact, Law, PenaltyModel};
+use sliding_ladder::sim::penalty::{
+    preloaded_start, separate_with_ode, separation, Contact, Law, PenaltyModel,
+};
 
 const THETA0: f64 = 0.3;
 const TOL: f64 = 1e-10;
@@ -56,7 +58,11 @@ fn penalty_sweep_meets_the_target_with_ulp_ensembles() {
             let k = ulps(kappa, d);
             let err = angle(k) - rigid();
             let bound = 1e-8 + c / k * (10.0 * 1e4 / k);
-            assert!((err - c / k).abs() <= bound, "κ = {k:e}: {err:e} against c/κ = {:e}", c / k);
+            assert!(
+                (err - c / k).abs() <= bound,
+                "κ = {k:e}: {err:e} against c/κ = {:e}",
+                c / k
+            );
             lo = lo.min(err);
             hi = hi.max(err);
         }
@@ -96,15 +102,66 @@ fn forces_rounded_like_the_cartesian_state_fail_the_target() {
     let kappa = 1e12;
     let errs: Vec<f64> = (-2..=2)
         .map(|d| {
-            let contact = Contact { kappa: ulps(kappa, d), gamma: 0.0 };
+            let contact = Contact {
+                kappa: ulps(kappa, d),
+                gamma: 0.0,
+            };
             let model = PenaltyModel::new(contact, Law::Switched);
             let mut st = Radau5::new(0.0, preloaded_start(&contact, THETA0, 0.0), TOL);
             let r = separate_with_ode(&model, &CartesianRounding(model), &mut st, 200_000);
             r.result.map_or(f64::INFINITY, |s| s.angle - rigid())
         })
         .collect();
-    let worst = errs.iter().map(|e| (e - c / kappa).abs()).fold(0.0, f64::max);
+    let worst = errs
+        .iter()
+        .map(|e| (e - c / kappa).abs())
+        .fold(0.0, f64::max);
     let spread = errs.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
         - errs.iter().cloned().fold(f64::INFINITY, f64::min);
     assert!(worst > 1e-8 || spread > 1e-9, "{errs:?}");
+}
+
+#[test]
+fn the_stiffest_scene_and_the_loose_tolerance_give_the_rigid_answer() {
+    // The two wrong answers of issue 17 (θ_s = 0.5326 at κ = 1e14, 0.388 at κ = 1e12 with
+    // tolerance 1e-6): now within the model's c/κ and 1e-8 of footnote 4's angle.
+    let c = model_constant();
+    for (kappa, tol) in [(1e14, 1e-10), (1e12, 1e-6), (1e15, 1e-10)] {
+        let r = separation(
+            Contact { kappa, gamma: 0.0 },
+            Law::Switched,
+            THETA0,
+            0.0,
+            "radau5",
+            Control::Tolerance(tol),
+            200_000,
+        );
+        let err = r.result.unwrap().angle - rigid();
+        assert!(
+            (err - c / kappa).abs() <= 1e-8,
+            "κ = {kappa:e}, tol {tol:e}: {err:e}"
+        );
+    }
+}
+
+#[test]
+fn a_spurious_zero_is_refused_not_reported() {
+    // Verlet at h ω_c ≈ 2e3 (κ = 1e12, h = 1e-3) blows up; its first zero of the wall force lies
+    // near the start, where the rigid wall pushes with 0.21 m g: an error, never an answer.
+    let r = separation(
+        Contact {
+            kappa: 1e12,
+            gamma: 0.0,
+        },
+        Law::Switched,
+        THETA0,
+        0.0,
+        "verlet",
+        Control::Fixed(1e-3),
+        200_000,
+    );
+    let e = r.result.expect_err("refused");
+    assert!(e.to_string().contains("spurious zero"), "{e}");
+    // The same guard lets a correct run through (the check is not a blanket refusal).
+    assert!(angle(1e12).is_finite());
 }

@@ -208,7 +208,10 @@ fn finite_difference_jacobians_work_in_force_coordinates() {
         let (ad_res, ad, _) = radau_one_sided(kappa, false, 50_000);
         let (fd_res, fd, _) = radau_one_sided(kappa, true, 50_000);
         let (a, f) = (ad_res.unwrap(), fd_res.unwrap());
-        assert!((fd as f64 / ad as f64 - 1.0).abs() < 0.5, "κ={kappa}: {ad} {fd}");
+        assert!(
+            (fd as f64 / ad as f64 - 1.0).abs() < 0.5,
+            "κ={kappa}: {ad} {fd}"
+        );
         assert!((a - f).abs() < 1e-8, "κ={kappa}: {a} {f}");
     }
 }

@@ -289,7 +289,11 @@ pub fn run(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
     };
     let wall = WallPhase::new(&ladder);
     let y0 = [scene.theta0, scene.rate0];
-    let mut stepper = AnyStepper::new(&scene.method, control, 0.0, y0).ok_or_else(|| {
+    // Tiny and subnormal starts: the exact linear motion up to where f64 can follow it.
+    let (t0, y_lead) = super::extreme::linear_lead_in(wall.omega2, y0[0], y0[1])
+        .filter(|(t, _, _)| *t < t_end)
+        .map_or((0.0, y0), |(t, th, w)| (t, [th, w]));
+    let mut stepper = AnyStepper::new(&scene.method, control, t0, y_lead).ok_or_else(|| {
         RunError::Start(format!("method {} does not take {control:?}", scene.method))
     })?;
     let mut obs = TraceObserver {
@@ -301,6 +305,9 @@ pub fn run(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
         force_evals: 0,
     };
     obs.observe(0.0, &y0);
+    if t0 > 0.0 {
+        obs.observe(t0, &y_lead);
+    }
     let sep_event = SeparationEvent(wall.omega2);
     let end1 = integrate_phase(
         &wall,
