@@ -17,7 +17,7 @@ use super::fall::SeparationState;
 use super::integrators::any::AnyStepper;
 use super::integrators::{Control, Stats, Stepper};
 use super::rigid::{separation_factor, Ladder, WallPhase};
-use super::run::{integrate_phase, RunError};
+use super::run::{integrate_phase, Observer, RunError};
 use super::scene::MAX_END_TIME;
 
 /// How the wall phase from a start ends.
@@ -67,18 +67,23 @@ pub fn wall_release(
     let wall = WallPhase::new(ladder);
     let (t0, y0) = linear_lead_in(omega2, theta0, rate0)
         .map_or((0.0, [theta0, rate0]), |(t, th, w)| (t, [th, w]));
-    let mut stepper = AnyStepper::new(method, control, t0, y0)
+    let mut stepper = AnyStepper::new(method, control, 0.0, y0)
         .ok_or_else(|| RunError::Start(format!("method {method} does not take {control:?}")))?;
     // The longest fall the scenes allow (1e4 s at l = g = 1 m, s⁻²), in this ladder's units.
     let t_end = MAX_END_TIME * (ladder.half_length / ladder.gravity).sqrt();
+    // In time since the lead-in (the steppers' step floor is relative to |t|).
     let end = integrate_phase(
         &wall,
         &mut stepper,
         &[&Factor(omega2)],
-        t_end,
+        t_end - t0,
         max_steps,
         &mut (),
-    );
+    )
+    .map(|mut e| {
+        e.t += t0;
+        e
+    });
     let stats = stepper.stats();
     let end = end?;
     match end.event {
@@ -112,7 +117,7 @@ pub fn linear_lead_in(omega2: f64, theta0: f64, rate0: f64) -> Option<(f64, f64,
     let scale = 2f64.powi(600);
     let (p, q) = (theta0 * scale, rate0 * scale / omega);
     let amp = LINEAR_AMPLITUDE;
-    if !(p.abs() < amp * scale && q.abs() < amp * scale) || !(omega > 0.0 && omega.is_finite()) {
+    if !(p.abs() < amp * scale && q.abs() < amp * scale && omega > 0.0 && omega.is_finite()) {
         return None;
     }
     let (a, b) = ((p + q) / scale, (p - q) / scale);
@@ -126,4 +131,16 @@ pub fn linear_lead_in(omega2: f64, theta0: f64, rate0: f64) -> Option<(f64, f64,
     }
     let back = b * (a / (4.0 * amp)); // ½ b e^{−ωt}
     Some((t, amp + back, omega * (amp - back)))
+}
+
+/// An observer that sees times shifted by `.1` (a phase integrated in time since a lead-in).
+pub struct Shifted<'a, O>(pub &'a mut O, pub f64);
+
+impl<const N: usize, O: Observer<N>> Observer<N> for Shifted<'_, O> {
+    fn samples_per_step(&self) -> usize {
+        self.0.samples_per_step()
+    }
+    fn observe(&mut self, t: f64, y: &[f64; N]) {
+        self.0.observe(t + self.1, y);
+    }
 }

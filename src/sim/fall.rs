@@ -293,7 +293,8 @@ pub fn run(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
     let (t0, y_lead) = super::extreme::linear_lead_in(wall.omega2, y0[0], y0[1])
         .filter(|(t, _, _)| *t < t_end)
         .map_or((0.0, y0), |(t, th, w)| (t, [th, w]));
-    let mut stepper = AnyStepper::new(&scene.method, control, t0, y_lead).ok_or_else(|| {
+    // The stepper runs in time since the lead-in (its step floor is relative to |t|).
+    let mut stepper = AnyStepper::new(&scene.method, control, 0.0, y_lead).ok_or_else(|| {
         RunError::Start(format!("method {} does not take {control:?}", scene.method))
     })?;
     let mut obs = TraceObserver {
@@ -309,14 +310,15 @@ pub fn run(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
         obs.observe(t0, &y_lead);
     }
     let sep_event = SeparationEvent(wall.omega2);
-    let end1 = integrate_phase(
+    let mut end1 = integrate_phase(
         &wall,
         &mut stepper,
         &[&sep_event],
-        t_end,
+        t_end - t0,
         max_steps,
-        &mut obs,
+        &mut super::extreme::Shifted(&mut obs, t0),
     )?;
+    end1.t += t0;
     work.wall = stepper.stats();
     work.force_evals += obs.force_evals;
     let mut last = (end1.t, end1.y[0], end1.y[1]);

@@ -86,6 +86,7 @@ mod tests {
     use super::*;
 
     /// M⁻¹ is the inverse of M = ∂P/∂F: M M⁻¹ = I to rounding at any θ (a wrong entry fails).
+    #[allow(clippy::needless_range_loop)]
     #[test]
     fn m_inverse_inverts_m() {
         for theta in [0.0, 0.3, 1.0, 1.5] {
