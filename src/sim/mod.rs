@@ -24,5 +24,6 @@ pub mod penalty_scene;
 pub mod penalty_start;
 pub mod rigid;
 pub mod run;
+pub mod scaled;
 pub mod scene;
 mod scene_checks;
