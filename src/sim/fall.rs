@@ -298,7 +298,12 @@ fn run_rigid(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
     };
     let wall = WallPhase::new(&ladder);
     let y0 = [scene.theta0, scene.rate0];
-    let mut stepper = AnyStepper::new(&scene.method, control, 0.0, y0).ok_or_else(|| {
+    // Tiny and subnormal starts: the exact linear motion up to where f64 can follow it.
+    let (t0, y_lead) = super::extreme::linear_lead_in(wall.omega2, y0[0], y0[1])
+        .filter(|(t, _, _)| *t < t_end)
+        .map_or((0.0, y0), |(t, th, w)| (t, [th, w]));
+    // The stepper runs in time since the lead-in (its step floor is relative to |t|).
+    let mut stepper = AnyStepper::new(&scene.method, control, 0.0, y_lead).ok_or_else(|| {
         RunError::Start(format!("method {} does not take {control:?}", scene.method))
     })?;
     let mut obs = TraceObserver {
@@ -310,15 +315,19 @@ fn run_rigid(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
         force_evals: 0,
     };
     obs.observe(0.0, &y0);
+    if t0 > 0.0 {
+        obs.observe(t0, &y_lead);
+    }
     let sep_event = SeparationEvent(wall.omega2);
-    let end1 = integrate_phase(
+    let mut end1 = integrate_phase(
         &wall,
         &mut stepper,
         &[&sep_event],
-        t_end,
+        t_end - t0,
         max_steps,
-        &mut obs,
+        &mut super::extreme::Shifted(&mut obs, t0),
     )?;
+    end1.t += t0;
     work.wall = stepper.stats();
     work.force_evals += obs.force_evals;
     let mut last = (end1.t, end1.y[0], end1.y[1]);

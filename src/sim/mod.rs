@@ -21,6 +21,7 @@ pub mod integrators;
 pub mod output;
 pub mod penalty;
 pub mod penalty_scene;
+pub mod penalty_start;
 pub mod rigid;
 pub mod run;
 pub mod scaled;
