@@ -4,6 +4,7 @@ pub mod files;
 pub mod plot;
 pub mod stability;
 pub mod stability_extreme;
+pub mod stability_scale;
 pub mod stability_stiff;
 pub mod work_precision;
 pub mod work_precision_fit;
