@@ -52,10 +52,11 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
     },
-    /// Error against run time for every integrator (CSV + SVG with --out).
+    /// Error against run time for every integrator on each scene (CSV + SVG with --out).
     WorkPrecision {
-        /// The scene (default: the built-in from-rest scene θ0 = 0.3).
-        scene: Option<PathBuf>,
+        /// The scenes (default: upright with a tiny push, from rest at 0.1, 0.3, 1.0, 1.5, and
+        /// the full fall to flat from 0.3).
+        scenes: Vec<PathBuf>,
         /// Print JSON (runs[]) instead of a table.
         #[arg(long)]
         json: bool,
@@ -107,8 +108,8 @@ fn main() -> ExitCode {
         ),
         Some(Command::Errata { json }) => verify::errata_command(json, &Config::default()),
         Some(Command::Simulate { scene, json, out }) => sim::simulate(&scene, json, out.as_deref()),
-        Some(Command::WorkPrecision { scene, json, out }) => {
-            sim::work_precision(scene.as_deref(), json, out.as_deref())
+        Some(Command::WorkPrecision { scenes, json, out }) => {
+            sim::work_precision(&scenes, json, out.as_deref())
         }
         Some(Command::Stability { json }) => sliding_ladder::report::stability::command(json),
     }

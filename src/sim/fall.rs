@@ -213,6 +213,10 @@ impl Event<2> for SeparationEvent {
     fn direction(&self) -> Direction {
         Direction::Falling
     }
+    /// d/dt (ω² cos θ − θ̇²) = −ω² sin θ θ̇ − 2 θ̇ θ̈.
+    fn rate(&self, _t: f64, y: &[f64; 2], dy: &[f64; 2]) -> Option<f64> {
+        Some(-self.0 * y[0].sin() * dy[0] - 2.0 * y[1] * dy[1])
+    }
 }
 
 /// Flat: θ − π/2 rises through zero.
@@ -223,6 +227,9 @@ impl Event<4> for FlatEvent {
     }
     fn direction(&self) -> Direction {
         Direction::Rising
+    }
+    fn rate(&self, _t: f64, _y: &[f64; 4], dy: &[f64; 4]) -> Option<f64> {
+        Some(dy[0])
     }
 }
 

@@ -378,6 +378,19 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
         std::array::from_fn(|i| horner(&self.series.y[i][..=p], tau))
     }
 
+    fn interpolate_rate(&self, t: f64) -> Option<[f64; N]> {
+        let tau = t - self.t_prev;
+        let p = self.series.order;
+        Some(std::array::from_fn(|i| {
+            let c = &self.series.y[i];
+            let mut acc = 0.0;
+            for k in (1..=p).rev() {
+                acc = acc * tau + k as f64 * c[k];
+            }
+            acc
+        }))
+    }
+
     fn restart(&mut self, t: f64, y: [f64; N]) {
         let order = self.series.order;
         let stats = self.stats;
