@@ -169,12 +169,10 @@ pub fn prose_units() -> Vec<ProseUnits> {
             stated,
             units,
             units_detail,
-            corrected: erratum.then(|| {
-                if f.problems.is_empty() {
-                    Units::Consistent
-                } else {
-                    Units::Inconsistent
-                }
+            corrected: erratum.then_some(if f.problems.is_empty() {
+                Units::Consistent
+            } else {
+                Units::Inconsistent
             }),
         }
     };
