@@ -7,7 +7,7 @@ use super::files::{write_all, OutFile};
 use super::plot::{PlotSpec, Series};
 use crate::sim::exact::PhaseOne;
 use crate::sim::fall;
-use crate::sim::integrators::{is_adaptive, order, Control, METHODS};
+use crate::sim::integrators::{is_adaptive, order, Control, RIGID_METHODS as METHODS};
 use crate::sim::output::Output;
 use crate::sim::rigid::Ladder;
 use crate::sim::scene::{self, End, Scene};
@@ -41,6 +41,7 @@ pub fn sweep(method: &str) -> Vec<f64> {
     let halves = |h0: f64, n: i32| (0..n).map(|k| h0 / 2f64.powi(k)).collect::<Vec<_>>();
     match method {
         "dop853" => decades(3, 16),
+        "taylor" => decades(3, 16),
         "dopri5" => decades(3, 15),
         "radau5" => decades(3, 13),
         "rk4" => halves(0.1, 10),

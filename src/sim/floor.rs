@@ -95,4 +95,8 @@ impl Ode<4> for FloorPhase {
         let x = (y[1].abs().max(y[3].abs() / self.omega)).max(self.half_length * a);
         [a, x, self.omega * a, self.omega * x]
     }
+    fn taylor_series(&self, series: &mut super::integrators::taylor::Series<4>) -> bool {
+        super::integrators::taylor::floor_series_f64(self.g_over_l, series);
+        true
+    }
 }

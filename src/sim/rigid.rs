@@ -103,4 +103,8 @@ impl Ode<2> for WallPhase {
     fn accel_uses_velocity(&self) -> bool {
         false
     }
+    fn taylor_series(&self, series: &mut super::integrators::taylor::Series<2>) -> bool {
+        super::integrators::taylor::wall_series_f64(self.omega2, series);
+        true
+    }
 }

@@ -1,6 +1,6 @@
 //! The checks of the `[contact]`, `[integrator]` and `[outputs]` sections of a scene.
 
-use super::integrators::{is_adaptive, Control, METHODS};
+use super::integrators::{is_adaptive, Control, RIGID_METHODS, TAYLOR};
 use super::output::Output;
 use super::penalty::{Contact, KAPPA_RANGE};
 use super::rigid::Ladder;
@@ -90,6 +90,13 @@ pub(super) fn check_penalty(
             "\"exact\" is the rigid model's reference; the penalty model needs an integrator (e.g. radau5)",
         ));
     }
+    if method == TAYLOR {
+        return Err(cx.err(
+            Some(i.method.span()),
+            "integrator.method",
+            "\"taylor\" has recursions for the rigid phases only; the penalty model needs another integrator (e.g. radau5)",
+        ));
+    }
     if end != End::Separation {
         return Err(cx.err(
             Some(raw.end.get_ref().at.span()),
@@ -135,13 +142,13 @@ pub(super) fn check_integrator(
         }
         return Ok((method.into(), None));
     }
-    if !METHODS.contains(&method) {
+    if !RIGID_METHODS.contains(&method) {
         return Err(cx.err(
             Some(i.method.span()),
             "integrator.method",
             format!(
                 "unknown method \"{method}\"; allowed: {}, exact",
-                METHODS.join(", ")
+                RIGID_METHODS.join(", ")
             ),
         ));
     }

@@ -6,10 +6,15 @@ use super::euler::Euler;
 use super::radau5::Radau5;
 use super::rk4::Rk4;
 use super::symplectic_euler::SymplecticEuler;
+use super::taylor::Taylor;
 use super::verlet::Verlet;
 use super::{Control, Ode, Stats, StepError, Stepper};
 
 /// Any integrator of this module.
+///
+/// Unboxed although the Taylor variant is large (its series buffers): one stepper per phase
+/// lives on the stack, and boxing would add a heap allocation to every run.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug)]
 pub enum AnyStepper<const N: usize> {
     /// Explicit Euler.
@@ -26,10 +31,12 @@ pub enum AnyStepper<const N: usize> {
     Dop853(Dop853<N>),
     /// Radau IIA order 5.
     Radau5(Radau5<N>),
+    /// Taylor series (models with [`super::Ode::taylor_series`] only).
+    Taylor(Taylor<N>),
 }
 
 impl<const N: usize> AnyStepper<N> {
-    /// The method called `name` (see [`super::METHODS`]) with its step or tolerance, or None
+    /// The method called `name` (see [`super::RIGID_METHODS`]) with its step or tolerance, or None
     /// when the name is unknown or the control does not fit the method.
     pub fn new(name: &str, control: Control, t0: f64, y0: [f64; N]) -> Option<Self> {
         Some(match (name, control) {
@@ -42,6 +49,7 @@ impl<const N: usize> AnyStepper<N> {
             ("dopri5", Control::Tolerance(r)) => AnyStepper::Dopri5(Dopri5::new(t0, y0, r)),
             ("dop853", Control::Tolerance(r)) => AnyStepper::Dop853(Dop853::new(t0, y0, r)),
             ("radau5", Control::Tolerance(r)) => AnyStepper::Radau5(Radau5::new(t0, y0, r)),
+            ("taylor", Control::Tolerance(r)) => AnyStepper::Taylor(Taylor::new(t0, y0, r)),
             _ => return None,
         })
     }
@@ -57,6 +65,7 @@ macro_rules! each {
             AnyStepper::Dopri5($s) => $e,
             AnyStepper::Dop853($s) => $e,
             AnyStepper::Radau5($s) => $e,
+            AnyStepper::Taylor($s) => $e,
         }
     };
 }

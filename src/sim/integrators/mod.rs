@@ -27,6 +27,7 @@ pub mod fixed;
 pub mod radau5;
 pub mod rk4;
 pub mod symplectic_euler;
+pub mod taylor;
 pub mod verlet;
 
 use num_dual::DualNum;
@@ -55,6 +56,13 @@ pub trait Ode<const N: usize> {
     /// (then Störmer-Verlet solves its implicit half step by fixed-point iteration).
     fn accel_uses_velocity(&self) -> bool {
         true
+    }
+
+    /// The Taylor coefficients of the solution through `series.y[i][0]` (with sin and cos of
+    /// `y[0]` in `series.sin[0]`, `series.cos[0]`) to order `series.order`, for the Taylor
+    /// method ([`taylor`]). Default: the model has no recursion (`false`).
+    fn taylor_series(&self, _series: &mut taylor::Series<N>) -> bool {
+        false
     }
 }
 
@@ -86,6 +94,8 @@ pub enum StepError {
     NotFinite { t: f64 },
     /// Newton's method did not converge even at tiny steps (implicit methods).
     NewtonFailed { t: f64 },
+    /// The Taylor method was asked to integrate a model without Taylor recursions.
+    NoTaylorSeries { t: f64 },
 }
 
 impl fmt::Display for StepError {
@@ -99,6 +109,10 @@ impl fmt::Display for StepError {
             }
             StepError::NotFinite { t } => write!(f, "state became non-finite at t = {t}"),
             StepError::NewtonFailed { t } => write!(f, "Newton iteration failed at t = {t}"),
+            StepError::NoTaylorSeries { t } => write!(
+                f,
+                "the Taylor method has no recursion for this model (at t = {t}); it covers the rigid wall and floor phases"
+            ),
         }
     }
 }
@@ -214,12 +228,28 @@ pub const METHODS: [&str; 7] = [
     "radau5",
 ];
 
+/// The Taylor method (rigid wall and floor phases only: it needs [`Ode::taylor_series`]).
+pub const TAYLOR: &str = "taylor";
+
+/// Every method a rigid scene may name: [`METHODS`] (any model) and [`TAYLOR`].
+pub const RIGID_METHODS: [&str; 8] = [
+    "euler",
+    "symplectic-euler",
+    "verlet",
+    "rk4",
+    "dopri5",
+    "dop853",
+    "radau5",
+    TAYLOR,
+];
+
 /// Whether `method` takes a tolerance (adaptive) rather than a step.
 pub fn is_adaptive(method: &str) -> bool {
-    matches!(method, "dopri5" | "dop853" | "radau5")
+    matches!(method, "dopri5" | "dop853" | "radau5" | TAYLOR)
 }
 
-/// Theoretical order of each method.
+/// Theoretical order of each method (None for the Taylor method: its order follows the
+/// tolerance, [`taylor::order_for`]).
 pub fn order(method: &str) -> Option<u32> {
     Some(match method {
         "euler" | "symplectic-euler" => 1,
