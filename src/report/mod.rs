@@ -4,5 +4,6 @@ pub mod files;
 pub mod plot;
 pub mod stability;
 pub mod stability_extreme;
+pub mod stability_scale;
 pub mod stability_stiff;
 pub mod work_precision;

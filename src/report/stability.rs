@@ -9,6 +9,8 @@
 //! * `extreme`: starts from almost upright to almost flat, pushes up to and past the speed at
 //!   which the top leaves at once, the equilibrium;
 //! * `scale`: m, l, g at 1e-30 and 1e30;
+//! * `sweep`: the whole fall to flat at random scales and tolerances, every adaptive method
+//!   ([`super::stability_scale`]);
 //! * `long`: 1e7 steps with nothing stored, and the peak memory of the process.
 //!
 //! **Verdicts.** `ok` when the run ends as theory says and its error is within the case's
@@ -138,6 +140,7 @@ pub fn all_cases(mut tick: impl FnMut(&str, u64)) -> (Vec<Case>, stability_stiff
     cases.extend(stability_stiff::lagrange_cases(&mut tick));
     cases.extend(stability_extreme::extreme_cases(&mut tick));
     cases.extend(stability_extreme::scale_cases(&mut tick));
+    cases.extend(super::stability_scale::sweep_cases(&mut tick));
     cases.extend(stability_extreme::long_cases(&mut tick));
     (cases, conv)
 }
@@ -148,7 +151,10 @@ fn progress() -> ProgressBar {
     } else {
         ProgressDrawTarget::hidden()
     };
-    ProgressBar::with_draw_target(Some(stability_stiff::EXPECTED_RUNS), target)
+    ProgressBar::with_draw_target(
+        Some(stability_stiff::EXPECTED_RUNS + super::stability_scale::SWEEP_CASES as u64),
+        target,
+    )
 }
 
 /// `ladder stability [--json]`.

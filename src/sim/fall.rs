@@ -10,6 +10,7 @@ use super::integrators::{Stats, Stepper};
 use super::output::Output;
 use super::rigid::{self, Ladder, WallPhase};
 use super::run::{integrate_phase, Observer, RunError};
+use super::scaled::Units;
 use super::scene::{ContactModel, End, Scene, MAX_END_TIME};
 use std::cell::Cell;
 use std::f64::consts::FRAC_PI_2;
@@ -244,11 +245,20 @@ impl Event<4> for LiftOffEvent {
     }
 }
 
-/// Run `scene` with at most `max_steps` steps per phase.
+/// Run `scene` with at most `max_steps` steps per phase. Rigid scenes run in the scene's own
+/// units (see [`super::scaled`]), penalty scenes in the penalty model's; results are in SI.
 pub fn run(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
     if let ContactModel::Penalty { stiffness, damping } = scene.contact {
         return super::penalty_scene::run(scene, stiffness, damping, max_steps);
     }
+    let units = Units::of(&scene.ladder);
+    run_rigid(&units.scale_scene(scene), max_steps)
+        .map(|o| units.outcome_to_si(o))
+        .map_err(|e| units.error_to_si(e))
+}
+
+/// A rigid `scene` already in its own units (m = l = g = 1).
+fn run_rigid(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
     let plan = Plan::of(scene);
     let ladder = scene.ladder;
     let (m, l, g) = (ladder.mass, ladder.half_length, ladder.gravity);
@@ -256,8 +266,7 @@ pub fn run(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
     let mut work = Work::default();
     let t_end = match scene.end {
         End::Time(t) => t,
-        // MAX_END_TIME at l = g = 1, in this ladder's time unit √(l/g) (scenes span 1e-30..1e30).
-        _ => MAX_END_TIME * (l / g).sqrt().max(1.0),
+        _ => MAX_END_TIME,
     };
     let e0 = plan
         .energy

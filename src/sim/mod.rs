@@ -23,5 +23,6 @@ pub mod penalty;
 pub mod penalty_scene;
 pub mod rigid;
 pub mod run;
+pub mod scaled;
 pub mod scene;
 mod scene_checks;

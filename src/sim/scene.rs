@@ -8,7 +8,10 @@
 use super::integrators::Control;
 use super::output::Output;
 use super::rigid::Ladder;
-use super::scene_checks::{check_contact, check_integrator, check_outputs, check_penalty};
+use super::scaled::Units;
+use super::scene_checks::{
+    check_contact, check_end, check_integrator, check_outputs, check_penalty,
+};
 use serde::Deserialize;
 use std::fmt;
 use std::path::Path;
@@ -120,12 +123,14 @@ pub(super) struct RawIntegrator {
     pub(super) method: Spanned<String>,
     pub(super) tolerance: Option<Spanned<f64>>,
     pub(super) step: Option<Spanned<f64>>,
+    pub(super) scaled_step: Option<Spanned<f64>>,
 }
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawEnd {
     pub(super) at: Spanned<String>,
     pub(super) time: Option<Spanned<f64>>,
+    pub(super) scaled_time: Option<Spanned<f64>>,
 }
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -135,9 +140,12 @@ pub(super) struct RawOutputs {
 
 /// Smallest tolerance accepted (below it f64 rounding dominates any error estimate).
 pub const MIN_TOLERANCE: f64 = 1e-16;
-/// Smallest fixed step accepted, s (a fall takes seconds: more steps than this allows is absurd).
+/// Smallest fixed step accepted, in units of √(l/g) (a fall takes a few: more steps than this
+/// allows is absurd).
 pub const MIN_STEP: f64 = 1e-6;
-/// Longest end time accepted, s.
+/// Longest fixed step accepted, in units of √(l/g) (the event-safe step is 0.58 of it at rest).
+pub const MAX_STEP: f64 = 1.0;
+/// Longest end time accepted, in units of √(l/g).
 pub const MAX_END_TIME: f64 = 1e4;
 
 pub(super) struct Ctx<'a> {
@@ -195,6 +203,35 @@ impl Ctx<'_> {
             ));
         }
         Ok(x)
+    }
+    /// A duration given either in seconds (`keys.0`) or in units of √(l/g) = `unit` s
+    /// (`keys.1`), at most one of them; `ok` judges it in units of √(l/g). Returns it in
+    /// seconds with the span of the key that gave it.
+    pub(super) fn time_like(
+        &self,
+        seconds: Option<&Spanned<f64>>,
+        scaled: Option<&Spanned<f64>>,
+        keys: (&str, &str),
+        unit: f64,
+        ok: impl Fn(f64) -> bool,
+        allowed: &str,
+    ) -> Result<Option<(f64, std::ops::Range<usize>)>, SceneError> {
+        match (seconds, scaled) {
+            (Some(_), Some(b)) => Err(self.err(
+                Some(b.span()),
+                keys.1,
+                format!("give {} or {}, not both", keys.0, keys.1),
+            )),
+            (Some(v), None) => {
+                let x = self.number(v, keys.0, |x| ok(x / unit), allowed)?;
+                Ok(Some((x, v.span())))
+            }
+            (None, Some(v)) => {
+                let x = self.number(v, keys.1, &ok, allowed)?;
+                Ok(Some((x * unit, v.span())))
+            }
+            (None, None) => Ok(None),
+        }
     }
     /// The `section.key` around byte `pos` (for toml's own errors, which carry a span only).
     fn field_at(&self, pos: usize) -> String {
@@ -285,39 +322,10 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
         )));
     }
     let contact = check_contact(&cx, raw.contact.get_ref(), &ladder)?;
-    let (method, control) = check_integrator(&cx, raw.integrator.get_ref())?;
-    let e = raw.end.get_ref();
-    let end = match (e.at.get_ref().as_str(), &e.time) {
-        ("separation", None) => End::Separation,
-        ("flat", None) => End::Flat,
-        ("time", Some(t)) => End::Time(cx.number(
-            t,
-            "end.time",
-            |x| x > 0.0 && x <= MAX_END_TIME,
-            "a time in (0, 1e4] s",
-        )?),
-        ("time", None) => {
-            return Err(cx.err(
-                Some(e.at.span()),
-                "end.time",
-                "end.at = \"time\" needs end.time (s)",
-            ))
-        }
-        ("separation" | "flat", Some(t)) => {
-            return Err(cx.err(
-                Some(t.span()),
-                "end.time",
-                "end.time is only allowed with end.at = \"time\"",
-            ))
-        }
-        (other, _) => {
-            return Err(cx.err(
-                Some(e.at.span()),
-                "end.at",
-                format!("unknown end \"{other}\"; allowed: \"separation\", \"flat\", \"time\""),
-            ))
-        }
-    };
+    // The scene's time unit √(l/g): steps and end times are limited in it (see `sim::scaled`).
+    let unit = Units::of(&ladder).time;
+    let (method, control) = check_integrator(&cx, raw.integrator.get_ref(), unit)?;
+    let end = check_end(&cx, raw.end.get_ref(), unit)?;
     if theta0 == 0.0 && rate0 == 0.0 && !matches!(end, End::Time(_)) {
         return Err(cx.err(Some(s.angle.span()), "start", "θ0 = 0 with θ̇0 = 0 is the equilibrium: the ladder never leaves the wall; give angle > 0 or angular_velocity > 0"));
     }

@@ -5,8 +5,8 @@ use super::output::Output;
 use super::penalty::{Contact, KAPPA_RANGE};
 use super::rigid::Ladder;
 use super::scene::{
-    ContactModel, Ctx, End, Raw, RawContact, RawIntegrator, RawOutputs, SceneError, MIN_STEP,
-    MIN_TOLERANCE,
+    ContactModel, Ctx, End, Raw, RawContact, RawEnd, RawIntegrator, RawOutputs, SceneError,
+    MAX_END_TIME, MAX_STEP, MIN_STEP, MIN_TOLERANCE,
 };
 
 pub(super) fn check_contact(
@@ -130,10 +130,16 @@ const PENALTY_OUTPUTS: [Output; 5] = [
 pub(super) fn check_integrator(
     cx: &Ctx,
     i: &RawIntegrator,
+    unit: f64,
 ) -> Result<(String, Option<Control>), SceneError> {
     let method = i.method.get_ref().as_str();
     if method == "exact" {
-        if let Some(v) = i.tolerance.as_ref().or(i.step.as_ref()) {
+        if let Some(v) = i
+            .tolerance
+            .as_ref()
+            .or(i.step.as_ref())
+            .or(i.scaled_step.as_ref())
+        {
             return Err(cx.err(
                 Some(v.span()),
                 "integrator",
@@ -153,7 +159,7 @@ pub(super) fn check_integrator(
         ));
     }
     let control = if is_adaptive(method) {
-        if let Some(s) = &i.step {
+        if let Some(s) = i.step.as_ref().or(i.scaled_step.as_ref()) {
             return Err(cx.err(
                 Some(s.span()),
                 "integrator.step",
@@ -181,19 +187,27 @@ pub(super) fn check_integrator(
                 format!("\"{method}\" has a fixed step: give step, not tolerance"),
             ));
         }
-        let Some(s) = &i.step else {
+        let allowed = format!(
+            "a step in [{MIN_STEP:e}, {MAX_STEP}] √(l/g) = [{:e}, {:e}] s (or scaled_step in [{MIN_STEP:e}, {MAX_STEP}])",
+            MIN_STEP * unit,
+            MAX_STEP * unit
+        );
+        let Some((h, _)) = cx.time_like(
+            i.step.as_ref(),
+            i.scaled_step.as_ref(),
+            ("integrator.step", "integrator.scaled_step"),
+            unit,
+            |x| (MIN_STEP..=MAX_STEP).contains(&x),
+            &allowed,
+        )?
+        else {
             return Err(cx.err(
                 Some(i.method.span()),
                 "integrator.step",
-                format!("\"{method}\" needs a step in [1e-6, 1] s"),
+                format!("\"{method}\" needs {allowed}"),
             ));
         };
-        Control::Fixed(cx.number(
-            s,
-            "integrator.step",
-            |x| (MIN_STEP..=1.0).contains(&x),
-            "a step in [1e-6, 1] s",
-        )?)
+        Control::Fixed(h)
     };
     Ok((method.into(), Some(control)))
 }
@@ -238,4 +252,40 @@ pub(super) fn check_outputs(
         out.push(x);
     }
     Ok(out)
+}
+
+/// `[end]`: `at` and, for `at = "time"`, `time` (s) or `scaled_time` (units of √(l/g) = `unit` s).
+pub(super) fn check_end(cx: &Ctx, e: &RawEnd, unit: f64) -> Result<End, SceneError> {
+    let allowed = format!(
+        "a time in (0, {MAX_END_TIME:e}] √(l/g) = (0, {:e}] s (or scaled_time in (0, {MAX_END_TIME:e}])",
+        MAX_END_TIME * unit
+    );
+    let time = cx.time_like(
+        e.time.as_ref(),
+        e.scaled_time.as_ref(),
+        ("end.time", "end.scaled_time"),
+        unit,
+        |x| x > 0.0 && x <= MAX_END_TIME,
+        &allowed,
+    )?;
+    match (e.at.get_ref().as_str(), time) {
+        ("separation", None) => Ok(End::Separation),
+        ("flat", None) => Ok(End::Flat),
+        ("time", Some((t, _))) => Ok(End::Time(t)),
+        ("time", None) => Err(cx.err(
+            Some(e.at.span()),
+            "end.time",
+            "end.at = \"time\" needs end.time (s) or end.scaled_time (units of √(l/g))",
+        )),
+        ("separation" | "flat", Some((_, span))) => Err(cx.err(
+            Some(span),
+            "end.time",
+            "end.time is only allowed with end.at = \"time\"",
+        )),
+        (other, _) => Err(cx.err(
+            Some(e.at.span()),
+            "end.at",
+            format!("unknown end \"{other}\"; allowed: \"separation\", \"flat\", \"time\""),
+        )),
+    }
 }
