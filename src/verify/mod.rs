@@ -3,6 +3,7 @@
 pub mod claims;
 pub mod command;
 pub mod errata;
+pub mod legend;
 
 use crate::registry::check::{run_check, CheckReport, Config};
 use crate::registry::{equations, Equation, Kind};
