@@ -34,6 +34,9 @@ enum Command {
         /// Seed of the random states.
         #[arg(long, default_value_t = Config::default().seed)]
         seed: u64,
+        /// Show only these displays: equation numbers or sections, e.g. `25,28` or `2.5`.
+        #[arg(long)]
+        only: Option<String>,
     },
     /// The note's misprints: printed and corrected forms with their residuals.
     Errata {
@@ -84,7 +87,7 @@ fn main() -> ExitCode {
     };
     match cli.command {
         None => {
-            let verified = verify::verify(false, &Config::default());
+            let verified = verify::verify(false, &Config::default(), None);
             println!();
             let simulated = sim::simulate_builtin_classic();
             if verified == ExitCode::SUCCESS {
@@ -98,6 +101,7 @@ fn main() -> ExitCode {
             cases,
             exact_points,
             seed,
+            only,
         }) => verify::verify(
             json,
             &Config {
@@ -105,6 +109,7 @@ fn main() -> ExitCode {
                 exact_points,
                 seed,
             },
+            only.as_deref(),
         ),
         Some(Command::Errata { json }) => verify::errata_command(json, &Config::default()),
         Some(Command::Simulate { scene, json, out }) => sim::simulate(&scene, json, out.as_deref()),

@@ -5,6 +5,7 @@ pub mod command;
 pub mod errata;
 pub mod proof;
 pub mod units;
+pub mod legend;
 
 use crate::registry::check::{run_check, CheckReport, Config};
 use crate::registry::units::{equation_units, Units};

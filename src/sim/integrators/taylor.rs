@@ -90,7 +90,7 @@ pub fn sin_cos_coefficient<S: Scalar>(inv_k: &S, d: &[S], sin: &[S], cos: &[S]) 
     (s * inv_k.clone(), -(c * inv_k.clone()))
 }
 
-/// Taylor coefficients of the wall phase, eq. (5) θ̈ = ω² sin θ, to order p = `theta.len() − 1`.
+/// Taylor coefficients of the wall phase, eq. (5) θ̈ = Ω² sin θ, to order p = `theta.len() − 1`.
 ///
 /// On entry `theta[0]`, `rate[0]`, `sin[0] = sin θ0`, `cos[0] = cos θ0` hold the start; on return
 /// every slice holds its series to order p. `inv[k] = 1/k` for k ≤ p.
