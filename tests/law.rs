@@ -146,5 +146,8 @@ fn only_selects_rows_by_number_or_section_and_rejects_unknown_items() {
     assert!(only(all.clone(), "91").is_err());
     assert!(only(all.clone(), "2.9").is_err());
     let lines = law_lines(&picked);
-    assert!(lines.contains("(25)  2nd `=`") && !lines.contains("(17)"), "{lines}");
+    assert!(
+        lines.contains("(25)  2nd `=`") && !lines.contains("(17)"),
+        "{lines}"
+    );
 }

@@ -3,9 +3,9 @@
 pub mod claims;
 pub mod command;
 pub mod errata;
+pub mod legend;
 pub mod proof;
 pub mod units;
-pub mod legend;
 
 use crate::registry::check::{run_check, CheckReport, Config};
 use crate::registry::units::{equation_units, Units};
