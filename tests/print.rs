@@ -3,7 +3,7 @@
 //! the table does not know makes the display fail, naming the form.
 
 use sliding_ladder::print::parser::canonical;
-use sliding_ladder::registry::check::Config;
+use sliding_ladder::registry::check::{run_check, Config};
 use sliding_ladder::registry::print_check::{check_print, check_print_with, MISPRINTS};
 use sliding_ladder::registry::{equations, printed_latex, Equation};
 use sliding_ladder::verify::{judge, judge_print, Status};
@@ -53,9 +53,11 @@ fn an_edited_coefficient_fails_the_display_naming_the_form() {
         r"+ 3ml^2\cos^2\theta\ddot{\theta}",
     );
     assert_ne!(edited, printed, "the edit must apply");
-    let ok = judge_print(judge(&e, &[]), &e, printed, &quick());
+    // Judge on the display's own checks: (25) marks its law step, which needs the off-motion run.
+    let reports: Vec<_> = e.checks.iter().map(|c| run_check(c, &quick())).collect();
+    let ok = judge_print(judge(&e, &reports), &e, printed, &quick());
     assert_ne!(ok.status, Status::Failed, "{:?}", ok.problems);
-    let r = judge_print(judge(&e, &[]), &e, &edited, &quick());
+    let r = judge_print(judge(&e, &reports), &e, &edited, &quick());
     assert_eq!(r.status, Status::Failed);
     assert_eq!(r.label, "(25)");
     let msg = r.problems.join("\n");
