@@ -48,6 +48,9 @@ impl fmt::Display for SceneError {
     }
 }
 
+/// A duration in seconds, the span of its value and the key that gave it.
+pub(super) type TimeLike<'k> = (f64, std::ops::Range<usize>, &'k str);
+
 pub(super) struct Ctx<'a> {
     pub(super) file: &'a str,
     pub(super) text: &'a str,
@@ -127,7 +130,7 @@ impl Ctx<'_> {
         unit: f64,
         ok: impl Fn(f64) -> bool,
         allowed: &str,
-    ) -> Result<Option<(f64, std::ops::Range<usize>, &'k str)>, SceneError> {
+    ) -> Result<Option<TimeLike<'k>>, SceneError> {
         match (seconds, scaled) {
             (Some(_), Some(b)) => Err(self.err(
                 Some(b.span()),
