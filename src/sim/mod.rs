@@ -27,3 +27,5 @@ pub mod run;
 pub mod scaled;
 pub mod scene;
 mod scene_checks;
+mod scene_errors;
+mod scene_shape;
