@@ -13,20 +13,21 @@ const ONCE: Timing = Timing {
     max: 1,
 };
 
-/// The issue's criterion, held on the upright start (fit 8.36 over rhs 401..806). From rest the
-/// fitted range is short (rhs 65..160 at 0.3, 89..231 at 0.1: the event-safe step limit shapes
-/// the loose tolerances) and the fits come out 7.00 and 5.35: printed here and reported as open
-/// in issue 13, not hidden by a looser bound.
+/// The issue's criterion, held on the upright start and on θ0 = 0.1 from rest. Measured with
+/// the fitting rule of `work_precision_fit` (ties at the step limit out, floor from the sweep's
+/// own rounding level): upright 8.12 over rhs 413..1059, θ0 = 0.1 8.29 over 113..281; θ0 = 0.3
+/// comes out 8.99 over 65..185 (five runs of a short fall: printed, not held, as it sits on the
+/// edge); θ0 = 1 and 1.5 have fewer than three runs in range (printed as None).
 #[test]
 fn dop853_order_is_within_one_of_eight_on_the_fitted_range() {
     for sc in default_scenes().iter().filter(|s| s.end == End::Separation) {
         let runs = measure(sc, &["dop853"], ONCE, |_| {}).unwrap();
         let fit = observed_order(&runs, "dop853");
         println!("{}: {fit:?}", sc.file);
-        if sc.theta0 == 0.0 {
+        if sc.theta0 == 0.0 || sc.theta0 == 0.1 {
             let fit = fit.unwrap();
             assert!((fit.order - 8.0).abs() <= 1.0, "{}: {fit:?}", sc.file);
-            assert!(fit.runs >= 3 && fit.error_range.1 >= 1e-13);
+            assert!(fit.runs >= 3 && fit.error_range.1 >= fit.floor, "{fit:?}");
         }
     }
 }

@@ -146,16 +146,17 @@ fn print_report(rep: &SceneReport) {
         );
     }
     println!(
-        "observed order: slope of −ln(error) against ln(rhs evaluations) over runs with error in [{:.0e}, {:.0e}] whose work grows (see work_precision_fit)",
+        "observed order: slope of −ln(error) against ln(rhs evaluations) over runs with error in [floor, {:.0e}] whose work grows and is not tied (floor: min({:.0e}, {} × the sweep's rounding level); see work_precision_fit)",
+        super::work_precision_fit::ASYMPTOTIC,
         super::work_precision_fit::FLOOR,
-        super::work_precision_fit::ASYMPTOTIC
+        super::work_precision_fit::ROUNDING_MARGIN,
     );
     for (m, theory, fit) in &rep.orders {
         let theory = theory.map_or("p(tol)".to_string(), |p| p.to_string());
         match fit {
             Some(f) => println!(
-                "  {m:<17} theoretical {theory:<6} observed {:.2} over {} runs, rhs {}..{}, error {:.1e}..{:.1e}",
-                f.order, f.runs, f.rhs_range.0, f.rhs_range.1, f.error_range.0, f.error_range.1
+                "  {m:<17} theoretical {theory:<6} observed {:.2} over {} runs, rhs {}..{}, error {:.1e}..{:.1e} (floor {:.0e})",
+                f.order, f.runs, f.rhs_range.0, f.rhs_range.1, f.error_range.0, f.error_range.1, f.floor
             ),
             None => println!("  {m:<17} theoretical {theory:<6} observed n/a (fewer than 3 runs in range)"),
         }
