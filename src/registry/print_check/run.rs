@@ -140,7 +140,7 @@ pub fn check_print_with(
     }
     if float_failures > 0 {
         rep.problems.push(format!(
-            "print: {float_failures} of {float_cases} float states out of tolerance; worst {:.3e} × bound at {} '{}'",
+            "print: {float_failures} of {float_cases} float states out of tolerance; worst residual {:.3e} × its error bound at {} '{}'",
             worst.0,
             worst.1,
             form_text(&chains, worst.1)
