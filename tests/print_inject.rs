@@ -19,10 +19,10 @@ fn quick() -> Config {
     }
 }
 
-/// Run injections; return (caught, neutral, missed) and the misses.
-fn sweep(list: &[Injection]) -> (usize, usize, Vec<String>) {
+/// Run injections; return the number caught, the neutral typos and the misses.
+fn sweep(list: &[Injection]) -> (usize, Vec<String>, Vec<String>) {
     let eqs = equations();
-    let (mut caught, mut neutral, mut missed) = (0, 0, Vec::new());
+    let (mut caught, mut neutral, mut missed) = (0, Vec::new(), Vec::new());
     for inj in list {
         let e = eqs
             .iter()
@@ -37,7 +37,9 @@ fn sweep(list: &[Injection]) -> (usize, usize, Vec<String>) {
                 );
                 caught += 1;
             }
-            Outcome::Neutral => neutral += 1,
+            Outcome::Neutral => {
+                neutral.push(format!("({}) {:?}: {}", inj.number, inj.typo, inj.latex))
+            }
             Outcome::Missed => {
                 missed.push(format!("({}) {:?}: {}", inj.number, inj.typo, inj.latex))
             }
@@ -68,7 +70,7 @@ fn every_sort_of_typo_occurs_and_a_fixed_sample_is_caught() {
     let sample: Vec<Injection> = all.choose_multiple(&mut rng, 24).cloned().collect();
     let (caught, neutral, missed) = sweep(&sample);
     assert!(missed.is_empty(), "{missed:#?}");
-    assert!(caught >= 20, "caught {caught}, neutral {neutral}");
+    assert!(caught >= 20, "caught {caught}, neutral {neutral:#?}");
 }
 
 #[test]
@@ -91,11 +93,15 @@ fn full_sweep_catch_rate() {
     let (caught, neutral, missed) = sweep(&all);
     let counted = caught + missed.len();
     println!(
-        "injection sweep: {} typos in 90 displays; {caught} caught, {neutral} neutral (value unchanged), {} missed; catch rate {:.1}% of the {counted} that change a value",
+        "injection sweep: {} typos in 90 displays; {caught} caught, {} neutral (value unchanged), {} missed; catch rate {:.1}% of the {counted} that change a value",
         all.len(),
+        neutral.len(),
         missed.len(),
         100.0 * caught as f64 / counted.max(1) as f64
     );
+    for n in &neutral {
+        println!("neutral: {n}");
+    }
     for m in &missed {
         println!("missed: {m}");
     }

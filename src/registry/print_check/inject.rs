@@ -117,8 +117,21 @@ pub fn injections(number: u32, latex: &str) -> Vec<Injection> {
 /// Check one typo.
 pub fn run_injection(e: &Equation, inj: &Injection, cfg: &Config) -> Outcome {
     let rep = check_print(e, &inj.latex, cfg);
-    if let Some(p) = rep.problems.first().or(rep.unparsed.first()) {
-        return Outcome::Caught(p.clone());
+    // The same three verdicts `verify::judge_print` fails a display on: a chain that breaks, a
+    // form that no longer parses, and a Rust form that equals no printed form (the only witness
+    // when the typo hits the one printed side of an erratum's chain).
+    let code = rep
+        .code_mismatches
+        .first()
+        .map(|c| format!("print vs code: {c}"));
+    if let Some(p) = rep
+        .problems
+        .first()
+        .or(rep.unparsed.first())
+        .cloned()
+        .or(code)
+    {
+        return Outcome::Caught(p);
     }
     if same_values(e, &inj.latex) {
         Outcome::Neutral
