@@ -2,6 +2,7 @@
 //! phase to flat. A [`Plan`] made from the outputs decides what is built, evaluated and stored;
 //! [`Work`] counts it so that tests can check that nothing else was done.
 
+use super::complement;
 use super::event::{Direction, Event};
 use super::exact::PhaseOne;
 use super::floor::{self, FloorPhase};
@@ -325,8 +326,14 @@ fn run_rigid(
     };
     let wall = WallPhase::new(&ladder);
     let y0 = [scene.theta0, scene.rate0];
+    // Near the floor the wall phase runs in φ = π/2 − θ (see `super::complement`).
+    let in_complement = complement::applies(y_lead[0]);
+    let start = match in_complement {
+        true => [complement::complement(y_lead[0]), -y_lead[1]],
+        false => y_lead,
+    };
     // The stepper runs in time since the lead-in (its step floor is relative to |t|).
-    let mut stepper = AnyStepper::new(&scene.method, control, 0.0, y_lead).ok_or_else(|| {
+    let mut stepper = AnyStepper::new(&scene.method, control, 0.0, start).ok_or_else(|| {
         RunError::Start(format!("method {} does not take {control:?}", scene.method))
     })?;
     let mut obs = TraceObserver {
@@ -341,15 +348,31 @@ fn run_rigid(
     if t0 > 0.0 {
         obs.observe(t0, &y_lead);
     }
-    let sep_event = SeparationEvent(wall.omega2);
-    let mut end1 = integrate_phase(
-        &wall,
-        &mut stepper,
-        &[&sep_event],
-        t_end - t0,
-        max_steps,
-        &mut super::extreme::Shifted(&mut obs, t0),
-    )?;
+    let mut shifted = super::extreme::Shifted(&mut obs, t0);
+    let mut end1 = if in_complement {
+        let sys = complement::ComplementWall::new(&ladder);
+        let sep_event = complement::ComplementSeparation(sys.omega2);
+        let mut e = integrate_phase(
+            &sys,
+            &mut stepper,
+            &[&sep_event],
+            t_end - t0,
+            max_steps,
+            &mut complement::InTheta(&mut shifted),
+        )?;
+        e.y = complement::to_theta(&e.y);
+        e
+    } else {
+        let sep_event = SeparationEvent(wall.omega2);
+        integrate_phase(
+            &wall,
+            &mut stepper,
+            &[&sep_event],
+            t_end - t0,
+            max_steps,
+            &mut shifted,
+        )?
+    };
     end1.t += t0;
     work.wall = stepper.stats();
     work.force_evals += obs.force_evals;

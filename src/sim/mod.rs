@@ -8,9 +8,11 @@
 //! Stiff and extreme cases: [`penalty`] (the ladder on one-sided springs, beyond the note) and
 //! [`penalty_scene`] (scenes with `contact.model = "penalty"`), [`constrained`] (full
 //! coordinates with Lagrange multipliers and their drift), [`extreme`] (the wall phase at the
-//! edges of its domain: equilibrium, immediate release, any scale).
+//! edges of its domain: equilibrium, immediate release, any scale), [`complement`] (the wall
+//! phase near the floor, in φ = π/2 − θ).
 
 pub mod command;
+pub mod complement;
 pub mod constrained;
 pub mod event;
 pub mod exact;

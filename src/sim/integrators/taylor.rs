@@ -232,6 +232,46 @@ pub fn wall_series_f64(omega2: f64, s: &mut Series<2>) {
     );
 }
 
+/// Taylor coefficients of the wall phase in the complement φ = π/2 − θ, φ̈ = −Ω² cos φ (eq. (5)
+/// with sin θ = cos φ), to order p = `phi.len() − 1`; `sin`, `cos` are those of φ. Same entry
+/// and return conventions as [`wall_series`].
+pub fn complement_series<S: Scalar>(
+    omega2: &S,
+    inv: &[S],
+    phi: &mut [S],
+    rate: &mut [S],
+    sin: &mut [S],
+    cos: &mut [S],
+) {
+    let p = phi.len() - 1;
+    for k in 0..=p {
+        if k > 0 {
+            let (s, c) = sin_cos_coefficient(&inv[k], &rate[..k], &sin[..k], &cos[..k]);
+            sin[k] = s;
+            cos[k] = c;
+        }
+        if k < p {
+            phi[k + 1] = rate[k].clone() * inv[k + 1].clone();
+            rate[k + 1] = -(omega2.clone() * cos[k].clone() * inv[k + 1].clone());
+        }
+    }
+}
+
+/// The complement wall phase's series in f64, for `ComplementWall::taylor_series`.
+pub fn complement_series_f64(omega2: f64, s: &mut Series<2>) {
+    let p = s.order;
+    let inv = &INV[..p + 2];
+    let [phi, rate] = &mut s.y;
+    complement_series(
+        &omega2,
+        inv,
+        &mut phi[..=p],
+        &mut rate[..=p],
+        &mut s.sin[..=p],
+        &mut s.cos[..=p],
+    );
+}
+
 /// The floor phase's series in f64, for `FloorPhase::taylor_series`.
 pub fn floor_series_f64(g_over_l: f64, s: &mut Series<4>) {
     let p = s.order;

@@ -1,0 +1,156 @@
+//! The wall phase near the floor (θ0 close to π/2), in the complement φ = π/2 − θ.
+//!
+//! **Why.** f64 spaces its values near π/2 by 2.2e-16, so a start at θ0 = π/2 − ε moves, until
+//! separation at cos θ_s = (2/3) cos θ0 (footnote 4), only about ε/3 — a handful of ulps of θ
+//! for small ε — and the separation factor Ω² cos θ − θ̇² (`rigid::separation_factor`) is
+//! evaluated from a θ that carries an absolute error of an ulp. Integrating in θ therefore gives
+//! relative time errors of about u/ε whatever the tolerance (measured before this module, at
+//! tolerance 1e-14: 1.5e-8 at ε = 1e-9, 2.5e-5 at 1e-12, 3.5e-2 at 1.1e-15; issue 17). In φ the
+//! same motion is φ̈ = −Ω² cos φ, the factor is Ω² sin φ − φ̇², and φ near 0 carries full
+//! relative precision.
+//!
+//! **When.** For θ0 > π/4 the complement is the smaller of the two angles, and the wall phase
+//! only moves θ up (θ_s > θ0), so φ stays the better-resolved variable throughout. The start's
+//! complement is exact: for θ0 in [π/4, π/2], FRAC_PI_2 − θ0 is exact (Sterbenz), and the part
+//! of π/2 that FRAC_PI_2 misses ([`HALF_PI_LO`]) is added with one rounding.
+
+use super::event::{Direction, Event};
+use super::integrators::Ode;
+use super::rigid::{event_safe_step, Ladder};
+use super::run::Observer;
+use num_dual::DualNum;
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
+
+/// π/2 − FRAC_PI_2: the low part of π/2 (π/2 = FRAC_PI_2 + HALF_PI_LO to about 1e-33).
+pub const HALF_PI_LO: f64 = 6.123_233_995_736_766e-17;
+
+/// Whether the wall phase from θ0 runs in the complement (θ0 > π/4).
+pub fn applies(theta0: f64) -> bool {
+    theta0 > FRAC_PI_4
+}
+
+/// φ = π/2 − θ (exact for θ in [π/4, π/2] up to one rounding of the sum); also θ from φ.
+pub fn complement(angle: f64) -> f64 {
+    (FRAC_PI_2 - angle) + HALF_PI_LO
+}
+
+/// The wall phase in the complement: y = [φ, φ̇], y' = [φ̇, −Ω² cos φ] (eq. (5), sin θ = cos φ).
+#[derive(Clone, Copy, Debug)]
+pub struct ComplementWall {
+    /// Ω² = 3g/(4l).
+    pub omega2: f64,
+    omega: f64,
+}
+
+impl ComplementWall {
+    /// The complement wall phase of `ladder`.
+    pub fn new(ladder: &Ladder) -> Self {
+        let omega2 = ladder.omega2();
+        ComplementWall {
+            omega2,
+            omega: omega2.sqrt(),
+        }
+    }
+}
+
+impl Ode<2> for ComplementWall {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 2]) -> [D; 2] {
+        [y[1], -(y[0].cos() * self.omega2)]
+    }
+    /// |Δφ| = |Δθ|: the same event-safe limit as the wall phase in θ.
+    fn max_step(&self, y: &[f64; 2]) -> f64 {
+        event_safe_step(self.omega, y[1])
+    }
+    /// φ and φ̇/Ω on one relative scale, as for θ in `rigid::WallPhase`.
+    fn scale(&self, y: &[f64; 2]) -> [f64; 2] {
+        let s = y[0].abs().max(y[1].abs() / self.omega);
+        [s, self.omega * s]
+    }
+    fn accel_uses_velocity(&self) -> bool {
+        false
+    }
+    fn taylor_series(&self, series: &mut super::integrators::taylor::Series<2>) -> bool {
+        super::integrators::taylor::complement_series_f64(self.omega2, series);
+        true
+    }
+}
+
+/// Separation in the complement: the factor Ω² sin φ − φ̇² (= Ω² cos θ − θ̇²) falls through 0.
+pub struct ComplementSeparation(pub f64);
+
+impl Event<2> for ComplementSeparation {
+    fn value(&self, _t: f64, y: &[f64; 2]) -> f64 {
+        self.0 * y[0].sin() - y[1] * y[1]
+    }
+    fn direction(&self) -> Direction {
+        Direction::Falling
+    }
+    /// d/dt (Ω² sin φ − φ̇²) = Ω² cos φ φ̇ − 2 φ̇ φ̈.
+    fn rate(&self, _t: f64, y: &[f64; 2], dy: &[f64; 2]) -> Option<f64> {
+        Some(self.0 * y[0].cos() * dy[0] - 2.0 * y[1] * dy[1])
+    }
+}
+
+/// The state (φ, φ̇) as (θ, θ̇) = (π/2 − φ, −φ̇).
+pub fn to_theta(y: &[f64; 2]) -> [f64; 2] {
+    [complement(y[0]), -y[1]]
+}
+
+/// An observer of (θ, θ̇) fed from a run in the complement.
+pub struct InTheta<'a, O>(pub &'a mut O);
+
+impl<O: Observer<2>> Observer<2> for InTheta<'_, O> {
+    fn samples_per_step(&self) -> usize {
+        self.0.samples_per_step()
+    }
+    fn observe(&mut self, t: f64, y: &[f64; 2]) {
+        self.0.observe(t, &to_theta(y));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sim::rigid::{angular_acceleration, separation_factor};
+
+    #[test]
+    fn the_complement_is_exact_and_fails_without_the_low_part() {
+        // θ0 = π/2 − 1e-12 as f64: its complement, from the f64 sum, against the long subtraction
+        // written out: π/2 − θ0 = (FRAC_PI_2 − θ0) + HALF_PI_LO.
+        let theta0 = FRAC_PI_2 - 1e-12;
+        let phi = complement(theta0);
+        assert_eq!(phi, (FRAC_PI_2 - theta0) + HALF_PI_LO);
+        // cos θ0 (libm reduces its argument against π/2 to more than f64's precision) agrees to
+        // an ulp of φ; FRAC_PI_2 − θ0 alone is 6.1e-17 short, 6e-5 relative.
+        assert!((theta0.cos() - phi).abs() <= f64::EPSILON * phi);
+        let naive = FRAC_PI_2 - theta0;
+        assert!((theta0.cos() - naive).abs() > 1e3 * f64::EPSILON * phi);
+        assert!(applies(0.8) && !applies(0.7));
+    }
+
+    #[test]
+    fn the_complement_equations_are_the_wall_equations() {
+        let sys = ComplementWall::new(&Ladder {
+            mass: 1.0,
+            half_length: 1.0,
+            gravity: 9.81,
+        });
+        let (theta, rate) = (1.2f64, 0.7f64);
+        let y = [complement(theta), -rate];
+        let dy: [f64; 2] = sys.rhs(0.0, &y);
+        // φ̈ = −θ̈ and the separation factors agree to rounding of cos/sin at 1.2 rad.
+        let acc = angular_acceleration(sys.omega2, theta);
+        assert!(
+            (dy[1] + acc).abs() <= 4.0 * f64::EPSILON * acc.abs(),
+            "{dy:?}"
+        );
+        let g = ComplementSeparation(sys.omega2).value(0.0, &y);
+        let want = separation_factor(sys.omega2, theta, rate);
+        assert!(
+            (g - want).abs() <= 8.0 * f64::EPSILON * sys.omega2,
+            "{g} {want}"
+        );
+        // A sign slip in the acceleration is seen.
+        assert!((dy[1] - acc).abs() > 1.0);
+    }
+}
