@@ -89,7 +89,8 @@ pub struct Shown {
     /// … and exactly, when the state is exact.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub forms_agree_exactly: Option<bool>,
-    /// Every recorded misprint differs from its chain here.
+    /// Every recorded misprint differs from its chain here, in value or in units (a dropped
+    /// factor m is invisible in the numbers at m = 1 kg, never in the units).
     pub misprints_differ: bool,
     /// The registry's checks, in full.
     pub checks: Vec<checks::CheckDetail>,
@@ -241,10 +242,11 @@ pub fn show(
             .filter(printed)
             .all(|f| f.exact_agrees != Some(false))
     });
-    let misprints_differ = forms
-        .iter()
-        .filter(|f| f.role == "misprint")
-        .all(|f| f.agrees == Some(false) || f.exact_agrees == Some(false));
+    let misprints_differ = forms.iter().filter(|f| f.role == "misprint").all(|f| {
+        f.agrees == Some(false)
+            || f.exact_agrees == Some(false)
+            || f.unit.starts_with("inconsistent")
+    });
     let mut problems = row.as_ref().map_or_else(Vec::new, |r| r.problems.clone());
     if assumption.is_none() {
         for f in forms.iter().filter(printed) {

@@ -208,6 +208,13 @@ pub fn render(s: &Shown) -> String {
         if let Some(x) = &f.exact {
             let _ = writeln!(o, "  {:>5}  exactly {}", "", exact(x));
         }
+        if f.role == "misprint" && f.agrees == Some(true) && f.unit.starts_with("inconsistent") {
+            let _ = writeln!(
+                o,
+                "  {:>5}  equal in value at this state only: its units are inconsistent",
+                ""
+            );
+        }
         if let Some(err) = &f.error {
             let _ = writeln!(o, "  {:>5}  not evaluated: {err}", "");
         }
@@ -230,7 +237,7 @@ pub fn render(s: &Shown) -> String {
     };
     let mis = if s.forms.iter().any(|f| f.role == "misprint") {
         if s.misprints_differ {
-            "; the recorded misprint differs, as it must"
+            "; the recorded misprint differs (in value or units), as it must"
         } else {
             "; the recorded misprint AGREES here"
         }

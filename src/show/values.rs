@@ -44,6 +44,9 @@ pub struct FormValue {
     pub milne: bool,
     /// Its value in SI units (one number, or x, y, z of a vector).
     pub value: Vec<f64>,
+    /// The running error bound of each component of `value`, in SI units: the exact value of
+    /// the form at the (rounded) inputs lies within `value ± bound`, to first order.
+    pub bound: Vec<f64>,
     /// Its exact value (fractions), when the state is exact.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub exact: Option<Vec<String>>,
@@ -179,6 +182,16 @@ fn eval_form<S: Scalar>(
     evaluate(&f.expr, &ctx)
 }
 
+/// An exact evaluation, with a division by an exact zero turned into an error.
+fn exact_guarded(
+    e: &Equation,
+    f: &Form,
+    m: &std::rc::Rc<Model<Rational>>,
+) -> Result<Value<Rational>, String> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| eval_form(e, f, m)))
+        .unwrap_or_else(|_| Err("undefined here exactly (a division by zero)".into()))
+}
+
 /// Components, a scalar spread over `width` (a literal 0 against a vector).
 fn comps<S: Scalar>(v: &Value<S>, width: usize) -> Vec<S> {
     match v {
@@ -224,7 +237,12 @@ fn unit_of(e: &Equation, f: &Form) -> String {
 
 /// Every printed form of `e` at `point`, in print order.
 pub fn form_values(e: &Equation, point: &Point) -> Result<Vec<FormValue>, String> {
-    let (_, chains) = print_chains(e.number, e.latex())?;
+    form_values_of(e, e.latex(), point)
+}
+
+/// [`form_values`] of a given print of `e` (a perturbed copy, in tests).
+pub fn form_values_of(e: &Equation, latex: &str, point: &Point) -> Result<Vec<FormValue>, String> {
+    let (_, chains) = print_chains(e.number, latex)?;
     let mf = std::rc::Rc::new(model(e, &point.float.0, &point.float.1)?);
     let mb = std::rc::Rc::new(model(e, &point.bound.0, &point.bound.1)?);
     let mq = match &point.exact {
@@ -237,7 +255,7 @@ pub fn form_values(e: &Equation, point: &Point) -> Result<Vec<FormValue>, String
         let vb: Vec<_> = chain.iter().map(|f| eval_form(e, f, &mb)).collect();
         let vq: Vec<Option<Result<Value<Rational>, String>>> = chain
             .iter()
-            .map(|f| mq.as_ref().map(|m| eval_form(e, f, m)))
+            .map(|f| mq.as_ref().map(|m| exact_guarded(e, f, m)))
             .collect();
         let width = vf
             .iter()
@@ -267,6 +285,7 @@ pub fn form_values(e: &Equation, point: &Point) -> Result<Vec<FormValue>, String
                 role,
                 milne: f.milne,
                 value: Vec::new(),
+                bound: Vec::new(),
                 exact: None,
                 unit: unit_of(e, f),
                 residual: None,
@@ -277,6 +296,13 @@ pub fn form_values(e: &Equation, point: &Point) -> Result<Vec<FormValue>, String
             match (&vf[k], &vb[k]) {
                 (Ok(x), Ok(xb)) => {
                     row.value = comps(x, width);
+                    row.bound = comps(xb, width).iter().map(Bound::abs_error).collect();
+                    if row.value.iter().any(|v| !v.is_finite()) {
+                        row.error = Some("not finite at this state".into());
+                        row.value = Vec::new();
+                        out.push(row);
+                        continue;
+                    }
                     if let (true, Ok(b0), Ok(bb0)) = (k != base, &vf[base], &vb[base]) {
                         let pairs: (Chains<f64>, Chains<Bound>) = comps(b0, width)
                             .into_iter()
@@ -308,4 +334,39 @@ pub fn form_values(e: &Equation, point: &Point) -> Result<Vec<FormValue>, String
         }
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{at::parse_at, state::build};
+    use super::*;
+
+    /// (25) with its last form perturbed in the 13th digit, and with 4 for 5 in its second form:
+    /// both fail in f64 (the running bound is far tighter) and exactly; the print as printed
+    /// agrees.
+    #[test]
+    fn a_perturbed_form_fails_the_agreement() {
+        let e = crate::registry::equations()
+            .into_iter()
+            .find(|e| e.number == 25)
+            .unwrap();
+        let point = build(&parse_at("m=2, l=3/4, g=10, sin_theta=3/5").unwrap());
+        let last = r"&= mgl\sin\theta, \end{aligned}";
+        let tiny = r"&= \frac{10000000000001mgl\sin\theta}{10000000000000}, \end{aligned}";
+        let agree = |latex: &str| -> Vec<(bool, bool)> {
+            form_values_of(&e, latex, &point)
+                .unwrap()
+                .iter()
+                .skip(1)
+                .map(|f| (f.agrees.unwrap(), f.exact_agrees.unwrap()))
+                .collect()
+        };
+        assert!(agree(e.latex()).iter().all(|&(a, x)| a && x));
+        assert!(e.latex().contains(last));
+        let nudged = agree(&e.latex().replace(last, tiny));
+        assert_eq!(nudged.last(), Some(&(false, false)));
+        assert!(nudged[..nudged.len() - 1].iter().all(|&(a, x)| a && x));
+        let four = agree(&e.latex().replacen(r"\frac{4ml^2", r"\frac{5ml^2", 1));
+        assert_eq!(four[0], (false, false));
+    }
 }
