@@ -24,6 +24,7 @@ pub mod print;
 pub mod registry;
 pub mod report;
 pub mod scalar;
+pub mod show;
 pub mod sim;
 pub mod system;
 pub mod vector;

@@ -38,6 +38,24 @@ enum Command {
         #[arg(long)]
         only: Option<String>,
     },
+    /// One display in depth: print, symbols, every form's value at a state, its checks.
+    Show {
+        /// A display number (25), a list or range (23-25,28), or words to search for ("about D").
+        query: String,
+        /// The state: "m=2, l=1.5, g=9.81, theta=40deg, theta0=10deg" (θ̇ from the energy and
+        /// θ̈ from (5) unless given as theta_dot, theta_ddot; sin_theta=3/5 for an exact angle).
+        #[arg(long)]
+        at: Option<String>,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+        /// Random float states per check.
+        #[arg(long, default_value_t = Config::default().float_cases)]
+        cases: usize,
+        /// Only the forms' values (no check, proof or print check is run: fast).
+        #[arg(long)]
+        values_only: bool,
+    },
     /// The note's misprints: printed and corrected forms with their residuals.
     Errata {
         /// Print JSON.
@@ -110,6 +128,22 @@ fn main() -> ExitCode {
                 seed,
             },
             only.as_deref(),
+        ),
+        Some(Command::Show {
+            query,
+            at,
+            json,
+            cases,
+            values_only,
+        }) => sliding_ladder::show::command(
+            &query,
+            at.as_deref(),
+            json,
+            values_only,
+            &Config {
+                float_cases: cases,
+                ..Config::default()
+            },
         ),
         Some(Command::Errata { json }) => verify::errata_command(json, &Config::default()),
         Some(Command::Simulate { scene, json, out }) => sim::simulate(&scene, json, out.as_deref()),

@@ -78,6 +78,7 @@ pub fn verify(json_out: bool, cfg: &Config, only: Option<&str>) -> ExitCode {
         for p in &docs.problems {
             println!("  ! {p}");
         }
+        println!("details of one display: ladder show N (e.g. ladder show 25 --at \"m=2, l=1.5, theta=40deg\")");
     }
     if f == 0 && docs.problems.is_empty() && results.len() == 90 && methods.iter().all(|m| m.passed)
     {

@@ -214,7 +214,11 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
 
 /// Add the symbolic proof verdict to a judged equation (a nonzero difference fails it).
 pub fn add_proof(r: &mut EquationResult, e: &Equation) {
-    let (v, _) = proof::prove_equation(e);
+    add_proof_verdict(r, proof::prove_equation(e).0);
+}
+
+/// Add a computed proof verdict to a judged equation (see [`add_proof`]).
+pub fn add_proof_verdict(r: &mut EquationResult, v: proof::ProofVerdict) {
     if let Some(p) = v.problem {
         r.problems.push(p);
         r.status = Status::Failed;

@@ -1,0 +1,268 @@
+//! A display's LaTeX as one line of Unicode for the terminal: `\frac{4ml^2\ddot{\theta}}{3}` reads
+//! `4ml²θ̈/3`.
+//!
+//! Written by hand: the crates that render LaTeX produce MathML or images, and the Unicode
+//! converters (unicodeit and the like) are Python; the note uses a small fixed vocabulary (the
+//! commands counted in `src/registry/latex.rs`), each mapped here. Accents become combining
+//! characters (θ̇, θ̈, ẑ, r̄), `^2` a superscript, `_i` a subscript where Unicode has one (else
+//! `_cm`, as the registry's labels write it), `\frac{a}{b}` `a/b` with parentheses only around
+//! a compound part, and layout (`aligned`, `&`, `\\`, `\quad`, `\left`, `\Big`) is dropped.
+
+/// The Unicode reading of a LaTeX fragment.
+pub fn unicode(latex: &str) -> String {
+    let chars: Vec<char> = latex.chars().collect();
+    let mut p = 0;
+    let out = convert(&chars, &mut p, None);
+    tidy(&out)
+}
+
+/// Collapse runs of spaces and trim.
+fn tidy(s: &str) -> String {
+    let mut out = String::new();
+    for w in s.split_whitespace() {
+        if !out.is_empty() {
+            out.push(' ');
+        }
+        out.push_str(w);
+    }
+    out.replace("( ", "(").replace(" )", ")")
+}
+
+/// Convert until the closing `stop` (a `}`), consuming it.
+fn convert(c: &[char], p: &mut usize, stop: Option<char>) -> String {
+    let mut out = String::new();
+    while *p < c.len() {
+        let ch = c[*p];
+        if Some(ch) == stop {
+            *p += 1;
+            return out;
+        }
+        *p += 1;
+        match ch {
+            '\\' => out.push_str(&command(c, p)),
+            '{' => out.push_str(&convert(c, p, Some('}'))),
+            '^' => {
+                let arg = argument(c, p);
+                out.push_str(&script(&arg, true));
+            }
+            '_' => {
+                let arg = argument(c, p);
+                out.push_str(&script(&arg, false));
+            }
+            '&' => {}
+            '=' => out.push_str(" = "),
+            '+' => out.push_str(" + "),
+            '-' => {
+                // Binary minus between operands, a bare sign elsewhere.
+                let prev = out.trim_end().chars().last();
+                if prev.is_some_and(|x| !matches!(x, '(' | '=' | ',' | '[')) {
+                    out.push_str(" − ");
+                } else {
+                    out.push('−');
+                }
+            }
+            ',' => out.push_str(", "),
+            // Source spacing carries nothing; products read like the registry's labels.
+            c if c.is_whitespace() => {}
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// The next argument: a `{group}`, a `\command`, or one character.
+fn argument(c: &[char], p: &mut usize) -> String {
+    while *p < c.len() && c[*p] == ' ' {
+        *p += 1;
+    }
+    match c.get(*p) {
+        Some('{') => {
+            *p += 1;
+            convert(c, p, Some('}'))
+        }
+        Some('\\') => {
+            *p += 1;
+            command(c, p)
+        }
+        Some(&ch) => {
+            *p += 1;
+            ch.to_string()
+        }
+        None => String::new(),
+    }
+}
+
+fn command(c: &[char], p: &mut usize) -> String {
+    let start = *p;
+    while *p < c.len() && c[*p].is_ascii_alphabetic() {
+        *p += 1;
+    }
+    let word: String = c[start..*p].iter().collect();
+    if word.is_empty() {
+        // A control symbol: `\\` (row break), `\,` and friends (thin spaces).
+        *p += 1;
+        return " ".into();
+    }
+    let accent = |c: &[char], p: &mut usize, mark: char| {
+        let mut a = argument(c, p);
+        a.push(mark);
+        a
+    };
+    match word.as_str() {
+        "frac" => {
+            let (n, d) = (argument(c, p), argument(c, p));
+            if n == "d" && d == "dt" {
+                return "d/dt ".into();
+            }
+            format!("{}/{}", wrap(&n), wrap(&d))
+        }
+        "dot" => accent(c, p, '\u{307}'),
+        "ddot" => accent(c, p, '\u{308}'),
+        "hat" => accent(c, p, '\u{302}'),
+        "bar" => accent(c, p, '\u{304}'),
+        "tilde" => accent(c, p, '\u{303}'),
+        "mathbf" | "boldsymbol" | "text" => {
+            let a = argument(c, p);
+            if a.trim_end().ends_with(':') {
+                format!("{}: ", a.trim_end().trim_end_matches(':').trim_end())
+            } else {
+                a
+            }
+        }
+        "mathcal" => match argument(c, p).as_str() {
+            "L" => "ℒ".into(),
+            other => other.into(),
+        },
+        "begin" | "end" => {
+            let _ = argument(c, p);
+            " ".into()
+        }
+        "left" | "right" | "Big" | "big" | "Bigl" | "Bigr" => String::new(),
+        "quad" | "qquad" => "   ".into(),
+        "sin" | "cos" => {
+            // `\sin^2\theta` reads `sin²θ`; the argument (one symbol) is taken with it, so a
+            // factor after it stands apart: `sin θ θ̇²`.
+            let mut sup = String::new();
+            if c.get(*p) == Some(&'^') {
+                *p += 1;
+                sup = script(&argument(c, p), true);
+            }
+            format!(" {word}{sup} {} ", argument(c, p))
+        }
+        "times" => " × ".into(),
+        "wedge" => " ∧ ".into(),
+        "cdot" => "·".into(),
+        "sum" => "Σ".into(),
+        "equiv" => " ≡ ".into(),
+        "Rightarrow" => " ⇒ ".into(),
+        "partial" => "∂".into(),
+        "prime" => "′".into(),
+        w => greek(w).map_or_else(|| format!("\\{w}"), String::from),
+    }
+}
+
+fn greek(w: &str) -> Option<&'static str> {
+    Some(match w {
+        "theta" => "θ",
+        "tau" => "τ",
+        "omega" => "ω",
+        "Omega" => "Ω",
+        "Gamma" => "Γ",
+        "alpha" => "α",
+        "beta" => "β",
+        "epsilon" => "ε",
+        "lambda" => "λ",
+        "mu" => "μ",
+        "pi" => "π",
+        "rho" => "ρ",
+        "sigma" => "σ",
+        "phi" => "φ",
+        "psi" => "ψ",
+        "Delta" => "Δ",
+        _ => return None,
+    })
+}
+
+/// Parentheses around a compound numerator or denominator.
+fn wrap(s: &str) -> String {
+    let t = s.trim();
+    let compound = t.contains([' ', '+', '−', '/']) && !(t.starts_with('(') && t.ends_with(')'));
+    if compound {
+        format!("({t})")
+    } else {
+        t.to_string()
+    }
+}
+
+/// A superscript or subscript: Unicode's own characters when every character has one.
+fn script(arg: &str, sup: bool) -> String {
+    let t: String = arg.split_whitespace().collect();
+    let t = t.as_str();
+    let map = |ch: char| -> Option<char> {
+        if sup {
+            Some(match ch {
+                '0' => '⁰',
+                '1' => '¹',
+                '2' => '²',
+                '3' => '³',
+                '4' => '⁴',
+                '5' => '⁵',
+                '6' => '⁶',
+                '7' => '⁷',
+                '8' => '⁸',
+                '9' => '⁹',
+                '−' | '-' => '⁻',
+                _ => return None,
+            })
+        } else {
+            Some(match ch {
+                '0' => '₀',
+                '1' => '₁',
+                '2' => '₂',
+                '3' => '₃',
+                'i' => 'ᵢ',
+                _ => return None,
+            })
+        }
+    };
+    match t.chars().map(map).collect::<Option<String>>() {
+        Some(s) if !s.is_empty() => s,
+        _ if sup => format!("^{}", wrap(t)),
+        // A space after the subscript, so `F_f l` does not read `F_fl`.
+        _ => format!("_{t} "),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_notes_vocabulary_reads() {
+        assert_eq!(unicode(r"\frac{4ml^2\ddot{\theta}}{3}"), "4ml²θ̈/3");
+        assert_eq!(
+            unicode(r"\tau_D - F_{D,x}l\cos\theta"),
+            "τ_D − F_D,x l cos θ"
+        );
+        assert_eq!(unicode(r"2F_f l \sin \theta"), "2F_f l sin θ");
+        assert_eq!(unicode(r"\frac{dL_D}{dt}"), "dL_D/dt");
+        assert_eq!(unicode(r"x_{\text{cm}} = l \sin \theta"), "x_cm = l sin θ");
+        assert_eq!(
+            unicode(r"\dot{\theta}^2 = \frac{3g}{2l} (1 - \cos \theta)"),
+            "θ̇² = 3g/2l(1 − cos θ)"
+        );
+        assert_eq!(unicode(r"\hat{\mathbf{z}}"), "z\u{302}");
+        assert_eq!(
+            unicode(r"2ml^2\cos^2\theta\ddot{\theta} + 2ml^2\cos\theta\sin\theta\dot{\theta}^2"),
+            "2ml² cos² θ θ̈ + 2ml² cos θ sin θ θ̇²"
+        );
+        assert_eq!(unicode(r"\sum_i m_i \mathbf{x}_i"), "Σᵢmᵢxᵢ");
+        assert_eq!(unicode(r"\frac{a + b}{c}"), "(a + b)/c");
+        assert_eq!(unicode(r"-\frac{2ml^2 \dot{\theta}}{3}"), "−2ml²θ̇/3");
+        // No LaTeX command survives the reading of any display of the note.
+        for n in 1..=90 {
+            let u = unicode(crate::registry::printed_latex(n));
+            assert!(!u.contains('\\') && !u.contains('{'), "({n}): {u}");
+        }
+    }
+}
