@@ -172,7 +172,7 @@ pub fn check_print_with(
 
 /// The registry check whose sample the print is evaluated on: for an on-shell display the one
 /// from rest if any (the energy (10) holds there only), else the first on-shell one.
-fn sample_check(e: &Equation) -> Option<&crate::registry::Check> {
+pub fn sample_check(e: &Equation) -> Option<&crate::registry::Check> {
     let from_rest = |c: &&crate::registry::Check| {
         matches!(c.eval, Eval::Ladder(LadderSample::OnShellFromRest, _))
     };
