@@ -66,3 +66,95 @@ fn near_flat_starts_separate_at_the_exact_time() {
         }
     }
 }
+
+/// ∫_a^b f by composite 5-point Gauss-Legendre on `panels` panels.
+fn gauss_legendre(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> f64 {
+    const X: [f64; 5] = [
+        0.0,
+        0.538_469_310_105_683,
+        -0.538_469_310_105_683,
+        0.906_179_845_938_664,
+        -0.906_179_845_938_664,
+    ];
+    const W: [f64; 5] = [
+        0.568_888_888_888_889,
+        0.478_628_670_499_366,
+        0.478_628_670_499_366,
+        0.236_926_885_056_189,
+        0.236_926_885_056_189,
+    ];
+    let h = (b - a) / panels as f64;
+    (0..panels)
+        .map(|i| {
+            let c = a + (i as f64 + 0.5) * h;
+            X.iter()
+                .zip(W)
+                .map(|(x, w)| w * f(c + 0.5 * h * x))
+                .sum::<f64>()
+                * 0.5
+                * h
+        })
+        .sum()
+}
+
+/// Flat time from rest at θ0 = π/2 − φ0 (l = 1, so g/l = G): the exact separation (footnote 4:
+/// sin φ_s = (2/3) sin φ0, θ̇_s² = Ω² sin φ_s) plus the floor phase's energy integral
+/// (cos² φ + 1/3) φ̇² + 2 (g/l) sin φ = C, integrated as t = ∫_0^{φ_s} dφ/|φ̇| by quadrature.
+/// Returns (time, the quadrature's error estimate: 32 against 64 panels).
+fn flat_reference(phi0: f64) -> (f64, f64) {
+    let theta0 = FRAC_PI_2 - phi0;
+    let t_s = exact_time(theta0);
+    let sin_s = 2.0 / 3.0 * phi0.sin();
+    let phi_s = sin_s.asin();
+    let rate2 = 0.75 * G * sin_s;
+    let c = (phi_s.cos().powi(2) + 1.0 / 3.0) * rate2 + 2.0 * G * sin_s;
+    let f = |p: f64| ((p.cos().powi(2) + 1.0 / 3.0) / (c - 2.0 * G * p.sin())).sqrt();
+    let fine = gauss_legendre(f, 0.0, phi_s, 64);
+    let coarse = gauss_legendre(f, 0.0, phi_s, 32);
+    (
+        t_s + fine,
+        (fine - coarse).abs() + 4.0 * f64::EPSILON * (t_s + fine),
+    )
+}
+
+fn flat_scene(method: &str, tol: f64, angle: f64) -> String {
+    scene_text(method, tol, angle)
+        .replace("at = \"separation\"", "at = \"flat\"")
+        .replace(
+            "\"separation_time\"]",
+            "\"separation_time\", \"flat_time\"]",
+        )
+}
+
+#[test]
+fn near_flat_starts_reach_the_floor_at_the_reference_time() {
+    for eps in [0.3, 1e-3, 1e-9, 1e-12] {
+        let theta0 = FRAC_PI_2 - eps;
+        // φ0 of the f64 start, exactly (Sterbenz) plus π/2's low part.
+        let phi0 = (FRAC_PI_2 - theta0) + 6.123_233_995_736_766e-17;
+        let (want, quad_err) = flat_reference(phi0);
+        let (off, _) = flat_reference(FRAC_PI_2 - theta0.next_down() + 6.123_233_995_736_766e-17);
+        for (method, tol) in [("dop853", 1e-14), ("taylor", 1e-14), ("radau5", 1e-13)] {
+            let sc = scene::parse("near-flat.toml", &flat_scene(method, tol, theta0)).unwrap();
+            let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+            let flat = o.flat.expect("reaches flat");
+            let n = (o.work.wall.steps + o.work.floor.unwrap().steps) as f64;
+            let bound = 10.0 * n * tol * want + quad_err;
+            let err = (flat.time - want).abs();
+            println!(
+                "{method} ε = {eps:e}: t_flat {} rel {:e} (bound {:e})",
+                flat.time,
+                err / want,
+                bound / want
+            );
+            assert!(
+                err <= bound,
+                "{method} ε = {eps:e}: {} against {want}",
+                flat.time
+            );
+            if eps <= 1e-9 {
+                assert!((off - want).abs() > bound, "{method} ε = {eps:e}");
+            }
+        }
+    }
+}

@@ -1,6 +1,7 @@
 //! Reports: the work-precision sweep, output files written all-or-nothing, SVG plots.
 
 pub mod diagram;
+pub mod digits;
 pub mod files;
 pub mod plot;
 pub mod stability;

@@ -7,6 +7,7 @@ use super::penalty::Contact;
 use super::rigid::separation_cosine;
 use super::run::RunError;
 use super::scene::{self, ContactModel, Scene};
+use crate::report::digits::sig;
 use crate::report::files::{write_all, OutFile};
 use crate::report::plot::{PlotSpec, Series};
 use serde_json::{json, Map, Value};
@@ -201,7 +202,8 @@ pub fn to_json(scene: &Scene, o: &Outcome) -> Value {
     Value::Object(m)
 }
 
-/// The human-readable summary, ending with what was computed.
+/// The human-readable summary, ending with what was computed. Numbers by significant digits
+/// ([`crate::report::digits`]): fixed decimals print a slow ladder's θ̇ as 0.
 pub fn summary(scene: &Scene, o: &Outcome) -> String {
     let mut s = format!(
         "scene {}: θ0 = {} rad, θ̇0 = {} rad/s, method {}\n",
@@ -216,26 +218,30 @@ pub fn summary(scene: &Scene, o: &Outcome) -> String {
     }
     match o.separation {
         Some(p) => s += &format!(
-            "  separation   t = {:.15} s   θ = {:.15} rad ({:.6}°)   θ̇ = {:.12} rad/s\n               cos θ = {:.15} (predicted by the energy integral: {:.15})\n",
-            p.time,
-            p.angle,
-            p.angle.to_degrees(),
-            p.rate,
-            p.angle.cos(),
-            separation_cosine(scene.ladder.omega2(), scene.theta0, scene.rate0)
+            "  separation   t = {} s   θ = {} rad ({}°)   θ̇ = {} rad/s\n               cos θ = {} (predicted by the energy integral: {})\n",
+            sig(p.time, 16),
+            sig(p.angle, 16),
+            sig(p.angle.to_degrees(), 7),
+            sig(p.rate, 13),
+            sig(p.angle.cos(), 16),
+            sig(separation_cosine(scene.ladder.omega2(), scene.theta0, scene.rate0), 16)
         ),
         None => s += "  separation   not reached\n",
     }
     if let Some(f) = o.flat {
         s += &format!(
-            "  flat         t = {:.15} s   θ̇ = {:.12} rad/s   centre x = {:.12} m, ẋ = {:.12} m/s, ẏ = {:.12} m/s\n",
-            f.time, f.rate, f.centre_x, f.centre_velocity_x, f.centre_velocity_y
+            "  flat         t = {} s   θ̇ = {} rad/s   centre x = {} m, ẋ = {} m/s, ẏ = {} m/s\n",
+            sig(f.time, 16),
+            sig(f.rate, 13),
+            sig(f.centre_x, 13),
+            sig(f.centre_velocity_x, 13),
+            sig(f.centre_velocity_y, 13)
         );
     }
     if let Some(r) = o.floor_report {
         s += &format!(
-            "  floor phase  min F_f = {:.9} N (> 0: no lift-off)   min top clearance = {:.3e} m ({})\n",
-            r.floor_force_min,
+            "  floor phase  min F_f = {} N (> 0: no lift-off)   min top clearance = {:.3e} m ({})\n",
+            sig(r.floor_force_min, 10),
             r.top_clearance_min,
             if r.top_clearance_min >= 0.0 { "the top never returns to the wall" } else { "TOP BACK AT THE WALL" }
         );
@@ -247,8 +253,10 @@ pub fn summary(scene: &Scene, o: &Outcome) -> String {
         s += &format!("  energy       |ΔE| / (m g l) = {e:.3e}\n");
     }
     s += &format!(
-        "  end          t = {:.15} s   θ = {:.15} rad   θ̇ = {:.12} rad/s\n",
-        o.last.0, o.last.1, o.last.2
+        "  end          t = {} s   θ = {} rad   θ̇ = {} rad/s\n",
+        sig(o.last.0, 16),
+        sig(o.last.1, 16),
+        sig(o.last.2, 13)
     );
     let w = &o.work;
     let p = &o.plan;

@@ -9,6 +9,10 @@
 //! same motion is φ̈ = −Ω² cos φ, the factor is Ω² sin φ − φ̇², and φ near 0 carries full
 //! relative precision.
 //!
+//! **The floor phase** ([`ComplementFloor`]) always runs in φ: it ends at θ = π/2, and from a
+//! start near the floor the whole phase is a few ulps of θ long, so in θ the flat time would
+//! carry the same u/ε error.
+//!
 //! **When.** For θ0 > π/4 the complement is the smaller of the two angles, and the wall phase
 //! only moves θ up (θ_s > θ0), so φ stays the better-resolved variable throughout. The start's
 //! complement is exact: for θ0 in [π/4, π/2], FRAC_PI_2 − θ0 is exact (Sterbenz), and the part
@@ -105,6 +109,101 @@ impl<O: Observer<2>> Observer<2> for InTheta<'_, O> {
     }
     fn observe(&mut self, t: f64, y: &[f64; 2]) {
         self.0.observe(t, &to_theta(y));
+    }
+}
+
+/// Phase-2 θ̈ written in the complement: cos φ (g/l − sin φ φ̇²) / (cos² φ + 1/3)
+/// (`floor::angular_acceleration` with sin θ = cos φ, cos θ = sin φ); φ̈ is its negative.
+pub fn floor_theta_acceleration<D: DualNum<Primitive = f64> + Copy>(
+    g_over_l: f64,
+    phi: D,
+    rate: D,
+) -> D {
+    let (s, c) = phi.sin_cos();
+    c * (-(s * rate * rate) + g_over_l) / (c * c + 1.0 / 3.0)
+}
+
+/// The floor force of phase 2 (`floor::floor_force`) from (φ, φ̇):
+/// F_f = m (g − l (cos φ θ̈ + sin φ φ̇²)).
+pub fn floor_force(ladder: &Ladder, phi: f64, rate: f64) -> f64 {
+    let (m, l, g) = (ladder.mass, ladder.half_length, ladder.gravity);
+    let acc = floor_theta_acceleration(g / l, phi, rate);
+    let (s, c) = phi.sin_cos();
+    m * (g - l * (c * acc + s * rate * rate))
+}
+
+/// Phase 2 in the complement: y = [φ, X, φ̇, Ẋ], y' = [φ̇, Ẋ, −θ̈, 0] (`floor::FloorPhase`).
+#[derive(Clone, Copy, Debug)]
+pub struct ComplementFloor {
+    g_over_l: f64,
+    omega: f64,
+    half_length: f64,
+}
+
+impl ComplementFloor {
+    /// The complement floor phase of `ladder`.
+    pub fn new(ladder: &Ladder) -> Self {
+        ComplementFloor {
+            g_over_l: ladder.gravity / ladder.half_length,
+            omega: ladder.omega2().sqrt(),
+            half_length: ladder.half_length,
+        }
+    }
+}
+
+impl Ode<4> for ComplementFloor {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 4]) -> [D; 4] {
+        let acc = floor_theta_acceleration(self.g_over_l, y[0], y[2]);
+        [y[2], y[3], -acc, D::from(0.0)]
+    }
+    fn max_step(&self, y: &[f64; 4]) -> f64 {
+        event_safe_step(self.omega, y[2])
+    }
+    /// As `floor::FloorPhase`'s scale, with φ for θ.
+    fn scale(&self, y: &[f64; 4]) -> [f64; 4] {
+        let a = y[0].abs().max(y[2].abs() / self.omega);
+        let x = (y[1].abs().max(y[3].abs() / self.omega)).max(self.half_length * a);
+        [a, x, self.omega * a, self.omega * x]
+    }
+    fn taylor_series(&self, series: &mut super::integrators::taylor::Series<4>) -> bool {
+        super::integrators::taylor::complement_floor_series_f64(self.g_over_l, series);
+        true
+    }
+}
+
+/// Phase-2 start in the complement from the separation (φ_s, θ̇_s): X = l cos φ (= l sin θ),
+/// φ̇ = −θ̇, Ẋ = l sin φ θ̇ (eq. (7), `floor::state_at_separation`).
+pub fn floor_state_at_separation(ladder: &Ladder, phi: f64, rate: f64) -> [f64; 4] {
+    let l = ladder.half_length;
+    [phi, l * phi.cos(), -rate, l * phi.sin() * rate]
+}
+
+/// The phase-2 state (φ, X, φ̇, Ẋ) as (θ, X, θ̇, Ẋ).
+pub fn floor_to_theta(y: &[f64; 4]) -> [f64; 4] {
+    [complement(y[0]), y[1], -y[2], y[3]]
+}
+
+/// Flat: φ falls through 0.
+pub struct Flat;
+
+impl Event<4> for Flat {
+    fn value(&self, _t: f64, y: &[f64; 4]) -> f64 {
+        y[0]
+    }
+    fn direction(&self) -> Direction {
+        Direction::Falling
+    }
+    fn rate(&self, _t: f64, _y: &[f64; 4], dy: &[f64; 4]) -> Option<f64> {
+        Some(dy[0])
+    }
+}
+
+impl<O: Observer<4>> Observer<4> for InTheta<'_, O> {
+    fn samples_per_step(&self) -> usize {
+        self.0.samples_per_step()
+    }
+    fn observe(&mut self, t: f64, y: &[f64; 4]) {
+        self.0.observe(t, &floor_to_theta(y));
     }
 }
 

@@ -5,7 +5,7 @@
 use super::complement;
 use super::event::{Direction, Event};
 use super::exact::PhaseOne;
-use super::floor::{self, FloorPhase};
+use super::floor;
 use super::integrators::any::AnyStepper;
 use super::integrators::{Stats, Stepper};
 use super::output::Output;
@@ -14,7 +14,6 @@ use super::run::{integrate_phase, Observer, RunError};
 use super::scaled::Units;
 use super::scene::{ContactModel, End, Scene, MAX_END_TIME};
 use std::cell::Cell;
-use std::f64::consts::FRAC_PI_2;
 
 /// Default hard limit on steps per phase.
 pub const MAX_STEPS: u64 = 10_000_000;
@@ -220,20 +219,6 @@ impl Event<2> for SeparationEvent {
     }
 }
 
-/// Flat: θ − π/2 rises through zero.
-struct FlatEvent;
-impl Event<4> for FlatEvent {
-    fn value(&self, _t: f64, y: &[f64; 4]) -> f64 {
-        y[0] - FRAC_PI_2
-    }
-    fn direction(&self) -> Direction {
-        Direction::Rising
-    }
-    fn rate(&self, _t: f64, _y: &[f64; 4], dy: &[f64; 4]) -> Option<f64> {
-        Some(dy[0])
-    }
-}
-
 /// Lift-off: the floor force falls through zero (checked inside steps too: it could dip and
 /// recover within one step).
 struct LiftOffEvent {
@@ -243,7 +228,7 @@ struct LiftOffEvent {
 impl Event<4> for LiftOffEvent {
     fn value(&self, _t: f64, y: &[f64; 4]) -> f64 {
         self.evals.set(self.evals.get() + 1);
-        floor::floor_force(&self.ladder, y[0], y[2])
+        complement::floor_force(&self.ladder, y[0], y[2])
     }
     fn direction(&self) -> Direction {
         Direction::Falling
@@ -349,6 +334,7 @@ fn run_rigid(
         obs.observe(t0, &y_lead);
     }
     let mut shifted = super::extreme::Shifted(&mut obs, t0);
+    let mut phi_s = None;
     let mut end1 = if in_complement {
         let sys = complement::ComplementWall::new(&ladder);
         let sep_event = complement::ComplementSeparation(sys.omega2);
@@ -360,6 +346,7 @@ fn run_rigid(
             max_steps,
             &mut complement::InTheta(&mut shifted),
         )?;
+        phi_s = Some(e.y[0]);
         e.y = complement::to_theta(&e.y);
         e
     } else {
@@ -386,8 +373,10 @@ fn run_rigid(
     let (mut flat, mut momentum_error, mut floor_report) = (None, None, None);
 
     if let (true, Some(sep)) = (plan.floor_phase, separation) {
-        let floor_sys = FloorPhase::new(&ladder);
-        let y_s = floor::state_at_separation(&ladder, sep.angle, sep.rate);
+        // The floor phase runs in φ = π/2 − θ (see `super::complement`).
+        let floor_sys = complement::ComplementFloor::new(&ladder);
+        let phi_s = phi_s.unwrap_or_else(|| complement::complement(sep.angle));
+        let y_s = complement::floor_state_at_separation(&ladder, phi_s, sep.rate);
         let mut stepper2 =
             AnyStepper::new(&scene.method, control, sep.time, y_s).ok_or_else(|| {
                 RunError::Start(format!("method {} does not take {control:?}", scene.method))
@@ -411,15 +400,16 @@ fn run_rigid(
         let end2 = integrate_phase(
             &floor_sys,
             &mut stepper2,
-            &[&FlatEvent, &lift],
+            &[&complement::Flat, &lift],
             t_end,
             max_steps,
-            &mut obs2,
+            &mut complement::InTheta(&mut obs2),
         );
         work.floor = Some(stepper2.stats());
         work.force_evals += obs2.force_evals + lift.evals.get();
         floor_report = obs2.monitor;
-        let end2 = end2?;
+        let mut end2 = end2?;
+        end2.y = complement::floor_to_theta(&end2.y);
         if end2.event == Some(1) {
             return Err(RunError::LiftOff {
                 t: end2.t,

@@ -142,8 +142,33 @@ pub fn floor_series<S: Scalar>(
     cos: &mut [S],
     w: FloorScratch<'_, S>,
 ) {
-    let [theta, x, rate, xdot] = y;
-    let p = theta.len() - 1;
+    floor_series_in(false, g_over_l, inv, y, sin, cos, w);
+}
+
+/// The floor phase in the complement φ = π/2 − θ (`crate::sim::complement`): state series
+/// `y = [φ, X, φ̇, Ẋ]`, `sin`, `cos` those of φ; φ̈ = −θ̈ with sin θ = cos φ, cos θ = sin φ.
+pub fn complement_floor_series<S: Scalar>(
+    g_over_l: &S,
+    inv: &[S],
+    y: [&mut [S]; 4],
+    sin: &mut [S],
+    cos: &mut [S],
+    w: FloorScratch<'_, S>,
+) {
+    floor_series_in(true, g_over_l, inv, y, sin, cos, w);
+}
+
+fn floor_series_in<S: Scalar>(
+    complement: bool,
+    g_over_l: &S,
+    inv: &[S],
+    y: [&mut [S]; 4],
+    sin: &mut [S],
+    cos: &mut [S],
+    w: FloorScratch<'_, S>,
+) {
+    let [angle, x, rate, xdot] = y;
+    let p = angle.len() - 1;
     let third = S::ratio(1, 3);
     let mut inv_q0 = S::int(0);
     for k in 0..=p {
@@ -155,11 +180,17 @@ pub fn floor_series<S: Scalar>(
         if k == p {
             break;
         }
+        // sin θ and cos θ: those of the angle carried, or swapped in the complement.
+        let (st, ct): (&[S], &[S]) = if complement {
+            (&cos[..], &sin[..])
+        } else {
+            (&sin[..], &cos[..])
+        };
         w.rate_sq[k] = product(k, rate, rate);
-        w.cos_rate_sq[k] = product(k, cos, w.rate_sq);
+        w.cos_rate_sq[k] = product(k, ct, w.rate_sq);
         // Numerator n = s (g/l − c θ̇²).
-        let n = g_over_l.clone() * sin[k].clone() - product(k, sin, w.cos_rate_sq);
-        w.inertia[k] = product(k, sin, sin);
+        let n = g_over_l.clone() * st[k].clone() - product(k, st, w.cos_rate_sq);
+        w.inertia[k] = product(k, st, st);
         if k == 0 {
             w.inertia[0] = w.inertia[0].clone() + third.clone();
             inv_q0 = S::int(1) / w.inertia[0].clone();
@@ -171,9 +202,14 @@ pub fn floor_series<S: Scalar>(
             }
             w.accel[k] = r * inv_q0.clone();
         }
-        theta[k + 1] = rate[k].clone() * inv[k + 1].clone();
+        angle[k + 1] = rate[k].clone() * inv[k + 1].clone();
         x[k + 1] = xdot[k].clone() * inv[k + 1].clone();
-        rate[k + 1] = w.accel[k].clone() * inv[k + 1].clone();
+        // θ̈'s series; φ̈ = −θ̈.
+        rate[k + 1] = if complement {
+            -(w.accel[k].clone() * inv[k + 1].clone())
+        } else {
+            w.accel[k].clone() * inv[k + 1].clone()
+        };
         xdot[k + 1] = S::int(0);
     }
 }
@@ -272,14 +308,24 @@ pub fn complement_series_f64(omega2: f64, s: &mut Series<2>) {
     );
 }
 
-/// The floor phase's series in f64, for `FloorPhase::taylor_series`.
+/// The floor phase's series in f64, for `FloorPhase::taylor_series`
 pub fn floor_series_f64(g_over_l: f64, s: &mut Series<4>) {
+    floor_series_f64_in(false, g_over_l, s);
+}
+
+/// The complement floor phase's series in f64, for `ComplementFloor::taylor_series`.
+pub fn complement_floor_series_f64(g_over_l: f64, s: &mut Series<4>) {
+    floor_series_f64_in(true, g_over_l, s);
+}
+
+fn floor_series_f64_in(complement: bool, g_over_l: f64, s: &mut Series<4>) {
     let p = s.order;
     let inv = &INV[..p + 2];
     let mut scratch = [[0.0; MAX_ORDER + 1]; 4];
     let [a, b, c, d] = &mut scratch;
     let [theta, x, rate, xdot] = &mut s.y;
-    floor_series(
+    floor_series_in(
+        complement,
         &g_over_l,
         inv,
         [
