@@ -16,6 +16,7 @@
 //! Dependencies flow one way: scalar, vector → system, ladder → milne → registry → docs, verify;
 //! sim → report. The physics modules know nothing of tests, markdown or the command line.
 
+pub mod book;
 pub mod docs;
 pub mod ladder;
 pub mod method;

@@ -92,6 +92,15 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Write the note as verified as a static HTML book (MathML, no script, offline).
+    Book {
+        /// The directory to write (replaced whole if it holds an earlier book).
+        #[arg(long)]
+        out: PathBuf,
+        /// Random float states per check.
+        #[arg(long, default_value_t = Config::default().float_cases)]
+        cases: usize,
+    },
 }
 
 fn main() -> ExitCode {
@@ -151,5 +160,12 @@ fn main() -> ExitCode {
             sim::work_precision(&scenes, json, out.as_deref())
         }
         Some(Command::Stability { json }) => sliding_ladder::report::stability::command(json),
+        Some(Command::Book { out, cases }) => sliding_ladder::book::command(
+            &out,
+            &Config {
+                float_cases: cases,
+                ..Config::default()
+            },
+        ),
     }
 }

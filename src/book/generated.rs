@@ -1,0 +1,209 @@
+//! The pages made from the checks rather than from `equations/`: the summary table of the
+//! index, the errata, the derivations (methods) and the figures.
+
+use super::math::mathml;
+use super::pages::esc;
+use super::panel::{anchor, status_name};
+use super::BookData;
+use std::collections::BTreeMap;
+use std::path::Path;
+
+fn eq_link(home: &BTreeMap<u32, String>, number: u32, label: &str) -> String {
+    match home.get(&number) {
+        Some(p) => format!("<a href=\"{p}#{}\">{}</a>", anchor(label), esc(label)),
+        None => esc(label),
+    }
+}
+
+/// The index: the summary of the checks, the table of every display, then `README.md`.
+pub fn index_page(data: &BookData, home: &BTreeMap<u32, String>, readme: &str) -> String {
+    let mut rows = String::new();
+    for r in data.results.iter().chain(&data.extensions) {
+        let s = status_name(r.status);
+        rows.push_str(&format!(
+            "<tr data-number=\"{n}\" data-status=\"{s}\" data-proved=\"{p}\"><td>{link}</td><td>{sec}</td><td>{title}</td>\
+<td>{kind}</td><td><span class=\"badge {s}\">{s}</span></td><td>{proved}</td><td>{units}</td><td>{res:.3}</td><td>{exact}</td></tr>\n",
+            n = r.number,
+            p = r.proved,
+            link = eq_link(home, r.number, &r.label),
+            sec = esc(r.section),
+            title = esc(r.title),
+            kind = r.kind.name(),
+            proved = if r.proved { "yes" } else { "no" },
+            units = esc(r.units.name()),
+            res = r.max_residual,
+            exact = if r.exact { "zero" } else { "no" },
+        ));
+    }
+    let (v, e, d, f) = crate::verify::counts(&data.results);
+    format!(
+        "<h1>Torque Analyses of a Sliding Ladder, verified</h1>\n\
+<p class=\"summary\"><strong>{v} verified, {e} erratum, {d} definition, {f} failed</strong> of the note's {} displays. \
+{}</p>\n<p>See also: <a href=\"errata.html\">the errata</a>, <a href=\"methods.html\">the derivations</a>, \
+<a href=\"figures.html\">the figures</a>.</p>\n\
+<h2 id=\"summary\">Every display</h2>\n<p>res/bound: the worst float residual in units of its running error bound \
+(pass ≤ 4); exact: the residual at random rational points.</p>\n\
+<table><thead><tr><th>eq</th><th>sec</th><th>title</th><th>kind</th><th>status</th><th>proved</th><th>units</th>\
+<th>res/bound</th><th>exact</th></tr></thead>\n<tbody>\n{rows}</tbody></table>\n{readme}",
+        data.results.len(),
+        esc(&data.summary),
+    )
+}
+
+fn block(latex: &str, what: &str, problems: &mut Vec<String>) -> String {
+    match mathml(latex, true) {
+        Ok(m) => m,
+        Err(e) => {
+            problems.push(format!("errata.html: {what}: {e}"));
+            "<p class=\"math-error\">[did not typeset]</p>".into()
+        }
+    }
+}
+
+/// The errata: each misprint live from `ladder errata`, the prose claims, then `ERRATA.md`.
+pub fn errata_page(
+    data: &BookData,
+    home: &BTreeMap<u32, String>,
+    notes: &str,
+    problems: &mut Vec<String>,
+) -> String {
+    // A prose erratum is LaTeX when it holds a TeX command, words otherwise.
+    let mut prose = |s: &str| -> String {
+        if !s.contains('\\') {
+            return esc(s);
+        }
+        mathml(s, false).unwrap_or_else(|e| {
+            problems.push(format!("errata.html: {e}"));
+            "[did not typeset]".into()
+        })
+    };
+    let mut claims = String::new();
+    for c in &data.claims {
+        let verdict = match (c.holds, c.printed_fails, c.erratum) {
+            (true, Some(true), Some((p, k))) => format!(
+                "prose erratum: printed {} fails, corrected {} holds",
+                prose(p),
+                prose(k)
+            ),
+            (true, None, Some((p, k))) => format!(
+                "prose slip (the formula is right): printed {}, meant {}",
+                prose(p),
+                prose(k)
+            ),
+            (true, None, None) => "holds".into(),
+            _ => "<strong>FAILED</strong>".into(),
+        };
+        claims.push_str(&format!(
+            "<tr><td>{}</td><td>{}</td><td>{verdict}</td></tr>\n",
+            esc(c.location),
+            esc(c.claim)
+        ));
+    }
+    let mut out = String::from(
+        "<h1>Errata of the note</h1>\n<p>Each misprint below is computed when the book is built: \
+the printed form fails exactly, the corrected form holds, and their difference is simplified \
+symbolically (with s = sin θ, c = cos θ, s² + c² = 1).</p>\n",
+    );
+    for e in &data.errata {
+        let label = format!("({})", e.number);
+        let title = data
+            .results
+            .iter()
+            .find(|r| r.number == e.number)
+            .map(|r| format!(" {}", esc(r.title)))
+            .unwrap_or_default();
+        out.push_str(&format!(
+            "<section class=\"erratum\" data-erratum=\"{n}\"><h2>{link}{title}</h2>\n<dl>\
+<dt>Printed</dt><dd>{p}</dd><dt>Corrected</dt><dd>{c}</dd><dt>Printed − corrected</dt><dd>{d}</dd>\
+<dt>Residual at an exact point</dt><dd>printed {pr}, corrected {cr}</dd><dt>Units</dt><dd>{u}</dd>\
+<dt>Why</dt><dd>{why}</dd></dl></section>\n",
+            n = e.number,
+            link = eq_link(home, e.number, &label),
+            p = block(e.printed, &label, problems),
+            c = block(e.corrected, &label, problems),
+            d = block(&e.difference_latex, &label, problems),
+            pr = esc(&e.printed_residual_exact),
+            cr = esc(&e.corrected_residual),
+            u = esc(e.units.doc_line().trim_start_matches("- ")),
+            why = esc(e.why),
+        ));
+    }
+    out.push_str("<h2>Claims of the prose</h2>\n<table><thead><tr><th>where</th><th>claim</th><th>verdict</th></tr></thead><tbody>\n");
+    out.push_str(&claims);
+    out.push_str("</tbody></table>\n<h2>Notes (equations/ERRATA.md)</h2>\n");
+    out.push_str(
+        &notes
+            .replacen("<h1>", "<h2>", 1)
+            .replacen("</h1>", "</h2>", 1),
+    );
+    out
+}
+
+/// The derivations of the equation of motion, checked.
+pub fn methods_page(data: &BookData) -> String {
+    let mut rows = String::new();
+    for m in &data.methods {
+        rows.push_str(&format!(
+            "<tr data-method=\"{}\"><td>{}</td><td>{}</td><td>{}</td><td>{:.3}</td><td>{}</td></tr>\n",
+            esc(m.name),
+            esc(m.name),
+            if m.passed { "<span class=\"badge verified\">passed</span>" } else { "<span class=\"badge failed\">failed</span>" },
+            m.cases,
+            m.max_residual,
+            esc(&m.problems.join("; "))
+        ));
+    }
+    format!(
+        "<h1>Methods: every derivation of the equation of motion</h1>\n\
+<p>The note derives θ̈ = (3g/4l) sin θ by Lagrange's method and by torque analyses about five \
+points; its appendices add Jensen's methods and Milne's. Each derivation is written as a residual \
+affine in θ̈; the check solves it for θ̈, compares with (5) at random states (tolerance from the \
+running error bound) and shows that the residual vanishes on the motion only. \
+<a href=\"extending.html\">Adding a method</a> explains how to add one.</p>\n\
+<table><thead><tr><th>method</th><th>verdict</th><th>float states</th><th>res/bound</th><th>problems</th></tr></thead>\
+<tbody>\n{rows}</tbody></table>\n"
+    )
+}
+
+/// The SVG figures of `equations/figures/`, sorted by name.
+pub fn figure_files(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut files: Vec<(String, Vec<u8>)> = std::fs::read_dir(dir.join("figures"))
+        .map(|rd| {
+            rd.filter_map(|e| e.ok())
+                .filter(|e| e.file_name().to_string_lossy().ends_with(".svg"))
+                .filter_map(|e| {
+                    Some((
+                        e.file_name().to_string_lossy().to_string(),
+                        std::fs::read(e.path()).ok()?,
+                    ))
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    files.sort();
+    files
+}
+
+fn caption(name: &str) -> String {
+    match name.strip_prefix("forces-").and_then(|n| n.strip_suffix(".svg")) {
+        Some(p) => format!(
+            "The forces of the torque analysis about {}: F_w at C, F_f at D, m g at B, each lever arm dashed (drawn by report::diagram).",
+            p.to_uppercase()
+        ),
+        None => name.to_string(),
+    }
+}
+
+/// The figures page: every figure with its caption.
+pub fn figures_page(files: &[(String, Vec<u8>)]) -> String {
+    let mut out = String::from("<h1>Figures</h1>\n");
+    for (name, _) in files {
+        out.push_str(&format!(
+            "<figure id=\"{id}\"><img src=\"figures/{n}\" alt=\"{c}\" /><figcaption>{c}</figcaption></figure>\n",
+            id = esc(name.trim_end_matches(".svg")),
+            n = esc(name),
+            c = esc(&caption(name)),
+        ));
+    }
+    out
+}

@@ -1,0 +1,179 @@
+//! One `equations/*.md` file as the body of a book page, with pulldown-cmark.
+//!
+//! pulldown-cmark (already the crate's markdown parser, for the doc-as-test harness) gives the
+//! math as `DisplayMath`/`InlineMath` events (`Options::ENABLE_MATH`); each becomes MathML
+//! ([`super::math`]). The first display after a heading `(N) …` is the numbered display of
+//! equation N and gets its number and its panel of checks ([`super::panel`]); links are
+//! rewritten from the repository's layout to the book's.
+
+use super::math::mathml;
+use pulldown_cmark::{html, CowStr, Event, Options, Parser, Tag, TagEnd};
+
+/// Makes the numbered display of an equation: see [`Hooks::display`].
+pub type DisplayHook<'a> = &'a dyn Fn(u32, &str) -> Option<Result<String, String>>;
+
+/// What a page needs from the rest of the book.
+pub struct Hooks<'a> {
+    /// The numbered display of an equation (by the number of its heading, extensions 1000+k)
+    /// with its panel, given the LaTeX of the markdown; `None` when the number is unknown.
+    pub display: DisplayHook<'a>,
+    /// The book's address for a link of the markdown (`dest`), given the inline code inside
+    /// the link, if any (a function path); `None` when it cannot be resolved.
+    pub link: &'a dyn Fn(&str, Option<&str>) -> Option<String>,
+}
+
+/// The number in a heading `(N) Title` or `(PN) Title` (extension: 1000 + N).
+pub fn heading_number(text: &str) -> Option<u32> {
+    let rest = text.trim_start().strip_prefix('(')?;
+    let inner = rest[..rest.find(')')?].trim();
+    match inner.strip_prefix('P') {
+        Some(k) => k
+            .parse::<u32>()
+            .ok()
+            .map(|k| crate::registry::EXTENSION_BASE + k),
+        None => inner.parse().ok(),
+    }
+}
+
+fn anchor_of(n: u32) -> String {
+    match n.checked_sub(crate::registry::EXTENSION_BASE) {
+        Some(k) if k > 0 => format!("eq-P{k}"),
+        _ => format!("eq-{n}"),
+    }
+}
+
+/// Text of the heading that starts at `events[i]` and the inline code of a link there.
+fn text_until<'e>(
+    events: &[Event<'e>],
+    i: usize,
+    end: fn(&Event) -> bool,
+) -> (String, Option<String>) {
+    let (mut text, mut code) = (String::new(), None);
+    for ev in &events[i + 1..] {
+        if end(ev) {
+            break;
+        }
+        match ev {
+            Event::Text(t) => text.push_str(t),
+            Event::Code(c) => {
+                text.push_str(c);
+                code.get_or_insert_with(|| c.to_string());
+            }
+            _ => {}
+        }
+    }
+    (text, code)
+}
+
+/// Render `src` (the file `name`) to HTML; returns the HTML and every problem found.
+pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
+    let opts = Options::ENABLE_MATH | Options::ENABLE_TABLES | Options::ENABLE_STRIKETHROUGH;
+    let events: Vec<Event> = Parser::new_ext(src, opts).collect();
+    let mut problems = Vec::new();
+    let mut out: Vec<Event> = Vec::with_capacity(events.len());
+    let mut pending: Option<u32> = None;
+    for (i, ev) in events.iter().enumerate() {
+        let ev = ev.clone();
+        match ev {
+            Event::Start(Tag::Heading {
+                level,
+                id,
+                classes,
+                attrs,
+            }) => {
+                let (text, _) =
+                    text_until(&events, i, |e| matches!(e, Event::End(TagEnd::Heading(_))));
+                let number = heading_number(&text);
+                pending = number;
+                let id = number.map(|n| CowStr::from(anchor_of(n))).or(id);
+                out.push(Event::Start(Tag::Heading {
+                    level,
+                    id,
+                    classes,
+                    attrs,
+                }));
+            }
+            Event::DisplayMath(latex) => {
+                let html = match pending.take() {
+                    Some(n) => match (hooks.display)(n, &latex) {
+                        Some(Ok(h)) => h,
+                        Some(Err(e)) => {
+                            problems.push(format!("{name}: {e}"));
+                            "<p class=\"math-error\">[this display did not typeset]</p>".into()
+                        }
+                        None => {
+                            problems.push(format!(
+                                "{name}: no verification result for {}",
+                                anchor_of(n)
+                            ));
+                            "<p class=\"math-error\">[no result for this display]</p>".into()
+                        }
+                    },
+                    None => match mathml(&latex, true) {
+                        Ok(m) => format!("<div class=\"display\">{m}</div>"),
+                        Err(e) => {
+                            problems.push(format!("{name}: {e}"));
+                            "<p class=\"math-error\">[this display did not typeset]</p>".into()
+                        }
+                    },
+                };
+                out.push(Event::Html(format!("{html}\n").into()));
+            }
+            Event::InlineMath(latex) => match mathml(&latex, false) {
+                Ok(m) => out.push(Event::InlineHtml(m.into())),
+                Err(e) => {
+                    problems.push(format!("{name}: {e}"));
+                    out.push(Event::Text("[formula did not typeset]".into()));
+                }
+            },
+            Event::Start(Tag::Link {
+                link_type,
+                dest_url,
+                title,
+                id,
+            }) => {
+                let (_, code) = text_until(&events, i, |e| matches!(e, Event::End(TagEnd::Link)));
+                let dest = match (hooks.link)(&dest_url, code.as_deref()) {
+                    Some(d) => CowStr::from(d),
+                    None => {
+                        problems.push(format!("{name}: the link to {dest_url} does not resolve"));
+                        dest_url
+                    }
+                };
+                out.push(Event::Start(Tag::Link {
+                    link_type,
+                    dest_url: dest,
+                    title,
+                    id,
+                }));
+            }
+            Event::Html(h) | Event::InlineHtml(h) => {
+                // The sources hold no raw HTML; should one appear it is shown, not obeyed.
+                out.push(Event::Text(h));
+            }
+            other => out.push(other),
+        }
+    }
+    let mut html_out = String::new();
+    html::push_html(&mut html_out, out.into_iter());
+    (html_out, problems)
+}
+
+/// The links of a markdown table section (e.g. the contents of `README.md`), in order.
+pub fn links_in(src: &str) -> Vec<String> {
+    Parser::new_ext(src, Options::ENABLE_TABLES)
+        .filter_map(|e| match e {
+            Event::Start(Tag::Link { dest_url, .. }) => Some(dest_url.to_string()),
+            _ => None,
+        })
+        .collect()
+}
+
+/// A short label for the navigation: the first heading's text, up to the em dash.
+pub fn title_of(src: &str) -> String {
+    let line = src
+        .lines()
+        .find(|l| l.starts_with("# "))
+        .unwrap_or("# Untitled");
+    line.trim_start_matches("# ").trim().to_string()
+}

@@ -1,0 +1,132 @@
+//! `ladder book --out DIR`: the note as verified, as a static HTML book that opens offline in
+//! any browser, with no script and no network.
+//!
+//! One page per file of `equations/`, in the order of the contents table of
+//! `equations/README.md` (the note's order); every display typeset as MathML; beside each
+//! numbered display its status, live from the checks run at build time. Generated pages: the
+//! index with the summary table, the errata (printed against corrected, with the symbolic
+//! difference), the derivations (methods) and the figures; every linked Rust source file as a
+//! page with line anchors, so `file:line` links resolve inside the book.
+//!
+//! Crates: pulldown-cmark reads the markdown (math events, tables), pulldown-latex turns LaTeX
+//! into MathML Core ([`math`] says why). The HTML frame, the stylesheet and the atomic write are
+//! written by hand: a template engine would add a dependency for five page shapes.
+
+pub mod code;
+pub mod generated;
+pub mod markdown;
+pub mod math;
+pub mod pages;
+pub mod panel;
+pub mod site;
+mod write;
+
+pub use write::write_atomically;
+
+use crate::registry::check::Config;
+use crate::verify::errata::ErratumReport;
+use crate::verify::{EquationResult, MethodResult};
+use std::path::Path;
+use std::process::ExitCode;
+
+/// Everything the book shows that comes from running the checks.
+pub struct BookData {
+    /// The 90 displays of the note, judged.
+    pub results: Vec<EquationResult>,
+    /// The extension beyond the note, (P1)-(P5).
+    pub extensions: Vec<EquationResult>,
+    /// The misprints with their evidence.
+    pub errata: Vec<ErratumReport>,
+    /// The prose claims, checked.
+    pub claims: Vec<crate::verify::claims::Claim>,
+    /// The derivations of the equation of motion.
+    pub methods: Vec<MethodResult>,
+    /// Problems the doc-as-test harness found in `equations/`.
+    pub docs_problems: Vec<String>,
+    /// The summary line of `ladder verify`.
+    pub summary: String,
+}
+
+impl BookData {
+    /// Run every check (as `ladder verify` and `ladder errata` do) with `cfg`.
+    pub fn gather(cfg: &Config) -> BookData {
+        let t = std::time::Instant::now();
+        let results = crate::verify::verify_all(cfg);
+        let docs = crate::docs::check_book(&crate::docs::default_dir());
+        let summary =
+            crate::verify::command::summary_line(&results, cfg, t.elapsed().as_secs_f64());
+        BookData {
+            extensions: crate::verify::verify_extensions(cfg),
+            errata: crate::verify::errata::errata(cfg),
+            claims: crate::verify::claims::claims(),
+            methods: crate::verify::check_methods(cfg),
+            docs_problems: docs.problems,
+            summary,
+            results,
+        }
+    }
+
+    /// True when every display passed (verified, proved where claimed, erratum or definition),
+    /// every method passed and the markdown matches the registry.
+    pub fn all_good(&self) -> bool {
+        let ok = |r: &EquationResult| r.status != crate::verify::Status::Failed;
+        self.results.len() == 90
+            && self.results.iter().all(ok)
+            && self.extensions.iter().all(ok)
+            && self.methods.iter().all(|m| m.passed)
+            && self.docs_problems.is_empty()
+    }
+}
+
+/// A file of the book: its path below the book's root (`/`-separated) and its bytes.
+pub type BookFile = (String, Vec<u8>);
+
+/// The book in memory, and what went wrong while making it (a display that did not typeset,
+/// a link that does not resolve).
+pub struct Built {
+    /// Every file.
+    pub files: Vec<BookFile>,
+    /// Problems, as `file: message`.
+    pub problems: Vec<String>,
+}
+
+/// Make the book from the markdown under `root/equations` and the check results.
+pub fn build(root: &Path, data: &BookData) -> Built {
+    site::build(root, data)
+}
+
+/// Run `ladder book --out DIR`: 0 when the book is written and every check passed, 1 when it
+/// is written but some check failed or some display did not typeset, 2 when it cannot be
+/// written (nothing is left behind).
+pub fn command(out: &Path, cfg: &Config) -> ExitCode {
+    if let Err(e) = write::check_out(out) {
+        eprintln!("ladder book: {e}");
+        return ExitCode::from(2);
+    }
+    let data = BookData::gather(cfg);
+    let built = build(&code::crate_root(), &data);
+    if let Err(e) = write_atomically(out, &built.files) {
+        eprintln!("ladder book: {e}");
+        return ExitCode::from(2);
+    }
+    let pages = built
+        .files
+        .iter()
+        .filter(|(n, _)| n.ends_with(".html"))
+        .count();
+    println!(
+        "book: {} files ({pages} pages) written to {}; open {}",
+        built.files.len(),
+        out.display(),
+        out.join("index.html").display()
+    );
+    println!("{}", data.summary);
+    for p in built.problems.iter().chain(&data.docs_problems) {
+        println!("  ! {p}");
+    }
+    if built.problems.is_empty() && data.all_good() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
+}

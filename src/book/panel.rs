@@ -1,0 +1,193 @@
+//! Beside each numbered display: its live status from the checks, the forms checked, the
+//! residual and the proof, the Rust functions (file and line), and for an erratum the printed
+//! and corrected forms with their difference.
+
+use super::code::{page_of, Location};
+use super::math::mathml;
+use super::pages::esc;
+use crate::verify::errata::ErratumReport;
+use crate::verify::{EquationResult, Status};
+
+/// The status word used in the HTML (`data-status`) and the JSON of `ladder verify`.
+pub fn status_name(s: Status) -> &'static str {
+    match s {
+        Status::Verified => "verified",
+        Status::Erratum => "erratum",
+        Status::Definition => "definition",
+        Status::Failed => "failed",
+    }
+}
+
+/// The anchor of a numbered display: `eq-12`, `eq-P3`.
+pub fn anchor(label: &str) -> String {
+    format!("eq-{}", label.trim_matches(|c| c == '(' || c == ')'))
+}
+
+/// A registered function and where it was found.
+pub struct Function<'a> {
+    /// Its path below the crate root.
+    pub path: &'a str,
+    /// Its file and line, when found.
+    pub location: Option<Location>,
+}
+
+/// The numbered display (MathML and its number) followed by the panel of its checks.
+pub fn numbered_display(
+    latex: &str,
+    r: &EquationResult,
+    functions: &[Function],
+    erratum: Option<&ErratumReport>,
+) -> Result<String, String> {
+    let m = mathml(latex, true).map_err(|e| format!("{}: {e}", r.label))?;
+    let status = status_name(r.status);
+    Ok(format!(
+        "<div class=\"eq\" id=\"display-{a}\" data-number=\"{n}\" data-status=\"{status}\" data-proved=\"{p}\">\n\
+<div class=\"display\">{m}<span class=\"eqno\">{label}</span></div>\n{panel}</div>\n",
+        a = anchor(&r.label),
+        n = r.number,
+        p = r.proved,
+        label = esc(&r.label),
+        panel = panel(r, functions, erratum)?
+    ))
+}
+
+fn badges(r: &EquationResult) -> String {
+    let s = status_name(r.status);
+    let mut b = format!("<span class=\"badge {s}\">{s}</span>");
+    if r.proved {
+        b.push_str(" <span class=\"badge proved\">proved</span>");
+    }
+    b
+}
+
+fn forms_checked(r: &EquationResult) -> String {
+    let mut s = format!(
+        "{} check{}: {}",
+        r.checks.len(),
+        if r.checks.len() == 1 { "" } else { "s" },
+        esc(&r.checks.join("; "))
+    );
+    if r.print_forms > 0 {
+        s.push_str(&format!(
+            ". Print: {} of {} forms parsed, {} held against another printed form{}",
+            r.print_parsed,
+            r.print_forms,
+            r.print_checked,
+            if r.print_matches_code {
+                "; every Rust form matches the print"
+            } else {
+                "; some Rust form matches no printed form"
+            }
+        ));
+    }
+    s
+}
+
+fn residual(r: &EquationResult) -> String {
+    format!(
+        "worst {:.3} error bounds over {} float states (pass ≤ 4); {} at {} exact rational points \
+(Schwartz–Zippel chance of a false pass ≤ 1e{})",
+        r.max_residual,
+        r.cases,
+        if r.exact { "zero" } else { "not zero" },
+        r.exact_points,
+        r.sz_bound_log10.ceil()
+    )
+}
+
+fn function_links(functions: &[Function]) -> String {
+    functions
+        .iter()
+        .map(|f| match &f.location {
+            Some(l) => format!(
+                "<a href=\"{}#L{}\"><code>{}</code></a> <small>({}:{})</small>",
+                esc(&page_of(&l.file)),
+                l.line,
+                esc(f.path),
+                esc(&l.file),
+                l.line
+            ),
+            None => format!(
+                "<code>{}</code> <small>(not found in the source)</small>",
+                esc(f.path)
+            ),
+        })
+        .collect::<Vec<_>>()
+        .join("<br />")
+}
+
+fn erratum_forms(e: &ErratumReport) -> Result<String, String> {
+    let label = format!("({})", e.number);
+    let m = |l: &str| mathml(l, false).map_err(|x| format!("{label}: {x}"));
+    Ok(format!(
+        "<div class=\"erratum-forms\"><dl>\
+<dt>Printed</dt><dd>{}</dd><dt>Corrected</dt><dd>{}</dd>\
+<dt>Printed − corrected</dt><dd>{}</dd>\
+<dt>At an exact point</dt><dd>printed residual {}, corrected {}</dd>\
+<dt>Why</dt><dd>{}</dd></dl></div>",
+        m(e.printed)?,
+        m(e.corrected)?,
+        m(&e.difference_latex)?,
+        esc(&e.printed_residual_exact),
+        esc(&e.corrected_residual),
+        esc(e.why)
+    ))
+}
+
+fn panel(
+    r: &EquationResult,
+    functions: &[Function],
+    erratum: Option<&ErratumReport>,
+) -> Result<String, String> {
+    let mut rows = vec![
+        ("Kind", esc(r.kind.name())),
+        ("Forms checked", forms_checked(r)),
+        ("Residual", residual(r)),
+        (
+            "Proof",
+            format!("{} ({:.3} s)", esc(&r.proof), r.proof_seconds),
+        ),
+        (
+            "Units",
+            format!(
+                "{}{}",
+                esc(r.units.name()),
+                r.units_detail
+                    .as_deref()
+                    .map(|d| format!(": {}", esc(d)))
+                    .unwrap_or_default()
+            ),
+        ),
+    ];
+    if let (Some(step), Some(law)) = (r.law_step, r.law) {
+        rows.push(("Law", format!("at <code>=</code> no. {step}: {}", esc(law))));
+    }
+    if let Some(off) = r.fails_off_shell {
+        rows.push((
+            "Off the motion",
+            if off {
+                "fails, as it must"
+            } else {
+                "holds too: the check cannot tell"
+            }
+            .into(),
+        ));
+    }
+    rows.push(("Code", function_links(functions)));
+    for p in &r.problems {
+        rows.push(("Problem", esc(p)));
+    }
+    let dl: String = rows
+        .iter()
+        .map(|(k, v)| format!("<dt>{k}</dt><dd>{v}</dd>"))
+        .collect();
+    let forms = match erratum {
+        Some(e) => erratum_forms(e)?,
+        None => String::new(),
+    };
+    Ok(format!(
+        "<aside class=\"checks\" aria-label=\"Checks of {}\"><p class=\"status\">{}</p><dl>{dl}</dl>{forms}</aside>\n",
+        esc(&r.label),
+        badges(r)
+    ))
+}

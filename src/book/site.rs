@@ -1,0 +1,269 @@
+//! Assembling the book: which pages, in which order, and how links map from the repository's
+//! layout (`equations/*.md`, `../src/…`, `figures/…`) to the book's.
+
+use super::code::{locate, page_of};
+use super::markdown::{heading_number, links_in, render, title_of, Hooks};
+use super::pages::{page, NavItem, STYLE};
+use super::panel::{numbered_display, Function};
+use super::{generated, BookData, BookFile, Built};
+use crate::registry::Equation;
+use std::cell::RefCell;
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::Path;
+
+/// The book page of a markdown file: `README.md` is the index, `ERRATA.md` joins the errata
+/// page, any other `X.md` becomes `x.html`.
+pub fn page_name(md: &str) -> String {
+    match md {
+        "README.md" => "index.html".into(),
+        _ => format!("{}.html", md.trim_end_matches(".md").to_lowercase()),
+    }
+}
+
+/// The markdown files in the note's order: the contents table of `README.md`, then any other.
+fn ordered_files(dir: &Path, readme: &str) -> Vec<String> {
+    let contents = readme.find("## Contents").map_or(readme, |i| &readme[i..]);
+    let mut order: Vec<String> = Vec::new();
+    for l in links_in(contents) {
+        if l.ends_with(".md") && !l.contains('/') && dir.join(&l).is_file() && !order.contains(&l) {
+            order.push(l);
+        }
+    }
+    let mut rest: Vec<String> = std::fs::read_dir(dir)
+        .map(|rd| {
+            rd.filter_map(|e| e.ok())
+                .map(|e| e.file_name().to_string_lossy().to_string())
+                .filter(|n| n.ends_with(".md") && n != "README.md")
+                .collect()
+        })
+        .unwrap_or_default();
+    rest.sort();
+    for r in rest {
+        if !order.contains(&r) {
+            order.push(r);
+        }
+    }
+    order
+}
+
+/// A short navigation label: "Sec. 2.2 — Torque …" → "2.2", "Phase 2: the floor …" →
+/// "Phase 2", "Errata of the note" → "Errata".
+fn short_label(title: &str) -> String {
+    let head = title.split(" — ").next().unwrap_or(title);
+    let head = head.split(':').next().unwrap_or(head);
+    let head = head.trim_start_matches("Sec. ").trim();
+    if head.chars().count() > 12 {
+        head.split_whitespace().next().unwrap_or(head).to_string()
+    } else {
+        head.to_string()
+    }
+}
+
+/// Every registered equation by number (extensions 1000 + k).
+fn registry() -> BTreeMap<u32, Equation> {
+    crate::registry::equations()
+        .into_iter()
+        .chain(crate::registry::extensions())
+        .map(|e| (e.number, e))
+        .collect()
+}
+
+/// Resolve a markdown link to the book's address; source files are recorded in `code`.
+fn resolve(
+    root: &Path,
+    dest: &str,
+    code_text: Option<&str>,
+    code: &RefCell<BTreeSet<String>>,
+) -> Option<String> {
+    if dest.starts_with("https://") || dest.starts_with("http://") {
+        return Some(dest.to_string());
+    }
+    let (path, frag) = match dest.split_once('#') {
+        Some((p, f)) => (p, Some(f)),
+        None => (dest, None),
+    };
+    let dir = root.join("equations");
+    if path.ends_with(".md") && !path.contains('/') && dir.join(path).is_file() {
+        return Some(format!(
+            "{}{}",
+            page_name(path),
+            frag.map(|f| format!("#{f}")).unwrap_or_default()
+        ));
+    }
+    if path.starts_with("figures/") && dir.join(path).is_file() {
+        return Some(path.to_string());
+    }
+    let file = path.strip_prefix("../")?;
+    if file.contains("..") || !root.join(file).is_file() {
+        return None;
+    }
+    code.borrow_mut().insert(file.to_string());
+    let line = code_text
+        .and_then(|c| locate(root, c))
+        .filter(|l| l.file == file)
+        .map(|l| format!("#L{}", l.line))
+        .unwrap_or_default();
+    Some(format!("{}{line}", page_of(file)))
+}
+
+/// Make every file of the book.
+pub fn build(root: &Path, data: &BookData) -> Built {
+    let dir = root.join("equations");
+    let mut problems = Vec::new();
+    let readme = std::fs::read_to_string(dir.join("README.md")).unwrap_or_else(|e| {
+        problems.push(format!("equations/README.md: cannot read: {e}"));
+        String::new()
+    });
+    let files = ordered_files(&dir, &readme);
+    let sources: BTreeMap<String, String> = files
+        .iter()
+        .filter_map(|f| match std::fs::read_to_string(dir.join(f)) {
+            Ok(s) => Some((f.clone(), s)),
+            Err(e) => {
+                problems.push(format!("equations/{f}: cannot read: {e}"));
+                None
+            }
+        })
+        .collect();
+    // Where each numbered display lives.
+    let mut home: BTreeMap<u32, String> = BTreeMap::new();
+    for (f, src) in &sources {
+        for l in src.lines().filter(|l| l.starts_with('#')) {
+            if let Some(n) = heading_number(l.trim_start_matches('#')) {
+                home.entry(n).or_insert_with(|| page_name(f));
+            }
+        }
+    }
+    let mut nav: Vec<NavItem> = vec![("index.html".into(), "Contents".into())];
+    for f in &files {
+        if let Some(src) = sources.get(f) {
+            nav.push((page_name(f), short_label(&title_of(src))));
+        }
+    }
+    nav.push(("methods.html".into(), "Methods".into()));
+    nav.push(("figures.html".into(), "Figures".into()));
+    let reg = registry();
+    let results: BTreeMap<u32, _> = data
+        .results
+        .iter()
+        .chain(&data.extensions)
+        .map(|r| (r.number, r))
+        .collect();
+    let errata: BTreeMap<u32, _> = data.errata.iter().map(|e| (e.number, e)).collect();
+    let code = RefCell::new(BTreeSet::new());
+    let missing = RefCell::new(Vec::new());
+    let display = |n: u32, latex: &str| -> Option<Result<String, String>> {
+        let r = results.get(&n)?;
+        let e = reg.get(&n)?;
+        let functions: Vec<Function> = e
+            .functions
+            .iter()
+            .map(|p| {
+                let location = locate(root, p);
+                match &location {
+                    Some(l) => {
+                        code.borrow_mut().insert(l.file.clone());
+                    }
+                    None => missing
+                        .borrow_mut()
+                        .push(format!("({n}): function {p} not found in the source")),
+                }
+                Function { path: p, location }
+            })
+            .collect();
+        Some(numbered_display(
+            latex,
+            r,
+            &functions,
+            errata.get(&n).copied(),
+        ))
+    };
+    let link = |dest: &str, text: Option<&str>| resolve(root, dest, text, &code);
+    let hooks = Hooks {
+        display: &display,
+        link: &link,
+    };
+    let mut out: Vec<BookFile> = Vec::new();
+    let mut bodies: BTreeMap<String, String> = BTreeMap::new();
+    for (f, src) in sources
+        .iter()
+        .chain(std::iter::once((&"README.md".to_string(), &readme)))
+    {
+        let (html, p) = render(&format!("equations/{f}"), src, &hooks);
+        problems.extend(p);
+        bodies.insert(f.clone(), html);
+    }
+    for f in &files {
+        let name = page_name(f);
+        let body = bodies.remove(f).unwrap_or_default();
+        let body = if f == "ERRATA.md" {
+            generated::errata_page(data, &home, &body, &mut problems)
+        } else {
+            body
+        };
+        let title = sources.get(f).map(|s| title_of(s)).unwrap_or_default();
+        out.push((
+            name.clone(),
+            page(&title, 0, &nav, &name, &body).into_bytes(),
+        ));
+    }
+    let index_body = generated::index_page(data, &home, bodies.get("README.md").map_or("", |s| s));
+    out.push((
+        "index.html".into(),
+        page("Contents", 0, &nav, "index.html", &index_body).into_bytes(),
+    ));
+    out.push((
+        "methods.html".into(),
+        page(
+            "Methods",
+            0,
+            &nav,
+            "methods.html",
+            &generated::methods_page(data),
+        )
+        .into_bytes(),
+    ));
+    let figures = generated::figure_files(&dir);
+    out.push((
+        "figures.html".into(),
+        page(
+            "Figures",
+            0,
+            &nav,
+            "figures.html",
+            &generated::figures_page(&figures),
+        )
+        .into_bytes(),
+    ));
+    for (name, bytes) in figures {
+        out.push((format!("figures/{name}"), bytes));
+    }
+    for file in code.into_inner() {
+        match std::fs::read_to_string(root.join(&file)) {
+            Ok(src) => {
+                let name = page_of(&file);
+                let depth = name.matches('/').count();
+                let body = super::code::source_html(&file, &src);
+                out.push((
+                    name.clone(),
+                    page(&file, depth, &nav, &name, &body).into_bytes(),
+                ));
+            }
+            Err(e) => problems.push(format!("{file}: cannot read: {e}")),
+        }
+    }
+    out.push(("style.css".into(), STYLE.as_bytes().to_vec()));
+    problems.extend(missing.into_inner());
+    for r in data.results.iter().chain(&data.extensions) {
+        if !home.contains_key(&r.number) {
+            problems.push(format!(
+                "{}: no page of equations/ has this display",
+                r.label
+            ));
+        }
+    }
+    Built {
+        files: out,
+        problems,
+    }
+}
