@@ -143,4 +143,11 @@ impl<const N: usize, O: Observer<N>> Observer<N> for Shifted<'_, O> {
     fn observe(&mut self, t: f64, y: &[f64; N]) {
         self.0.observe(t + self.1, y);
     }
+    fn wants_steps(&self) -> bool {
+        self.0.wants_steps()
+    }
+    fn step(&mut self, t0: f64, t1: f64, dense: &dyn Fn(f64) -> [f64; N]) {
+        let shift = self.1;
+        self.0.step(t0 + shift, t1 + shift, &|t| dense(t - shift));
+    }
 }
