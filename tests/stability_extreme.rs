@@ -194,3 +194,25 @@ proptest! {
         }
     }
 }
+
+/// The near-flat rows of `ladder stability`: their time verdicts hold with the complement's
+/// error model (10 N τ φ_s / travel), a bound tight enough that the error of carrying θ
+/// (1.5e-8 at π/2 − 1e-9, issue 17) would fail it; in θ the bound was 5e-3.
+#[test]
+fn near_flat_stability_rows_hold_a_bound_that_carrying_theta_fails() {
+    let cases = sliding_ladder::report::stability_extreme::extreme_cases(&mut |_, _| {});
+    let rows: Vec<_> = cases
+        .iter()
+        .filter(|c| c.case.contains("π/2−1e-9") && c.case.ends_with("time"))
+        .collect();
+    assert_eq!(rows.len(), 1, "{cases:#?}");
+    let row = rows[0];
+    assert_eq!(
+        row.verdict,
+        sliding_ladder::report::stability::Verdict::Ok,
+        "{row:?}"
+    );
+    let bound = row.bound.unwrap();
+    assert!(row.error.unwrap() <= bound);
+    assert!(bound < 1.5e-8, "{row:?}");
+}

@@ -110,6 +110,12 @@ impl<O: Observer<2>> Observer<2> for InTheta<'_, O> {
     fn observe(&mut self, t: f64, y: &[f64; 2]) {
         self.0.observe(t, &to_theta(y));
     }
+    fn wants_steps(&self) -> bool {
+        self.0.wants_steps()
+    }
+    fn step(&mut self, t0: f64, t1: f64, dense: &dyn Fn(f64) -> [f64; 2]) {
+        self.0.step(t0, t1, &|t| to_theta(&dense(t)));
+    }
 }
 
 /// Phase-2 θ̈ written in the complement: cos φ (g/l − sin φ φ̇²) / (cos² φ + 1/3)
@@ -204,6 +210,12 @@ impl<O: Observer<4>> Observer<4> for InTheta<'_, O> {
     }
     fn observe(&mut self, t: f64, y: &[f64; 4]) {
         self.0.observe(t, &floor_to_theta(y));
+    }
+    fn wants_steps(&self) -> bool {
+        self.0.wants_steps()
+    }
+    fn step(&mut self, t0: f64, t1: f64, dense: &dyn Fn(f64) -> [f64; 4]) {
+        self.0.step(t0, t1, &|t| floor_to_theta(&dense(t)));
     }
 }
 

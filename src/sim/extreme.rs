@@ -12,6 +12,7 @@
 //!   as √(l/g) and forces as m g (the forces are products m l Ω² ..., each within f64's range
 //!   for factors in 1e-30..1e30).
 
+use super::complement;
 use super::event::{Direction, Event};
 use super::fall::SeparationState;
 use super::integrators::any::AnyStepper;
@@ -67,19 +68,42 @@ pub fn wall_release(
     let wall = WallPhase::new(ladder);
     let (t0, y0) = linear_lead_in(omega2, theta0, rate0)
         .map_or((0.0, [theta0, rate0]), |(t, th, w)| (t, [th, w]));
-    let mut stepper = AnyStepper::new(method, control, 0.0, y0)
+    // Near the floor, in φ = π/2 − θ (see `super::complement`).
+    let in_complement = complement::applies(y0[0]);
+    let start = match in_complement {
+        true => [complement::complement(y0[0]), -y0[1]],
+        false => y0,
+    };
+    let mut stepper = AnyStepper::new(method, control, 0.0, start)
         .ok_or_else(|| RunError::Start(format!("method {method} does not take {control:?}")))?;
     // The longest fall the scenes allow (1e4 s at l = g = 1 m, s⁻²), in this ladder's units.
     let t_end = MAX_END_TIME * (ladder.half_length / ladder.gravity).sqrt();
     // In time since the lead-in (the steppers' step floor is relative to |t|).
-    let end = integrate_phase(
-        &wall,
-        &mut stepper,
-        &[&Factor(omega2)],
-        t_end - t0,
-        max_steps,
-        &mut (),
-    )
+    let end = if in_complement {
+        let sys = complement::ComplementWall::new(ladder);
+        let event = complement::ComplementSeparation(omega2);
+        integrate_phase(
+            &sys,
+            &mut stepper,
+            &[&event],
+            t_end - t0,
+            max_steps,
+            &mut (),
+        )
+        .map(|mut e| {
+            e.y = complement::to_theta(&e.y);
+            e
+        })
+    } else {
+        integrate_phase(
+            &wall,
+            &mut stepper,
+            &[&Factor(omega2)],
+            t_end - t0,
+            max_steps,
+            &mut (),
+        )
+    }
     .map(|mut e| {
         e.t += t0;
         e
@@ -142,5 +166,12 @@ impl<const N: usize, O: Observer<N>> Observer<N> for Shifted<'_, O> {
     }
     fn observe(&mut self, t: f64, y: &[f64; N]) {
         self.0.observe(t + self.1, y);
+    }
+    fn wants_steps(&self) -> bool {
+        self.0.wants_steps()
+    }
+    fn step(&mut self, t0: f64, t1: f64, dense: &dyn Fn(f64) -> [f64; N]) {
+        let shift = self.1;
+        self.0.step(t0 + shift, t1 + shift, &|t| dense(t - shift));
     }
 }

@@ -8,6 +8,7 @@ use super::exact::PhaseOne;
 use super::floor;
 use super::integrators::any::AnyStepper;
 use super::integrators::{Stats, Stepper};
+use super::minimum::minimum_on;
 use super::output::Output;
 use super::rigid::{self, Ladder, WallPhase};
 use super::run::{integrate_phase, Observer, RunError};
@@ -142,6 +143,9 @@ struct TraceObserver<'a> {
     trace: Option<&'a mut Vec<Sample>>,
     monitor: Option<FloorReport>,
     force_evals: u64,
+    /// Start of the phase: the top clearance is 0 there by construction (eq. (7)), so its
+    /// minimum is searched after it.
+    phase_start: f64,
 }
 
 impl TraceObserver<'_> {
@@ -201,6 +205,36 @@ impl Observer<4> for TraceObserver<'_> {
     }
     fn observe(&mut self, t: f64, y: &[f64; 4]) {
         self.record(t, y[0], y[2], y[1]);
+    }
+    fn wants_steps(&self) -> bool {
+        self.monitor.is_some()
+    }
+    /// The monitors' minima between samples, searched on the step's dense output.
+    fn step(&mut self, t0: f64, t1: f64, dense: &dyn Fn(f64) -> [f64; 4]) {
+        let ladder = self.ladder;
+        let Some(m) = self.monitor.as_mut() else {
+            return;
+        };
+        let evals = Cell::new(0u64);
+        let force = |t: f64| {
+            evals.set(evals.get() + 1);
+            let y = dense(t);
+            floor::floor_force(&ladder, y[0], y[2])
+        };
+        let clearance = |t: f64| {
+            let y = dense(t);
+            floor::top_x(&ladder, y[0], y[1])
+        };
+        let f = minimum_on(force, t0, t1, SAMPLES_PER_STEP);
+        m.floor_force_min = m.floor_force_min.min(f);
+        let k = SAMPLES_PER_STEP;
+        let c = if t0 == self.phase_start {
+            minimum_on(clearance, t0 + (t1 - t0) / (k + 1) as f64, t1, k - 1)
+        } else {
+            minimum_on(clearance, t0, t1, k)
+        };
+        m.top_clearance_min = m.top_clearance_min.min(c);
+        self.force_evals += evals.get();
     }
 }
 
@@ -328,6 +362,7 @@ fn run_rigid(
         trace: trace.as_mut(),
         monitor: None,
         force_evals: 0,
+        phase_start: 0.0,
     };
     obs.observe(0.0, &y0);
     if t0 > 0.0 {
@@ -392,6 +427,7 @@ fn run_rigid(
             trace: trace.as_mut(),
             monitor,
             force_evals: 0,
+            phase_start: sep.time,
         };
         let lift = LiftOffEvent {
             ladder,

@@ -20,6 +20,7 @@ pub mod extreme;
 pub mod fall;
 pub mod floor;
 pub mod integrators;
+pub mod minimum;
 pub mod output;
 pub mod penalty;
 pub mod penalty_scene;

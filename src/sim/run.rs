@@ -14,6 +14,13 @@ pub trait Observer<const N: usize> {
     }
     /// One state of the motion, in time order.
     fn observe(&mut self, t: f64, y: &[f64; N]);
+    /// Whether [`Observer::step`] should be called (it costs preparing the dense output).
+    fn wants_steps(&self) -> bool {
+        false
+    }
+    /// After each accepted step: its span [t0, t1] (t1 the event time when one ended the phase)
+    /// and its dense output, for observers that look between samples (minima of outputs).
+    fn step(&mut self, _t0: f64, _t1: f64, _dense: &dyn Fn(f64) -> [f64; N]) {}
 }
 
 /// The observer that keeps nothing.
@@ -166,6 +173,11 @@ pub fn integrate_phase<const N: usize, S: Ode<N>, St: Stepper<N>, O: Observer<N>
                     observer.observe(tj, &stepper.interpolate(tj));
                 }
             }
+        }
+        if observer.wants_steps() {
+            stepper.prepare_dense(sys);
+            let dense = |t: f64| stepper.interpolate(t);
+            observer.step(t0, t_stop, &dense);
         }
         if let Some((root, i)) = first {
             let y = stepper.interpolate(root);
