@@ -12,10 +12,12 @@
 //! * [`method`]: the trait a new derivation of the equation of motion implements to be checked.
 //! * [`sim`], [`report`]: the simulator (scenes, models, integrators, exact reference) and its
 //!   reports (work-precision, plots).
+//! * [`cli`]: the `ladder` command, one file per subcommand; it calls into verify, sim and report.
 //!
 //! Dependencies flow one way: scalar, vector → system, ladder → milne → registry → docs, verify;
-//! sim → report. The physics modules know nothing of tests, markdown or the command line.
+//! sim → report → cli. The physics modules know nothing of tests, markdown or the command line.
 
+pub mod cli;
 pub mod docs;
 pub mod ladder;
 pub mod method;

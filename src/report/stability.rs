@@ -24,10 +24,7 @@
 
 use super::stability_extreme;
 use super::stability_stiff;
-use indicatif::{ProgressBar, ProgressDrawTarget};
 use serde::Serialize;
-use std::io::{IsTerminal, Write};
-use std::process::ExitCode;
 
 /// `ok` or `fail`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -143,45 +140,6 @@ pub fn all_cases(mut tick: impl FnMut(&str, u64)) -> (Vec<Case>, stability_stiff
     cases.extend(super::stability_scale::sweep_cases(&mut tick));
     cases.extend(stability_extreme::long_cases(&mut tick));
     (cases, conv)
-}
-
-fn progress() -> ProgressBar {
-    let target = if std::io::stdout().is_terminal() {
-        ProgressDrawTarget::stderr()
-    } else {
-        ProgressDrawTarget::hidden()
-    };
-    ProgressBar::with_draw_target(
-        Some(stability_stiff::EXPECTED_RUNS + super::stability_scale::SWEEP_CASES as u64),
-        target,
-    )
-}
-
-/// `ladder stability [--json]`.
-pub fn command(json: bool) -> ExitCode {
-    let bar = progress();
-    let (cases, conv) = all_cases(|label, n| {
-        bar.set_message(label.to_string());
-        bar.inc(n);
-    });
-    bar.finish_and_clear();
-    let surprises = cases
-        .iter()
-        .filter(|c| c.expect.surprised_by(c.verdict))
-        .count();
-    let text = if json {
-        let v = serde_json::json!({ "cases": cases, "convergence": conv, "surprises": surprises });
-        serde_json::to_string_pretty(&v).unwrap_or_default() + "\n"
-    } else {
-        table(&cases, &conv)
-    };
-    // A closed pipe (e.g. `| head`) is not an error of the report.
-    let _ = std::io::stdout().lock().write_all(text.as_bytes());
-    if surprises == 0 {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    }
 }
 
 fn sci(x: Option<f64>) -> String {

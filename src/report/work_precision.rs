@@ -3,17 +3,15 @@
 //! (warm, median of repeats), the right-hand-side evaluations and the observed order.
 //! Modelled on DiffEqDevTools.jl (`WorkPrecision`): a plain record per run, plotting apart.
 
-use super::files::{write_all, OutFile};
+use super::files::OutFile;
 use super::plot::{PlotSpec, Series};
 use crate::sim::exact::PhaseOne;
 use crate::sim::fall;
-use crate::sim::integrators::{is_adaptive, order, Control, RIGID_METHODS as METHODS};
+use crate::sim::integrators::{is_adaptive, Control, RIGID_METHODS as METHODS};
 use crate::sim::output::Output;
 use crate::sim::rigid::Ladder;
-use crate::sim::scene::{self, End, Scene};
+use crate::sim::scene::{End, Scene};
 use serde::Serialize;
-use std::path::Path;
-use std::process::ExitCode;
 use std::time::Instant;
 
 /// One run of one method at one tolerance or step.
@@ -178,7 +176,8 @@ pub fn pareto(runs: &[Run]) -> Vec<&Run> {
     front
 }
 
-fn csv(runs: &[Run]) -> String {
+/// The runs as CSV, one row per run (`runs.csv`).
+pub fn csv(runs: &[Run]) -> String {
     let mut s =
         String::from("method,tolerance,angle_error,time_error,energy_error,rhs_evals,seconds\n");
     for r in runs {
@@ -196,7 +195,8 @@ fn csv(runs: &[Run]) -> String {
     s
 }
 
-fn plot(runs: &[Run], title: &str) -> OutFile {
+/// The work-precision figure (`work_precision.svg`): error against run time per method.
+pub fn plot(runs: &[Run], title: &str) -> OutFile {
     let series = METHODS
         .iter()
         .map(|m| Series {
@@ -215,90 +215,4 @@ fn plot(runs: &[Run], title: &str) -> OutFile {
         ..Default::default()
     };
     OutFile::plot("work_precision.svg", spec, series)
-}
-
-/// `ladder work-precision [SCENE] [--json] [--out DIR]`.
-pub fn command(scene_path: Option<&Path>, json: bool, out: Option<&Path>) -> ExitCode {
-    let base = match scene_path.map(scene::load) {
-        None => default_scene(),
-        Some(Ok(s)) => s,
-        Some(Err(e)) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(2);
-        }
-    };
-    let total: usize = METHODS.iter().map(|m| sweep(m).len()).sum();
-    let bar = indicatif::ProgressBar::new(total as u64);
-    let runs = measure(&base, |m| {
-        bar.set_message(m.to_string());
-        bar.inc(1);
-    });
-    bar.finish_and_clear();
-    let runs = match runs {
-        Ok(r) => r,
-        Err(e) => {
-            eprintln!("error: {}: {e}", base.file);
-            return ExitCode::from(2);
-        }
-    };
-    if let Some(dir) = out {
-        if let Err(e) = write_all(
-            dir,
-            &[
-                OutFile::text("runs.csv", csv(&runs)),
-                plot(&runs, &base.file),
-            ],
-        ) {
-            eprintln!("error: {e}");
-            return ExitCode::from(2);
-        }
-    }
-    let orders: Vec<serde_json::Value> = METHODS
-        .iter()
-        .map(|m| serde_json::json!({"method": m, "theoretical": order(m), "observed": observed_order(&runs, m)}))
-        .collect();
-    if json {
-        let v = serde_json::json!({ "scene": base.file, "runs": runs, "orders": orders, "pareto": pareto(&runs) });
-        println!("{}", serde_json::to_string_pretty(&v).unwrap_or_default());
-        return ExitCode::SUCCESS;
-    }
-    println!(
-        "work-precision for {} (θ0 = {}, θ̇0 = {})",
-        base.file, base.theta0, base.rate0
-    );
-    println!(
-        "{:<17} {:>9} {:>10} {:>10} {:>10} {:>9} {:>11}",
-        "method", "tol/step", "angle err", "time err", "energy err", "rhs", "µs/solve"
-    );
-    for r in &runs {
-        println!(
-            "{:<17} {:>9.1e} {:>10.2e} {:>10.2e} {:>10.2e} {:>9} {:>11.3}",
-            r.method,
-            r.tolerance,
-            r.angle_error,
-            r.time_error,
-            r.energy_error,
-            r.rhs_evals,
-            r.seconds * 1e6
-        );
-    }
-    println!("\nobserved order (slope of error against rhs evaluations):");
-    for m in METHODS {
-        let obs = observed_order(&runs, m).map_or("n/a".to_string(), |o| format!("{o:.2}"));
-        println!(
-            "  {m:<17} theoretical {}  observed {obs}",
-            order(m).unwrap_or(0)
-        );
-    }
-    println!("\nPareto front (run time against the worse of angle and time error):");
-    for r in pareto(&runs) {
-        println!(
-            "  {:<17} {:>9.1e}  error {:.2e}  {:.3} µs",
-            r.method,
-            r.tolerance,
-            r.angle_error.max(r.time_error),
-            r.seconds * 1e6
-        );
-    }
-    ExitCode::SUCCESS
 }

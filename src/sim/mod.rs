@@ -4,13 +4,12 @@
 //! Contents: [`scene`] (TOML scenes and their errors), [`output`] (what a scene may ask for),
 //! [`rigid`] (phase 1, the note's sec. 2.1), [`floor`] (phase 2, beyond the note), [`exact`]
 //! (reference), [`integrators`], [`event`] (crossings refined on the interpolant), [`run`] (the
-//! phase driver), [`fall`] (a whole scene), [`command`] (what the `ladder` CLI calls).
+//! phase driver), [`fall`] (a whole scene); the `ladder simulate` command lives in `crate::cli`.
 //! Stiff and extreme cases: [`penalty`] (the ladder on one-sided springs, beyond the note) and
 //! [`penalty_scene`] (scenes with `contact.model = "penalty"`), [`constrained`] (full
 //! coordinates with Lagrange multipliers and their drift), [`extreme`] (the wall phase at the
 //! edges of its domain: equilibrium, immediate release, any scale).
 
-pub mod command;
 pub mod constrained;
 pub mod event;
 pub mod exact;

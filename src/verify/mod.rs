@@ -1,7 +1,6 @@
 //! `ladder verify`: run every check of every equation and report one row per equation.
 
 pub mod claims;
-pub mod command;
 pub mod errata;
 pub mod proof;
 pub mod units;

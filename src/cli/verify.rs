@@ -1,12 +1,40 @@
-//! The `verify` and `errata` subcommands: printing and exit codes.
+//! `ladder verify`: every equation checked, printed as a table or JSON, and the exit code.
 
-use super::errata::errata;
-use super::{counts, table, verify_all, EquationResult};
 use crate::registry::check::Config;
-use crate::registry::units::Units;
+use crate::verify::{counts, print_coverage, table, verify_all, EquationResult};
+use clap::Args;
 use serde_json::json;
 use std::process::ExitCode;
 use std::time::Instant;
+
+/// The options of `ladder verify`.
+#[derive(Args)]
+pub struct VerifyArgs {
+    /// Print JSON instead of a table.
+    #[arg(long)]
+    json: bool,
+    /// Random float states per check.
+    #[arg(long, default_value_t = Config::default().float_cases)]
+    cases: usize,
+    /// Random exact rational points per check.
+    #[arg(long, default_value_t = Config::default().exact_points)]
+    exact_points: usize,
+    /// Seed of the random states.
+    #[arg(long, default_value_t = Config::default().seed)]
+    seed: u64,
+}
+
+/// Run `ladder verify` with its options.
+pub fn run(a: VerifyArgs) -> ExitCode {
+    verify(
+        a.json,
+        &Config {
+            float_cases: a.cases,
+            exact_points: a.exact_points,
+            seed: a.seed,
+        },
+    )
+}
 
 /// Run `ladder verify`; exit 0 when every equation is verified, a definition or a recorded
 /// erratum, 1 otherwise.
@@ -38,7 +66,7 @@ pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
     } else {
         print!("{}", table(&results));
         println!("{}", summary_line(&results, cfg, seconds));
-        let (pd, nd, pf, nf, pm) = super::print_coverage(&results);
+        let (pd, nd, pf, nf, pm) = print_coverage(&results);
         println!(
             "print: {pd} of {nd} displays parsed in full, {pf} of {nf} printed forms parsed and checked, {pm} displays with every Rust form matching the print (equations/symbols.toml)"
         );
@@ -79,7 +107,7 @@ pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
 }
 
 fn print_summary(results: &[EquationResult]) -> serde_json::Value {
-    let (pd, nd, pf, nf, pm) = super::print_coverage(results);
+    let (pd, nd, pf, nf, pm) = print_coverage(results);
     json!({"displays_parsed": pd, "displays": nd, "forms_parsed": pf, "forms": nf, "displays_matching_code": pm})
 }
 
@@ -111,81 +139,4 @@ pub fn proof_counts(results: &[EquationResult]) -> (usize, usize, f64) {
             .count(),
         results.iter().map(|r| r.proof_seconds).sum(),
     )
-}
-
-/// Run `ladder errata`.
-pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
-    let list = errata(cfg);
-    let prose = super::claims::claims();
-    let all_good = prose
-        .iter()
-        .all(|c| c.holds && c.printed_fails != Some(false))
-        && list
-            .iter()
-            .all(|r| r.units.corrected != Units::Inconsistent);
-    if json_out {
-        let prose_errata: Vec<_> = prose.iter().filter(|c| c.erratum.is_some()).collect();
-        let out = json!({"errata": list, "prose": prose_errata, "claims": prose,
-                         "prose_units": super::units::prose_units()});
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&out).expect("JSON of plain data")
-        );
-    } else {
-        println!(
-            "misprinted equations (the printed form fails exactly; the corrected form holds):"
-        );
-        for r in &list {
-            println!("({}) printed:   {}", r.number, r.printed);
-            println!("     corrected: {}", r.corrected);
-            println!("     why: {}", r.why);
-            println!("     printed − corrected: {}", r.difference_text);
-            println!(
-                "     residual at an exact point: printed {} (= {:.6e}), corrected {}",
-                r.printed_residual_exact, r.printed_residual, r.corrected_residual
-            );
-            println!("     {}", r.units.doc_line().trim_start_matches("- "));
-        }
-        println!("\nclaims made in the prose, checked exactly at three random states:");
-        for c in &prose {
-            let verdict = match (c.holds, c.printed_fails) {
-                (true, None) if c.erratum.is_some() => {
-                    "PROSE ERRATUM (wording; the formula is right)"
-                }
-                (true, None) => "holds",
-                (true, Some(true)) => {
-                    "PROSE ERRATUM: the printed wording fails, the correction holds"
-                }
-                _ => "FAILED",
-            };
-            println!("  {:<16} {}: {verdict}", c.location, c.claim);
-            if let Some((printed, corrected)) = c.erratum {
-                println!("  {:<16}   printed: {printed}   corrected: {corrected}", "");
-            }
-        }
-    }
-    if !json_out {
-        println!("\nquantities stated in the prose, in dimensions (m: M, l: L, g: L T⁻², θ̇: T⁻¹):");
-        for p in super::units::prose_units() {
-            let detail = p
-                .units_detail
-                .map(|d| format!(" ({d})"))
-                .unwrap_or_default();
-            let fix = p
-                .corrected
-                .map(|c| format!("; corrected {}", c.name()))
-                .unwrap_or_default();
-            println!(
-                "  {:<20} {}: {}{detail}{fix}",
-                p.location,
-                p.stated,
-                p.units.name()
-            );
-        }
-    }
-    if all_good {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    }
 }
