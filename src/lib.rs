@@ -14,8 +14,10 @@
 //!   reports (work-precision, plots).
 //! * [`cli`]: the `ladder` command, one file per subcommand; it calls into verify, sim and report.
 //!
-//! Dependencies flow one way: scalar, vector → system, ladder → milne → registry → docs, verify;
-//! sim → report → cli. The physics modules know nothing of tests, markdown or the command line.
+//! Dependencies flow one way, bottom to top (ARCHITECTURE.md, checked by `tests/architecture.rs`):
+//! scalar → vector → system → ladder, milne, sim → print → registry → method, docs, verify →
+//! report → cli; no two modules import each other. The physics modules know nothing of tests,
+//! markdown or the command line.
 
 pub mod cli;
 pub mod docs;

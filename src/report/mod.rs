@@ -4,6 +4,7 @@ pub mod diagram;
 pub mod files;
 pub mod plot;
 pub mod stability;
+pub mod stability_case;
 pub mod stability_extreme;
 pub mod stability_scale;
 pub mod stability_stiff;

@@ -9,7 +9,7 @@
 //! time error is that over the angle travelled: 10 N τ max(θ_s, 1) / (θ_s − θ0) relative —
 //! large for a start 1e-9 below flat, where the ladder moves only 3e-10 rad before it leaves.
 
-use super::stability::{blank, Case, Verdict, U};
+use super::stability_case::{blank, Case, Verdict, U};
 use crate::sim::exact::PhaseOne;
 use crate::sim::extreme::{wall_release, WallRelease};
 use crate::sim::fall;

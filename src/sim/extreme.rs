@@ -13,9 +13,9 @@
 //!   for factors in 1e-30..1e30).
 
 use super::event::{Direction, Event};
-use super::fall::SeparationState;
 use super::integrators::any::AnyStepper;
 use super::integrators::{Control, Stats, Stepper};
+use super::outcome::SeparationState;
 use super::rigid::{separation_factor, Ladder, WallPhase};
 use super::run::{integrate_phase, RunError};
 use super::scene::MAX_END_TIME;

@@ -1,7 +1,9 @@
 //! The simulator: scene files, the two phases of the fall (wall and floor), an exact reference
 //! of the wall phase, hand-written integrators with dense output, and event location.
 //!
-//! Contents: [`scene`] (TOML scenes and their errors), [`output`] (what a scene may ask for),
+//! Contents: [`scene`] (TOML scenes; its parts, errors and limits in [`scene_parts`]), [`output`]
+//! (what a scene may ask for), [`outcome`] (what a run produces), [`units`] and [`scaled`] (the
+//! scene's own units and the conversions of a run),
 //! [`rigid`] (phase 1, the note's sec. 2.1), [`floor`] (phase 2, beyond the note), [`exact`]
 //! (reference), [`integrators`], [`event`] (crossings refined on the interpolant), [`run`] (the
 //! phase driver), [`fall`] (a whole scene); the `ladder simulate` command lives in `crate::cli`.
@@ -17,6 +19,7 @@ pub mod extreme;
 pub mod fall;
 pub mod floor;
 pub mod integrators;
+pub mod outcome;
 pub mod output;
 pub mod penalty;
 pub mod penalty_scene;
@@ -25,3 +28,5 @@ pub mod run;
 pub mod scaled;
 pub mod scene;
 mod scene_checks;
+pub mod scene_parts;
+pub mod units;

@@ -4,7 +4,7 @@ use super::integrators::{is_adaptive, Control, RIGID_METHODS, TAYLOR};
 use super::output::Output;
 use super::penalty::{Contact, KAPPA_RANGE};
 use super::rigid::Ladder;
-use super::scene::{
+use super::scene_parts::{
     ContactModel, Ctx, End, Raw, RawContact, RawEnd, RawIntegrator, RawOutputs, SceneError,
     MAX_END_TIME, MAX_STEP, MIN_STEP, MIN_TOLERANCE,
 };
