@@ -31,7 +31,7 @@ enum Command {
     Errata(errata::ErrataArgs),
     /// Simulate a scene (TOML) and print the outputs it asks for.
     Simulate(simulate::SimulateArgs),
-    /// Error against run time for every integrator (CSV + SVG with --out).
+    /// Error against run time for every integrator on each scene (CSV + SVG with --out).
     WorkPrecision(work_precision::WorkPrecisionArgs),
     /// Stiff and extreme cases (penalty contact, Lagrange drift, edges of the domain, scales,
     /// long runs), with verdicts.
@@ -51,7 +51,7 @@ pub fn run() -> ExitCode {
     };
     match cli.command {
         None => {
-            let verified = verify::verify(false, &Config::default());
+            let verified = verify::verify(false, &Config::default(), None);
             println!();
             let simulated = simulate::simulate_builtin_classic();
             if verified == ExitCode::SUCCESS {

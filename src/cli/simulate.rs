@@ -5,6 +5,7 @@
 use crate::report::files::{write_all, OutFile};
 use crate::report::plot::{PlotSpec, Series};
 use crate::sim::fall::{self, Outcome, Sample};
+use crate::sim::outcome::unreached_end;
 use crate::sim::output::Output;
 use crate::sim::penalty::Contact;
 use crate::sim::rigid::separation_cosine;
@@ -52,6 +53,11 @@ pub fn simulate(scene_path: &Path, json: bool, out: Option<&Path>) -> ExitCode {
             });
         }
     };
+    // A run that stops short of the end the scene asked for must say so (exit 1, stderr, JSON).
+    let short = unreached_end(&scene, &outcome);
+    if let Some(why) = &short {
+        eprintln!("error: {}: {why}", scene.file);
+    }
     if let Some(dir) = out {
         if let Err(e) = write_all(dir, &files(&scene, &outcome)) {
             eprintln!("error: {e}");
@@ -59,12 +65,16 @@ pub fn simulate(scene_path: &Path, json: bool, out: Option<&Path>) -> ExitCode {
         }
     }
     if json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&to_json(&scene, &outcome)).unwrap_or_default()
-        );
+        let mut v = to_json(&scene, &outcome);
+        if let (Some(why), Value::Object(m)) = (&short, &mut v) {
+            m.insert("incomplete".into(), json!(why));
+        }
+        println!("{}", serde_json::to_string_pretty(&v).unwrap_or_default());
     } else {
         print!("{}", summary(&scene, &outcome));
+    }
+    if short.is_some() {
+        return ExitCode::from(1);
     }
     ExitCode::SUCCESS
 }

@@ -22,6 +22,9 @@ pub struct VerifyArgs {
     /// Seed of the random states.
     #[arg(long, default_value_t = Config::default().seed)]
     seed: u64,
+    /// Show only these displays: equation numbers or sections, e.g. `25,28` or `2.5`.
+    #[arg(long)]
+    only: Option<String>,
 }
 
 /// Run `ladder verify` with its options.
@@ -33,14 +36,22 @@ pub fn run(a: VerifyArgs) -> ExitCode {
             exact_points: a.exact_points,
             seed: a.seed,
         },
+        a.only.as_deref(),
     )
 }
 
 /// Run `ladder verify`; exit 0 when every equation is verified, a definition or a recorded
 /// erratum, 1 otherwise.
-pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
+pub fn verify(json_out: bool, cfg: &Config, only: Option<&str>) -> ExitCode {
     let t = Instant::now();
-    let results = verify_all(cfg);
+    let results = match only.map(|spec| crate::verify::legend::only(verify_all(cfg), spec)) {
+        None => verify_all(cfg),
+        Some(Ok(r)) => r,
+        Some(Err(msg)) => {
+            eprintln!("ladder verify: {msg}");
+            return ExitCode::from(2);
+        }
+    };
     let docs = crate::docs::check_book(&crate::docs::default_dir());
     let methods = crate::verify::check_methods(cfg);
     let extensions = crate::verify::verify_extensions(cfg);
@@ -70,6 +81,8 @@ pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
         println!(
             "print: {pd} of {nd} displays parsed in full, {pf} of {nf} printed forms parsed and checked, {pm} displays with every Rust form matching the print (equations/symbols.toml)"
         );
+        print!("{}", crate::verify::legend::legend(cfg));
+        print!("{}", crate::verify::legend::law_lines(&results));
         println!("beyond the note: the floor phase after the ladder leaves the wall (equations/phase2.md)");
         print!(
             "{}",

@@ -119,3 +119,17 @@ pub struct Outcome {
     /// Work counters.
     pub work: Work,
 }
+
+/// Why the run did not reach the end the scene asked for (separation or flat), if it did not.
+pub fn unreached_end(scene: &Scene, o: &Outcome) -> Option<String> {
+    let missing = match scene.end {
+        End::Separation if o.separation.is_none() => "the separation",
+        End::Flat if o.separation.is_none() => "the separation (and so flat)",
+        End::Flat if o.flat.is_none() => "flat",
+        _ => return None,
+    };
+    Some(format!(
+        "the run stopped at t = {} s, θ = {} rad without reaching {missing}, the end the scene asks for",
+        o.last.0, o.last.1
+    ))
+}

@@ -11,10 +11,11 @@ use super::rigid::Ladder;
 use super::scene_checks::{
     check_contact, check_end, check_integrator, check_outputs, check_penalty,
 };
-pub use super::scene_parts::{
-    ContactModel, End, SceneError, MAX_END_TIME, MAX_STEP, MIN_STEP, MIN_TOLERANCE,
-};
-use super::scene_parts::{Ctx, Raw};
+use super::scene_errors::Ctx;
+pub use super::scene_errors::SceneError;
+use super::scene_parts::Raw;
+pub use super::scene_parts::{ContactModel, End, MAX_END_TIME, MAX_STEP, MIN_STEP, MIN_TOLERANCE};
+use super::scene_shape::{check_shape, value_error};
 use super::units::Units;
 use std::path::Path;
 
@@ -44,11 +45,32 @@ pub struct Scene {
 /// Read and validate the scene at `path`.
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| SceneError {
+    let whole = |message: String| SceneError {
         file: file.clone(),
         line: None,
-        field: "file".into(),
-        message: format!("cannot read the scene: {e}"),
+        field: String::new(),
+        message,
+    };
+    if path.is_dir() {
+        return Err(whole(
+            "a directory; allowed: a scene file (TOML), e.g. scenes/from-rest.toml".into(),
+        ));
+    }
+    let bytes = std::fs::read(path).map_err(|e| {
+        whole(format!(
+            "cannot read the scene: {e}; allowed: a readable scene file (TOML)"
+        ))
+    })?;
+    let text = String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let bytes = e.as_bytes();
+        SceneError {
+            line: Some(bytes[..at].iter().filter(|&&b| b == b'\n').count() + 1),
+            ..whole(format!(
+                "not UTF-8 text (byte 0x{:02x}); allowed: a UTF-8 TOML file",
+                bytes[at]
+            ))
+        }
     })?;
     parse(&file, &text)
 }
@@ -56,12 +78,8 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
 /// Validate the scene text `text` read from `file`.
 pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
     let cx = Ctx { file, text };
-    let raw: Raw = toml::from_str(text).map_err(|e| {
-        let field = e
-            .span()
-            .map_or_else(|| "scene".to_string(), |s| cx.field_at(s.start));
-        cx.err(e.span(), &field, e.message().trim().to_string())
-    })?;
+    check_shape(&cx)?;
+    let raw: Raw = toml::from_str(text).map_err(|e| value_error(&cx, &e))?;
     let l = raw.ladder.get_ref();
     // Any scale from 1e-30 to 1e30: the simulator is checked to give the same angles, times
     // scaled by √(l/g) and forces by m g over that whole range (`ladder stability`).
@@ -112,7 +130,7 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
     let (method, control) = check_integrator(&cx, raw.integrator.get_ref(), unit)?;
     let end = check_end(&cx, raw.end.get_ref(), unit)?;
     if theta0 == 0.0 && rate0 == 0.0 && !matches!(end, End::Time(_)) {
-        return Err(cx.err(Some(s.angle.span()), "start", "θ0 = 0 with θ̇0 = 0 is the equilibrium: the ladder never leaves the wall; give angle > 0 or angular_velocity > 0"));
+        return Err(cx.err(Some(s.angle.span()), "start", "θ0 = 0 with θ̇0 = 0 is the equilibrium: the ladder never leaves the wall; allowed: angle > 0 or angular_velocity > 0 (or end.at = \"time\")"));
     }
     let outputs = check_outputs(&cx, raw.outputs.get_ref(), &method, end)?;
     if let ContactModel::Penalty { .. } = contact {

@@ -1,0 +1,108 @@
+//! The reporting half of work-precision: per scene the runs, the observed orders with their
+//! fitted range and the Pareto front, for JSON, `runs.csv` and one SVG panel per scene (the
+//! table is printed by `ladder work-precision`, in `crate::cli::work_precision`).
+
+use super::plot::{PlotSpec, Series};
+use super::work_precision::{measure, Run, Timing};
+use super::work_precision_fit::{observed_order, pareto, OrderFit, Point};
+use crate::sim::integrators::{order, RIGID_METHODS as METHODS};
+use crate::sim::scene::{End, Scene};
+use serde::Serialize;
+
+/// The results of one scene.
+#[derive(Clone, Debug, Serialize)]
+pub struct SceneReport {
+    /// The scene's label.
+    pub scene: String,
+    /// θ0, θ̇0.
+    pub start: (f64, f64),
+    /// Whether the error includes the flat time (full fall).
+    pub to_flat: bool,
+    /// Every run.
+    pub runs: Vec<Run>,
+    /// Per method: theoretical order (None: varies, the Taylor method) and the fit.
+    pub orders: Vec<(String, Option<u32>, Option<OrderFit>)>,
+    /// The Pareto front.
+    pub pareto: Vec<Run>,
+}
+
+/// Measure `scene` and judge it.
+pub fn report(
+    scene: &Scene,
+    timing: Timing,
+    tick: impl FnMut(&str),
+) -> Result<SceneReport, String> {
+    let runs = measure(scene, &METHODS, timing, tick)?;
+    let orders = METHODS
+        .iter()
+        .map(|m| ((*m).to_string(), order(m), observed_order(&runs, m)))
+        .collect();
+    let pareto = pareto(&runs).into_iter().cloned().collect();
+    Ok(SceneReport {
+        scene: scene.file.clone(),
+        start: (scene.theta0, scene.rate0),
+        to_flat: scene.end == End::Flat,
+        runs,
+        orders,
+        pareto,
+    })
+}
+
+/// Every run of every scene as CSV (`runs.csv`).
+pub fn csv(reports: &[SceneReport]) -> String {
+    let mut s = String::from(
+        "scene,method,tolerance,angle_error,time_error,flat_time_error,energy_error,rhs_evals,seconds_median,seconds_q1,seconds_q3,repeats\n",
+    );
+    for r in reports.iter().flat_map(|p| &p.runs) {
+        s += &format!(
+            "\"{}\",{},{:e},{:e},{:e},{},{:e},{},{:e},{:e},{:e},{}\n",
+            r.scene,
+            r.method,
+            r.tolerance,
+            r.angle_error,
+            r.time_error,
+            r.flat_time_error
+                .map_or(String::new(), |e| format!("{e:e}")),
+            r.energy_error,
+            r.rhs_evals,
+            r.seconds,
+            r.seconds_iqr.0,
+            r.seconds_iqr.1,
+            r.repeats
+        );
+    }
+    s
+}
+
+/// One scene's panel of `work_precision.svg`: error against run time per method.
+pub fn panel(rep: &SceneReport) -> (PlotSpec, Vec<Series>) {
+    let series = METHODS
+        .iter()
+        .map(|m| Series {
+            name: (*m).into(),
+            points: rep
+                .runs
+                .iter()
+                .filter(|r| r.method == *m)
+                .map(|r| (r.seconds.log10(), r.error().max(1e-17).log10()))
+                .collect(),
+        })
+        .collect();
+    let what = if rep.to_flat {
+        "separation and flat"
+    } else {
+        "separation angle and time"
+    };
+    let spec = PlotSpec {
+        title: format!(
+            "θ0 = {}, θ̇0 = {}{}",
+            rep.start.0,
+            rep.start.1,
+            if rep.to_flat { ", to flat" } else { "" }
+        ),
+        x_label: "log10 median run time per solve (s)".into(),
+        y_label: format!("log10 worse relative error ({what})"),
+        ..Default::default()
+    };
+    (spec, series)
+}
