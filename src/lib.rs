@@ -12,11 +12,17 @@
 //! * [`method`]: the trait a new derivation of the equation of motion implements to be checked.
 //! * [`sim`], [`report`]: the simulator (scenes, models, integrators, exact reference) and its
 //!   reports (work-precision, plots).
+//! * [`show`]: one display in depth (`ladder show N`); [`book`]: the note as verified, as a static
+//!   HTML book (`ladder book`).
+//! * [`cli`]: the `ladder` command, one file per subcommand; it calls into verify, sim and report.
 //!
-//! Dependencies flow one way: scalar, vector → system, ladder → milne → registry → docs, verify;
-//! sim → report. The physics modules know nothing of tests, markdown or the command line.
+//! Dependencies flow one way, bottom to top (ARCHITECTURE.md, checked by `tests/architecture.rs`):
+//! scalar → vector → system → ladder, milne, sim → print → registry → method, docs, verify →
+//! report → show, book → cli; no two modules import each other. The physics modules know nothing of tests,
+//! markdown or the command line.
 
 pub mod book;
+pub mod cli;
 pub mod docs;
 pub mod ladder;
 pub mod method;

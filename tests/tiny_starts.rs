@@ -93,11 +93,11 @@ fn an_unreached_end_is_reported() {
     )
     .unwrap();
     let mut o = fall::run(&sc, fall::MAX_STEPS).unwrap();
-    assert_eq!(sliding_ladder::sim::command::unreached_end(&sc, &o), None);
+    assert_eq!(sliding_ladder::sim::outcome::unreached_end(&sc, &o), None);
     o.flat = None;
-    let why = sliding_ladder::sim::command::unreached_end(&sc, &o).expect("flat missing");
+    let why = sliding_ladder::sim::outcome::unreached_end(&sc, &o).expect("flat missing");
     assert!(why.contains("flat"), "{why}");
     o.separation = None;
-    let why = sliding_ladder::sim::command::unreached_end(&sc, &o).expect("separation missing");
+    let why = sliding_ladder::sim::outcome::unreached_end(&sc, &o).expect("separation missing");
     assert!(why.contains("separation"), "{why}");
 }

@@ -2,8 +2,9 @@
 //! Pareto front of a real sweep has no dominated run, and the full fall's flat-time reference
 //! agrees with an independent method.
 
-use sliding_ladder::report::work_precision::{default_scenes, measure, report, Timing};
+use sliding_ladder::report::work_precision::{default_scenes, measure, Timing};
 use sliding_ladder::report::work_precision_fit::{dominates, observed_order, Point};
+use sliding_ladder::report::work_precision_report::report;
 use sliding_ladder::sim::scene::End;
 
 /// One timed repeat: these tests judge errors and work, not speed.

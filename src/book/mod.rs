@@ -54,7 +54,7 @@ impl BookData {
         let results = crate::verify::verify_all(cfg);
         let docs = crate::docs::check_book(&crate::docs::default_dir());
         let summary =
-            crate::verify::command::summary_line(&results, cfg, t.elapsed().as_secs_f64());
+            crate::verify::summary::summary_line(&results, cfg, t.elapsed().as_secs_f64());
         BookData {
             extensions: crate::verify::verify_extensions(cfg),
             errata: crate::verify::errata::errata(cfg),

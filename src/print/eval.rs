@@ -13,7 +13,7 @@
 //! not compile); (4) needs depth 2.
 
 use super::ast::Expr;
-use super::quantity::{eps, resolve, Model, Value};
+use super::quantity::{eps, resolve, Lift, Model, Value};
 use super::symbols::{lookup, Entry};
 use crate::scalar::Scalar;
 use crate::vector::Vec3;
@@ -32,17 +32,6 @@ pub struct Ctx<'t, S: Scalar> {
     pub index: Option<usize>,
     /// The symbol table.
     pub table: &'t [Entry],
-}
-
-/// How to lift a context for a derivative.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Lift {
-    /// Along the motion (d/dt).
-    Motion,
-    /// θ alone (∂/∂θ).
-    Angle,
-    /// θ̇ alone (∂/∂θ̇).
-    Rate,
 }
 
 impl<'t, S: Scalar> Ctx<'t, S> {

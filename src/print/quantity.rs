@@ -6,7 +6,6 @@
 //! A quantity id is a name, optionally `:point` (A-E, cm for the ladder) and `.x`/`.y`/`.z` for a
 //! component: `L_abs:A.z` is the z component of the angular momentum about A.
 
-use super::eval::Lift;
 use crate::ladder::analysis::{Reference, ReferencePoint};
 use crate::ladder::geometry::corner_position;
 use crate::ladder::geometry::Corner;
@@ -18,6 +17,17 @@ use crate::scalar::Scalar;
 use crate::system::{Point, System};
 use crate::vector::Vec3;
 use std::cell::OnceCell;
+
+/// How to lift a context for a derivative.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Lift {
+    /// Along the motion (d/dt).
+    Motion,
+    /// θ alone (∂/∂θ).
+    Angle,
+    /// θ̇ alone (∂/∂θ̇).
+    Rate,
+}
 
 /// A value: a scalar or a 3-vector.
 #[derive(Clone, Debug)]

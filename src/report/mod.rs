@@ -5,6 +5,7 @@ pub mod digits;
 pub mod files;
 pub mod plot;
 pub mod stability;
+pub mod stability_case;
 pub mod stability_extreme;
 pub mod stability_scale;
 pub mod stability_stiff;

@@ -11,7 +11,7 @@
 //! the time bound is then 10 N τ φ_s / (θ_s − θ0), about 20 N τ, even 1e-9 below flat (where
 //! the ladder moves only 3e-10 rad before it leaves; in θ the bound was 5e-3 there).
 
-use super::stability::{blank, Case, Verdict, U};
+use super::stability_case::{blank, Case, Verdict, U};
 use crate::sim::complement;
 use crate::sim::exact::PhaseOne;
 use crate::sim::extreme::{wall_release, WallRelease};

@@ -11,7 +11,7 @@
 //!   scene's own units (`sim::scaled`), where both scenes are one problem, so they may differ by
 //!   the rounding of T = √(l/g) and of t T / T only: 4 u relative.
 
-use super::stability::{blank, Case, U};
+use super::stability_case::{blank, Case, U};
 use crate::sim::fall;
 use crate::sim::integrators::{is_adaptive, Control, RIGID_METHODS};
 use crate::sim::output::Output;

@@ -23,7 +23,7 @@
 //! Radau5 (L-stable, stiffly accurate: its step ends on the last stage, where the forces match
 //! the positions) is expected to pass everywhere.
 
-use super::stability::{blank, Case, Expect, Verdict, U};
+use super::stability_case::{blank, Case, Expect, Verdict, U};
 use crate::sim::constrained::{self, Constrained};
 use crate::sim::integrators::{order, Control};
 use crate::sim::penalty::{separation, Contact, Law};

@@ -9,7 +9,6 @@
 //! exists for the floor phase), whose agreement with DOP853 at 1e-16 is reported beside it.
 
 use super::work_precision_fit::Point;
-pub use super::work_precision_report::{command, report, SceneReport};
 use crate::sim::event::{Direction, Event};
 use crate::sim::exact::PhaseOne;
 use crate::sim::exact::Separation;

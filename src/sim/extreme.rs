@@ -14,9 +14,9 @@
 
 use super::complement;
 use super::event::{Direction, Event};
-use super::fall::SeparationState;
 use super::integrators::any::AnyStepper;
 use super::integrators::{Control, Stats, Stepper};
+use super::outcome::SeparationState;
 use super::rigid::{separation_factor, Ladder, WallPhase};
 use super::run::{integrate_phase, Observer, RunError};
 use super::scene::MAX_END_TIME;

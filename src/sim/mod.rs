@@ -1,17 +1,18 @@
 //! The simulator: scene files, the two phases of the fall (wall and floor), an exact reference
 //! of the wall phase, hand-written integrators with dense output, and event location.
 //!
-//! Contents: [`scene`] (TOML scenes and their errors), [`output`] (what a scene may ask for),
+//! Contents: [`scene`] (TOML scenes; its parts, errors and limits in [`scene_parts`]), [`output`]
+//! (what a scene may ask for), [`outcome`] (what a run produces), [`units`] and [`scaled`] (the
+//! scene's own units and the conversions of a run),
 //! [`rigid`] (phase 1, the note's sec. 2.1), [`floor`] (phase 2, beyond the note), [`exact`]
 //! (reference), [`integrators`], [`event`] (crossings refined on the interpolant), [`run`] (the
-//! phase driver), [`fall`] (a whole scene), [`command`] (what the `ladder` CLI calls).
+//! phase driver), [`fall`] (a whole scene); the `ladder simulate` command lives in `crate::cli`.
 //! Stiff and extreme cases: [`penalty`] (the ladder on one-sided springs, beyond the note) and
 //! [`penalty_scene`] (scenes with `contact.model = "penalty"`), [`constrained`] (full
 //! coordinates with Lagrange multipliers and their drift), [`extreme`] (the wall phase at the
 //! edges of its domain: equilibrium, immediate release, any scale), [`complement`] (the wall
 //! phase near the floor, in φ = π/2 − θ).
 
-pub mod command;
 pub mod complement;
 pub mod constrained;
 pub mod event;
@@ -21,6 +22,7 @@ pub mod fall;
 pub mod floor;
 pub mod integrators;
 pub mod minimum;
+pub mod outcome;
 pub mod output;
 pub mod penalty;
 pub mod penalty_scene;
@@ -31,4 +33,6 @@ pub mod scaled;
 pub mod scene;
 mod scene_checks;
 mod scene_errors;
+pub mod scene_parts;
 mod scene_shape;
+pub mod units;

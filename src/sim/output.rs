@@ -1,7 +1,7 @@
 //! The outputs a scene may ask for. They decide what a run computes and keeps (see
 //! `sim::fall::Plan`): nothing is evaluated or stored that no output needs.
 
-use super::scene::End;
+use super::scene_parts::End;
 
 /// One output of `ladder simulate`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -57,14 +57,13 @@
 use super::event::{Direction, Event};
 use super::integrators::any::AnyStepper;
 use super::integrators::{order, Control, Ode, Stats, Stepper};
+pub use super::penalty_start::OMEGA2;
 use super::penalty_start::{confirm_separation, rigid_forces, slow_forces};
 use super::rigid::{event_safe_step, Ladder};
 use super::run::{integrate_phase, RunError};
 use num_dual::DualNum;
 use std::cell::Cell;
 
-/// Ω² = 3g/(4l) in units where l = g = 1 (eq. (5)).
-pub const OMEGA2: f64 = 0.75;
 /// Dimensionless stiffness accepted by scenes: below 1 the springs are not contacts, above 1e15
 /// the rounding of positions alone makes the force meaningless (κ·u ≳ 0.1).
 pub const KAPPA_RANGE: (f64, f64) = (1.0, 1e15);

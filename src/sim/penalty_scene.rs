@@ -3,8 +3,8 @@
 //! wall phase exists for this model, and only the separation outputs (the scene checks see to
 //! that); nothing else is built or stored.
 
-use super::fall::{Outcome, Plan, SeparationState, Work};
 use super::integrators::Control;
+use super::outcome::{Outcome, Plan, SeparationState, Work};
 use super::penalty::{separation, Contact, Law};
 use super::run::RunError;
 use super::scene::Scene;

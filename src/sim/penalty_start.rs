@@ -14,8 +14,11 @@
 //! differentiation: θ and θ̇ are lifted to third-order jets (`num_dual::Dual3_64`) carrying
 //! their derivatives along the motion, and M⁻¹'s rate from a first-order one.
 
-use super::penalty::OMEGA2;
 use num_dual::{Dual3_64, Dual64, DualNum};
+
+/// Ω² = 3g/(4l) in units where l = g = 1 (eq. (5)); the penalty model's unit
+/// (re-exported by [`super::penalty`]), here below it because the slow start needs it too.
+pub const OMEGA2: f64 = 0.75;
 
 /// The rigid model's forces (eqs. (14), (15), dimensionless, on the motion (5)) at (θ, θ̇),
 /// generic over the scalar so that jets give their derivatives along the motion.

@@ -10,40 +10,13 @@
 //! phase that starts at t_s = 1e15 s with a first step of 1e-4 s cannot advance t at all, which
 //! is how a third of the slow scenes failed before.
 
-use super::fall::{FlatState, FloorReport, Outcome, SeparationState};
 use super::integrators::{Control, StepError};
-use super::rigid::Ladder;
+use super::outcome::{FlatState, FloorReport, Outcome, SeparationState};
 use super::run::RunError;
 use super::scene::{End, Scene};
-
-/// The scene's units in SI: T = √(l/g) (s), l (m), m g (N).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Units {
-    /// T = √(l/g), s.
-    pub time: f64,
-    /// l, m.
-    pub length: f64,
-    /// m g, N.
-    pub force: f64,
-}
-
-/// The ladder with m = l = g = 1 (ω² = 3/4), the one every rigid scene is run with.
-pub const UNIT_LADDER: Ladder = Ladder {
-    mass: 1.0,
-    half_length: 1.0,
-    gravity: 1.0,
-};
+pub use super::units::{Units, UNIT_LADDER};
 
 impl Units {
-    /// The units of `ladder` (l/g stays within f64's range for l, g in 1e-30..1e30).
-    pub fn of(ladder: &Ladder) -> Units {
-        Units {
-            time: (ladder.half_length / ladder.gravity).sqrt(),
-            length: ladder.half_length,
-            force: ladder.mass * ladder.gravity,
-        }
-    }
-
     /// `scene` in its own units: the unit ladder, θ̇0 T, a fixed step / T, an end time / T.
     pub fn scale_scene(&self, scene: &Scene) -> Scene {
         let mut s = scene.clone();
@@ -113,38 +86,5 @@ impl Units {
             RunError::LiftOff { t: at, theta } => RunError::LiftOff { t: at * t, theta },
             other @ RunError::Start(_) => other,
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn units_of_a_ladder() {
-        let u = Units::of(&Ladder {
-            mass: 2.0,
-            half_length: 4.0,
-            gravity: 16.0,
-        });
-        assert_eq!(
-            u,
-            Units {
-                time: 0.5,
-                length: 4.0,
-                force: 32.0
-            }
-        );
-    }
-
-    #[test]
-    fn extreme_units_stay_finite() {
-        let u = Units::of(&Ladder {
-            mass: 1e30,
-            half_length: 1e30,
-            gravity: 1e-30,
-        });
-        assert!((u.time / 1e30 - 1.0).abs() < 1e-15, "{u:?}");
-        assert_eq!(u.force, 1.0);
     }
 }

@@ -8,41 +8,16 @@
 use super::integrators::Control;
 use super::output::Output;
 use super::rigid::Ladder;
-use super::scaled::Units;
 use super::scene_checks::{
     check_contact, check_end, check_integrator, check_outputs, check_penalty,
 };
-pub(super) use super::scene_errors::Ctx;
+use super::scene_errors::Ctx;
 pub use super::scene_errors::SceneError;
+use super::scene_parts::Raw;
+pub use super::scene_parts::{ContactModel, End, MAX_END_TIME, MAX_STEP, MIN_STEP, MIN_TOLERANCE};
 use super::scene_shape::{check_shape, value_error};
-use serde::Deserialize;
+use super::units::Units;
 use std::path::Path;
-use toml::Spanned;
-
-/// Where the ladder run ends.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum End {
-    /// When the wall force reaches zero.
-    Separation,
-    /// When the ladder lies flat (θ = π/2), through the floor phase.
-    Flat,
-    /// At a given time (s), through whatever phases come first.
-    Time(f64),
-}
-
-/// The contact model of a scene.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum ContactModel {
-    /// Rigid, frictionless wall and floor (constraints): the note's model.
-    Rigid,
-    /// One-sided springs (see `sim::penalty`).
-    Penalty {
-        /// k, N/m.
-        stiffness: f64,
-        /// c, N·s/m.
-        damping: f64,
-    },
-}
 
 /// A validated scene.
 #[derive(Clone, Debug, PartialEq)]
@@ -66,67 +41,6 @@ pub struct Scene {
     /// Rigid contacts or penalty springs.
     pub contact: ContactModel,
 }
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct Raw {
-    pub(super) ladder: Spanned<RawLadder>,
-    pub(super) start: Spanned<RawStart>,
-    pub(super) contact: Spanned<RawContact>,
-    pub(super) integrator: Spanned<RawIntegrator>,
-    pub(super) end: Spanned<RawEnd>,
-    pub(super) outputs: Spanned<RawOutputs>,
-}
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct RawLadder {
-    pub(super) mass: Spanned<f64>,
-    pub(super) half_length: Spanned<f64>,
-    pub(super) gravity: Spanned<f64>,
-}
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct RawStart {
-    pub(super) angle: Spanned<f64>,
-    pub(super) angular_velocity: Spanned<f64>,
-}
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct RawContact {
-    pub(super) model: Spanned<String>,
-    pub(super) stiffness: Option<Spanned<f64>>,
-    pub(super) damping: Option<Spanned<f64>>,
-}
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct RawIntegrator {
-    pub(super) method: Spanned<String>,
-    pub(super) tolerance: Option<Spanned<f64>>,
-    pub(super) step: Option<Spanned<f64>>,
-    pub(super) scaled_step: Option<Spanned<f64>>,
-}
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct RawEnd {
-    pub(super) at: Spanned<String>,
-    pub(super) time: Option<Spanned<f64>>,
-    pub(super) scaled_time: Option<Spanned<f64>>,
-}
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct RawOutputs {
-    pub(super) want: Spanned<Vec<Spanned<String>>>,
-}
-
-/// Smallest tolerance accepted (below it f64 rounding dominates any error estimate).
-pub const MIN_TOLERANCE: f64 = 1e-16;
-/// Smallest fixed step accepted, in units of √(l/g) (a fall takes a few: more steps than this
-/// allows is absurd).
-pub const MIN_STEP: f64 = 1e-6;
-/// Longest fixed step accepted, in units of √(l/g) (the event-safe step is 0.58 of it at rest).
-pub const MAX_STEP: f64 = 1.0;
-/// Longest end time accepted, in units of √(l/g).
-pub const MAX_END_TIME: f64 = 1e4;
 
 /// Read and validate the scene at `path`.
 pub fn load(path: &Path) -> Result<Scene, SceneError> {

@@ -4,9 +4,10 @@ use super::integrators::{is_adaptive, Control, RIGID_METHODS, TAYLOR};
 use super::output::Output;
 use super::penalty::{Contact, KAPPA_RANGE};
 use super::rigid::Ladder;
-use super::scene::{
-    ContactModel, Ctx, End, Raw, RawContact, RawEnd, RawIntegrator, RawOutputs, SceneError,
-    MAX_END_TIME, MAX_STEP, MIN_STEP, MIN_TOLERANCE,
+use super::scene_errors::{Ctx, SceneError};
+use super::scene_parts::{
+    ContactModel, End, Raw, RawContact, RawEnd, RawIntegrator, RawOutputs, MAX_END_TIME, MAX_STEP,
+    MIN_STEP, MIN_TOLERANCE,
 };
 
 pub(super) fn check_contact(

@@ -6,9 +6,8 @@
 //! The keys of each section are read off the `Raw*` structs themselves (serde hands every
 //! struct's field list to the deserializer), so this check cannot drift from the schema.
 
-use super::scene::{
-    Ctx, Raw, RawContact, RawEnd, RawIntegrator, RawLadder, RawOutputs, RawStart, SceneError,
-};
+use super::scene_errors::{Ctx, SceneError};
+use super::scene_parts::{Raw, RawContact, RawEnd, RawIntegrator, RawLadder, RawOutputs, RawStart};
 use serde::de::{self, Deserialize, Deserializer, Visitor};
 use toml::de::{DeTable, DeValue};
 

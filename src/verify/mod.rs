@@ -1,10 +1,10 @@
 //! `ladder verify`: run every check of every equation and report one row per equation.
 
 pub mod claims;
-pub mod command;
 pub mod errata;
 pub mod legend;
 pub mod proof;
+pub mod summary;
 pub mod units;
 
 use crate::registry::check::{run_check, CheckReport, Config};

@@ -1,18 +1,39 @@
-//! What the `ladder` command calls: `simulate` and `work-precision`. Exit codes: 0 all good,
-//! 1 a check failed (e.g. lift-off), 2 bad input (one line on stderr, nothing written).
+//! `ladder simulate SCENE`: run a scene and print (or write) the outputs it asks for. Exit
+//! codes: 0 all good, 1 a check failed (e.g. lift-off), 2 bad input (one line on stderr, nothing
+//! written).
 
-use super::fall::{self, Outcome, Sample};
-use super::output::Output;
-use super::penalty::Contact;
-use super::rigid::separation_cosine;
-use super::run::RunError;
-use super::scene::{self, ContactModel, Scene};
 use crate::report::digits::sig;
 use crate::report::files::{write_all, OutFile};
 use crate::report::plot::{PlotSpec, Series};
+use crate::sim::fall::{self, Outcome, Sample};
+use crate::sim::outcome::unreached_end;
+use crate::sim::output::Output;
+use crate::sim::penalty::Contact;
+use crate::sim::rigid::separation_cosine;
+use crate::sim::run::RunError;
+use crate::sim::scene::{self, ContactModel, Scene};
+use clap::Args;
 use serde_json::{json, Map, Value};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+
+/// The options of `ladder simulate`.
+#[derive(Args)]
+pub struct SimulateArgs {
+    /// The scene file.
+    scene: PathBuf,
+    /// Print JSON instead of a summary.
+    #[arg(long)]
+    json: bool,
+    /// Write CSV and SVG files here (when the scene asks for a trajectory or forces).
+    #[arg(long)]
+    out: Option<PathBuf>,
+}
+
+/// Run `ladder simulate` with its options.
+pub fn run(a: SimulateArgs) -> ExitCode {
+    simulate(&a.scene, a.json, a.out.as_deref())
+}
 
 /// `ladder simulate SCENE [--json] [--out DIR]`.
 pub fn simulate(scene_path: &Path, json: bool, out: Option<&Path>) -> ExitCode {
@@ -58,22 +79,6 @@ pub fn simulate(scene_path: &Path, json: bool, out: Option<&Path>) -> ExitCode {
     }
     ExitCode::SUCCESS
 }
-
-/// Why the run did not reach the end the scene asked for (separation or flat), if it did not.
-pub fn unreached_end(scene: &Scene, o: &Outcome) -> Option<String> {
-    let missing = match scene.end {
-        scene::End::Separation if o.separation.is_none() => "the separation",
-        scene::End::Flat if o.separation.is_none() => "the separation (and so flat)",
-        scene::End::Flat if o.flat.is_none() => "flat",
-        _ => return None,
-    };
-    Some(format!(
-        "the run stopped at t = {} s, θ = {} rad without reaching {missing}, the end the scene asks for",
-        o.last.0, o.last.1
-    ))
-}
-
-pub use crate::report::work_precision::command as work_precision;
 
 /// The note's own problem, built in (so `ladder` with no arguments needs no file): the ladder
 /// upright with a tiny push, simulated to the moment it leaves the wall.

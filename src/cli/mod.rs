@@ -1,0 +1,77 @@
+//! The command line of `ladder`: the top layer (see ARCHITECTURE.md). One file per subcommand,
+//! each with its clap options and a `run` that calls into verify, sim and report and turns
+//! their results into printed output and an exit code. Nothing below this module imports it.
+
+pub mod book;
+pub mod errata;
+pub mod show;
+pub mod simulate;
+pub mod stability;
+pub mod verify;
+pub mod work_precision;
+
+use crate::registry::check::Config;
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(
+    name = "ladder",
+    version,
+    about = "The sliding ladder: the note's equations checked, the fall simulated"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Check every numbered equation (1)-(90): one row per equation.
+    Verify(verify::VerifyArgs),
+    /// One display in depth: print, symbols, every form's value at a state, its checks.
+    Show(show::ShowArgs),
+    /// The note's misprints: printed and corrected forms with their residuals.
+    Errata(errata::ErrataArgs),
+    /// Simulate a scene (TOML) and print the outputs it asks for.
+    Simulate(simulate::SimulateArgs),
+    /// Error against run time for every integrator on each scene (CSV + SVG with --out).
+    WorkPrecision(work_precision::WorkPrecisionArgs),
+    /// Stiff and extreme cases (penalty contact, Lagrange drift, edges of the domain, scales,
+    /// long runs), with verdicts.
+    Stability(stability::StabilityArgs),
+    /// Write the note as verified as a static HTML book (MathML, no script, offline).
+    Book(book::BookArgs),
+}
+
+/// Parse the process arguments and run the subcommand; with none, verify every equation and
+/// simulate the note's own fall. A usage error prints clap's message and exits 2.
+pub fn run() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { 2 } else { 0 };
+            let _ = e.print();
+            return ExitCode::from(code);
+        }
+    };
+    match cli.command {
+        None => {
+            let verified = verify::verify(false, &Config::default(), None);
+            println!();
+            let simulated = simulate::simulate_builtin_classic();
+            if verified == ExitCode::SUCCESS {
+                simulated
+            } else {
+                verified
+            }
+        }
+        Some(Command::Verify(a)) => verify::run(a),
+        Some(Command::Errata(a)) => errata::run(a),
+        Some(Command::Simulate(a)) => simulate::run(a),
+        Some(Command::WorkPrecision(a)) => work_precision::run(a),
+        Some(Command::Stability(a)) => stability::run(a),
+        Some(Command::Show(a)) => show::run(a),
+        Some(Command::Book(a)) => book::run(a),
+    }
+}

@@ -1,0 +1,127 @@
+//! `ladder verify`: every equation checked, printed as a table or JSON, and the exit code.
+
+use crate::registry::check::Config;
+use crate::verify::summary::{proof_counts, summary_line};
+use crate::verify::{counts, print_coverage, table, verify_all, EquationResult};
+use clap::Args;
+use serde_json::json;
+use std::process::ExitCode;
+use std::time::Instant;
+
+/// The options of `ladder verify`.
+#[derive(Args)]
+pub struct VerifyArgs {
+    /// Print JSON instead of a table.
+    #[arg(long)]
+    json: bool,
+    /// Random float states per check.
+    #[arg(long, default_value_t = Config::default().float_cases)]
+    cases: usize,
+    /// Random exact rational points per check.
+    #[arg(long, default_value_t = Config::default().exact_points)]
+    exact_points: usize,
+    /// Seed of the random states.
+    #[arg(long, default_value_t = Config::default().seed)]
+    seed: u64,
+    /// Show only these displays: equation numbers or sections, e.g. `25,28` or `2.5`.
+    #[arg(long)]
+    only: Option<String>,
+}
+
+/// Run `ladder verify` with its options.
+pub fn run(a: VerifyArgs) -> ExitCode {
+    verify(
+        a.json,
+        &Config {
+            float_cases: a.cases,
+            exact_points: a.exact_points,
+            seed: a.seed,
+        },
+        a.only.as_deref(),
+    )
+}
+
+/// Run `ladder verify`; exit 0 when every equation is verified, a definition or a recorded
+/// erratum, 1 otherwise.
+pub fn verify(json_out: bool, cfg: &Config, only: Option<&str>) -> ExitCode {
+    let t = Instant::now();
+    let results = match only.map(|spec| crate::verify::legend::only(verify_all(cfg), spec)) {
+        None => verify_all(cfg),
+        Some(Ok(r)) => r,
+        Some(Err(msg)) => {
+            eprintln!("ladder verify: {msg}");
+            return ExitCode::from(2);
+        }
+    };
+    let docs = crate::docs::check_book(&crate::docs::default_dir());
+    let methods = crate::verify::check_methods(cfg);
+    let extensions = crate::verify::verify_extensions(cfg);
+    let seconds = t.elapsed().as_secs_f64();
+    let (v, e, d, f) = counts(&results);
+    let (proved, sampled_only, proof_seconds) = proof_counts(&results);
+    if json_out {
+        let out = json!({
+            "equations": results,
+            "summary": {"verified": v, "erratum": e, "definition": d, "failed": f,
+                         "proved": proved, "sampled_only": sampled_only, "proof_seconds": proof_seconds,
+                         "float_cases_per_check": cfg.float_cases, "exact_points_per_check": cfg.exact_points,
+                         "seed": cfg.seed, "seconds": seconds,
+                         "print": print_summary(&results)},
+            "docs": {"problems": docs.problems, "sections": docs.equations_found, "examples_run": docs.examples_run},
+            "methods": methods,
+            "extensions": extensions,
+        });
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&out).expect("JSON of plain data")
+        );
+    } else {
+        print!("{}", table(&results));
+        println!("{}", summary_line(&results, cfg, seconds));
+        let (pd, nd, pf, nf, pm) = print_coverage(&results);
+        println!(
+            "print: {pd} of {nd} displays parsed in full, {pf} of {nf} printed forms parsed and checked, {pm} displays with every Rust form matching the print (equations/symbols.toml)"
+        );
+        print!("{}", crate::verify::legend::legend(cfg));
+        print!("{}", crate::verify::legend::law_lines(&results));
+        println!("beyond the note: the floor phase after the ladder leaves the wall (equations/phase2.md)");
+        print!(
+            "{}",
+            table(&extensions)
+                .lines()
+                .skip(1)
+                .map(|l| format!("{l}\n"))
+                .collect::<String>()
+        );
+        let failed_methods: Vec<_> = methods.iter().filter(|m| !m.passed).collect();
+        println!(
+            "methods: {} derivations of the equation of motion checked (θ̈ solved from each equals (5); each residual vanishes on the motion only), {} failed",
+            methods.len(),
+            failed_methods.len()
+        );
+        for m in failed_methods {
+            println!("  ! {}: {}", m.name, m.problems.join("; "));
+        }
+        println!(
+            "docs: {} equations found in equations/*.md, {} example rows run, {} problems",
+            docs.equations_found,
+            docs.examples_run,
+            docs.problems.len()
+        );
+        for p in &docs.problems {
+            println!("  ! {p}");
+        }
+        println!("details of one display: ladder show N (e.g. ladder show 25 --at \"m=2, l=1.5, theta=40deg\")");
+    }
+    if f == 0 && docs.problems.is_empty() && results.len() == 90 && methods.iter().all(|m| m.passed)
+    {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
+}
+
+fn print_summary(results: &[EquationResult]) -> serde_json::Value {
+    let (pd, nd, pf, nf, pm) = print_coverage(results);
+    json!({"displays_parsed": pd, "displays": nd, "forms_parsed": pf, "forms": nf, "displays_matching_code": pm})
+}

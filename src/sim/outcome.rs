@@ -1,0 +1,135 @@
+//! What a run of a scene produces ([`Outcome`]) and what it must compute ([`Plan`]): the types
+//! the fall, the penalty scenes and the unit conversions share, below all of them.
+
+use super::integrators::Stats;
+use super::output::Output;
+use super::scene::{End, Scene};
+
+/// What a run must compute, decided by the scene's outputs alone.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Plan {
+    /// Build and integrate the floor phase.
+    pub floor_phase: bool,
+    /// Keep the trajectory (θ, θ̇ against t).
+    pub trace: bool,
+    /// Evaluate contact forces along the trace.
+    pub forces: bool,
+    /// Track the floor force and the top's clearance over the floor phase.
+    pub floor_monitor: bool,
+    /// Evaluate the energy at the ends.
+    pub energy: bool,
+}
+
+impl Plan {
+    /// The plan for `scene`.
+    pub fn of(scene: &Scene) -> Plan {
+        let wants = |o: Output| scene.outputs.contains(&o);
+        Plan {
+            floor_phase: scene.end != End::Separation && scene.method != "exact",
+            trace: wants(Output::Trajectory) || wants(Output::Forces),
+            forces: wants(Output::Forces),
+            floor_monitor: wants(Output::FloorForceMin) || wants(Output::TopClearanceMin),
+            energy: wants(Output::EnergyError),
+        }
+    }
+}
+
+/// One stored point of the motion.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sample {
+    /// 1 (wall phase) or 2 (floor phase).
+    pub phase: u8,
+    /// t, s.
+    pub t: f64,
+    /// θ, rad.
+    pub theta: f64,
+    /// θ̇, rad/s.
+    pub rate: f64,
+    /// (F_w, F_f), N, when the forces were asked for.
+    pub forces: Option<(f64, f64)>,
+}
+
+/// Counters of the work done, for the summary and for tests.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Work {
+    /// Integrator statistics, wall phase.
+    pub wall: Stats,
+    /// Integrator statistics, floor phase (None if it was never built).
+    pub floor: Option<Stats>,
+    /// Contact-force evaluations (traces, monitors, the lift-off watch).
+    pub force_evals: u64,
+    /// Samples kept in memory.
+    pub stored_samples: usize,
+}
+
+/// The state at separation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SeparationState {
+    /// t_s.
+    pub time: f64,
+    /// θ_s.
+    pub angle: f64,
+    /// θ̇ at t_s.
+    pub rate: f64,
+}
+
+/// The state when the ladder lies flat (θ = π/2).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FlatState {
+    /// Time.
+    pub time: f64,
+    /// θ̇.
+    pub rate: f64,
+    /// Centre's abscissa X.
+    pub centre_x: f64,
+    /// Ẋ.
+    pub centre_velocity_x: f64,
+    /// ẏ of the centre (= −l sin θ θ̇), its impact speed on the floor.
+    pub centre_velocity_y: f64,
+}
+
+/// What the floor-phase monitors saw.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FloorReport {
+    /// Smallest floor force seen (step ends and dense samples).
+    pub floor_force_min: f64,
+    /// Smallest abscissa of the top after the start of the phase (> 0: clear of the wall).
+    pub top_clearance_min: f64,
+}
+
+/// Everything a run produced.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Outcome {
+    /// The plan that was followed.
+    pub plan: Plan,
+    /// Separation, if reached.
+    pub separation: Option<SeparationState>,
+    /// Flat, if reached.
+    pub flat: Option<FlatState>,
+    /// (t, θ, θ̇) at the end.
+    pub last: (f64, f64, f64),
+    /// |E_end − E_0| / (m g l), if asked.
+    pub energy_error: Option<f64>,
+    /// |Ẋ_end − Ẋ_s| / |Ẋ_s| over the floor phase, if it ran.
+    pub momentum_error: Option<f64>,
+    /// Floor-phase monitors, if asked.
+    pub floor_report: Option<FloorReport>,
+    /// The trace, if asked.
+    pub trace: Option<Vec<Sample>>,
+    /// Work counters.
+    pub work: Work,
+}
+
+/// Why the run did not reach the end the scene asked for (separation or flat), if it did not.
+pub fn unreached_end(scene: &Scene, o: &Outcome) -> Option<String> {
+    let missing = match scene.end {
+        End::Separation if o.separation.is_none() => "the separation",
+        End::Flat if o.separation.is_none() => "the separation (and so flat)",
+        End::Flat if o.flat.is_none() => "flat",
+        _ => return None,
+    };
+    Some(format!(
+        "the run stopped at t = {} s, θ = {} rad without reaching {missing}, the end the scene asks for",
+        o.last.0, o.last.1
+    ))
+}
