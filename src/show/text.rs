@@ -246,6 +246,10 @@ pub fn render(s: &Shown) -> String {
     };
     let _ = writeln!(o, "  here: {verdict}{mis}");
 
+    let Some(v) = &s.verify else {
+        let _ = writeln!(o, "\nchecks: not run (--values-only)");
+        return finish(o, s);
+    };
     let _ = writeln!(o, "\nchecks (what `ladder verify` runs on this display)");
     for c in &s.checks {
         let _ = writeln!(
@@ -301,9 +305,6 @@ pub fn render(s: &Shown) -> String {
         }
         let _ = writeln!(o, "    proof: {} · units: {}", c.proof, c.units);
     }
-    let Some(v) = &s.verify else {
-        return finish(o, s);
-    };
     let _ = writeln!(
         o,
         "  print: {} of {} forms parsed, {} held in chains ({} float states, {} exact point); {}",
