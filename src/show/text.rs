@@ -194,7 +194,13 @@ pub fn render(s: &Shown) -> String {
             ),
             _ => "?".into(),
         };
-        let residual = f.residual.map_or("—".into(), |r| format!("{r:.3}"));
+        let residual = f.residual.map_or("—".into(), |r| {
+            if r < 1e4 {
+                format!("{r:.3}")
+            } else {
+                format!("{r:.2e}")
+            }
+        });
         let val = if f.error.is_some() {
             "—".to_string()
         } else {

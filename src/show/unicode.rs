@@ -25,7 +25,7 @@ fn tidy(s: &str) -> String {
         }
         out.push_str(w);
     }
-    out.replace("( ", "(").replace(" )", ")")
+    out.replace("( ", "(").replace(" )", ")").replace(" ,", ",")
 }
 
 /// Convert until the closing `stop` (a `}`), consuming it.
