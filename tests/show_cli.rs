@@ -324,3 +324,48 @@ fn words_find_displays() {
     assert_eq!(code, 2);
     assert!(err.contains("no display"));
 }
+
+/// The README's quick tour shows what the command prints (file:line numbers aside, which move
+/// with any edit above them). Regenerate the block with the command in the README.
+#[test]
+fn the_readme_tour_is_what_the_command_prints() {
+    let readme =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let tour = readme
+        .split("### Quick tour")
+        .nth(1)
+        .expect("a quick tour in README.md");
+    let block = tour
+        .split("```text\n")
+        .nth(1)
+        .and_then(|b| b.split("\n```").next())
+        .expect("its output block");
+    let (code, out, err) = ladder(&[
+        "show",
+        "25",
+        "--at",
+        "m=2, l=1.5, g=9.81, theta=40deg, theta0=10deg",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let lines = |s: &str| -> Vec<String> {
+        s.lines()
+            .map(|l| {
+                // `src/ladder/torque.rs:207` → `src/ladder/torque.rs:N`.
+                let mut t = l.to_string();
+                for ext in [".rs:", ".md:"] {
+                    if let Some(i) = t.find(ext) {
+                        let end = i + ext.len();
+                        let digits = t[end..].chars().take_while(char::is_ascii_digit).count();
+                        t.replace_range(end..end + digits, "N");
+                    }
+                }
+                t.trim_end().to_string()
+            })
+            .collect()
+    };
+    assert_eq!(
+        lines(block),
+        lines(out.trim_end()),
+        "README.md's tour differs from the command's output"
+    );
+}

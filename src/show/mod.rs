@@ -222,6 +222,16 @@ pub fn show(
     let point = state::build(&at.cloned().unwrap_or_else(state::default_at));
     let place = values::place_of(&e);
     let forms = values::form_values(&e, &point)?;
+    // Overflow is the state's fault, not the print's: refuse it as bad input.
+    if let Some(f) = forms
+        .iter()
+        .find(|f| f.error.as_deref() == Some(values::NOT_FINITE))
+    {
+        return Err(format!(
+            "show: at this state form {} of ({number}) overflows a double; choose m, l, g nearer 1",
+            f.index
+        ));
+    }
     let (row, details) = if run_checks {
         let (r, d) = checks::run(&e, cfg);
         (Some(r), d)

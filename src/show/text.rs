@@ -194,7 +194,13 @@ pub fn render(s: &Shown) -> String {
             ),
             _ => "?".into(),
         };
-        let residual = f.residual.map_or("—".into(), |r| format!("{r:.3}"));
+        let residual = f.residual.map_or("—".into(), |r| {
+            if r < 1e4 {
+                format!("{r:.3}")
+            } else {
+                format!("{r:.2e}")
+            }
+        });
         let val = if f.error.is_some() {
             "—".to_string()
         } else {
@@ -246,6 +252,10 @@ pub fn render(s: &Shown) -> String {
     };
     let _ = writeln!(o, "  here: {verdict}{mis}");
 
+    let Some(v) = &s.verify else {
+        let _ = writeln!(o, "\nchecks: not run (--values-only)");
+        return finish(o, s);
+    };
     let _ = writeln!(o, "\nchecks (what `ladder verify` runs on this display)");
     for c in &s.checks {
         let _ = writeln!(
@@ -301,9 +311,6 @@ pub fn render(s: &Shown) -> String {
         }
         let _ = writeln!(o, "    proof: {} · units: {}", c.proof, c.units);
     }
-    let Some(v) = &s.verify else {
-        return finish(o, s);
-    };
     let _ = writeln!(
         o,
         "  print: {} of {} forms parsed, {} held in chains ({} float states, {} exact point); {}",

@@ -25,7 +25,7 @@ fn tidy(s: &str) -> String {
         }
         out.push_str(w);
     }
-    out.replace("( ", "(").replace(" )", ")")
+    out.replace("( ", "(").replace(" )", ")").replace(" ,", ",")
 }
 
 /// Convert until the closing `stop` (a `}`), consuming it.
@@ -114,7 +114,21 @@ fn command(c: &[char], p: &mut usize) -> String {
             if n == "d" && d == "dt" {
                 return "d/dt ".into();
             }
-            format!("{}/{}", wrap(&n), wrap(&d))
+            let f = format!("{}/{}", wrap(&n), wrap(&d));
+            // A fraction multiplied by what follows reads `(ml²θ̇/3) ẑ`, not `ml²θ̇/3ẑ`.
+            let mut q = *p;
+            while c.get(q) == Some(&' ') {
+                q += 1;
+            }
+            if c.get(q)
+                .is_some_and(|x| x.is_alphanumeric() || matches!(x, '\\' | '('))
+                && !starts_operator(c, q)
+            {
+                let gap = if c.get(q) == Some(&'(') { "" } else { " " };
+                format!("({f}){gap}")
+            } else {
+                f
+            }
         }
         "dot" => accent(c, p, '\u{307}'),
         "ddot" => accent(c, p, '\u{308}'),
@@ -159,6 +173,32 @@ fn command(c: &[char], p: &mut usize) -> String {
         "prime" => "′".into(),
         w => greek(w).map_or_else(|| format!("\\{w}"), String::from),
     }
+}
+
+/// True when a command that is not a factor starts at `q` (`\\`, `\end`, `\quad`, `\times`, …).
+fn starts_operator(c: &[char], q: usize) -> bool {
+    if c.get(q) != Some(&'\\') {
+        return false;
+    }
+    let word: String = c[q + 1..]
+        .iter()
+        .take_while(|x| x.is_ascii_alphabetic())
+        .collect();
+    word.is_empty()
+        || matches!(
+            word.as_str(),
+            "end"
+                | "quad"
+                | "qquad"
+                | "times"
+                | "wedge"
+                | "cdot"
+                | "equiv"
+                | "Rightarrow"
+                | "right"
+                | "Big"
+                | "text"
+        )
 }
 
 fn greek(w: &str) -> Option<&'static str> {
@@ -249,7 +289,7 @@ mod tests {
         assert_eq!(unicode(r"x_{\text{cm}} = l \sin \theta"), "x_cm = l sin θ");
         assert_eq!(
             unicode(r"\dot{\theta}^2 = \frac{3g}{2l} (1 - \cos \theta)"),
-            "θ̇² = 3g/2l(1 − cos θ)"
+            "θ̇² = (3g/2l)(1 − cos θ)"
         );
         assert_eq!(unicode(r"\hat{\mathbf{z}}"), "z\u{302}");
         assert_eq!(
@@ -258,6 +298,11 @@ mod tests {
         );
         assert_eq!(unicode(r"\sum_i m_i \mathbf{x}_i"), "Σᵢmᵢxᵢ");
         assert_eq!(unicode(r"\frac{a + b}{c}"), "(a + b)/c");
+        assert_eq!(
+            unicode(r"\frac{m l^2 \dot{\theta}}{3} \hat{\mathbf{z}} + x"),
+            "(ml²θ̇/3) z\u{302} + x"
+        );
+        assert_eq!(unicode(r"\frac{3g}{4l} \sin \theta"), "(3g/4l) sin θ");
         assert_eq!(unicode(r"-\frac{2ml^2 \dot{\theta}}{3}"), "−2ml²θ̇/3");
         // No LaTeX command survives the reading of any display of the note.
         for n in 1..=90 {

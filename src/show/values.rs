@@ -26,6 +26,9 @@ use serde::Serialize;
 
 type Chains<S> = Vec<Vec<Side<S>>>;
 
+/// The error of a form whose f64 value overflows at the state.
+pub const NOT_FINITE: &str = "not finite at this state (overflow)";
+
 /// One printed form at the state.
 #[derive(Clone, Debug, Serialize)]
 pub struct FormValue {
@@ -298,7 +301,7 @@ pub fn form_values_of(e: &Equation, latex: &str, point: &Point) -> Result<Vec<Fo
                     row.value = comps(x, width);
                     row.bound = comps(xb, width).iter().map(Bound::abs_error).collect();
                     if row.value.iter().any(|v| !v.is_finite()) {
-                        row.error = Some("not finite at this state".into());
+                        row.error = Some(NOT_FINITE.into());
                         row.value = Vec::new();
                         out.push(row);
                         continue;
