@@ -252,7 +252,7 @@ pub fn summary(scene: &Scene, o: &Outcome) -> String {
         );
     }
     if let Some(e) = o.momentum_error {
-        s += &format!("  momentum     |Δp_x| / |p_x| over the floor phase = {e:.3e}\n");
+        s += &format!("  momentum     |Δp_x − ∫F_w dt| / (m √(g l)) over the fall = {e:.3e}\n");
     }
     if let Some(e) = o.energy_error {
         s += &format!("  energy       |ΔE| / (m g l) = {e:.3e}\n");

@@ -18,6 +18,8 @@ pub struct Plan {
     pub floor_monitor: bool,
     /// Evaluate the energy at the ends.
     pub energy: bool,
+    /// Integrate the wall's impulse for the momentum balance.
+    pub momentum: bool,
 }
 
 impl Plan {
@@ -30,6 +32,7 @@ impl Plan {
             forces: wants(Output::Forces),
             floor_monitor: wants(Output::FloorForceMin) || wants(Output::TopClearanceMin),
             energy: wants(Output::EnergyError),
+            momentum: wants(Output::MomentumError),
         }
     }
 }
@@ -110,7 +113,8 @@ pub struct Outcome {
     pub last: (f64, f64, f64),
     /// |E_end − E_0| / (m g l), if asked.
     pub energy_error: Option<f64>,
-    /// |Ẋ_end − Ẋ_s| / |Ẋ_s| over the floor phase, if it ran.
+    /// Horizontal momentum balance of the whole fall, if asked and the floor phase ran:
+    /// |m Ẋ_end − m Ẋ_0 − ∫F_w dt| / (m √(g l)) (`fall::momentum_balance`).
     pub momentum_error: Option<f64>,
     /// Floor-phase monitors, if asked.
     pub floor_report: Option<FloorReport>,

@@ -20,7 +20,8 @@ pub enum Output {
     FloorForceMin,
     /// Smallest distance of the top from the wall over the floor phase.
     TopClearanceMin,
-    /// Relative change of the horizontal momentum over the floor phase.
+    /// Horizontal momentum balance of the fall, |Δ(m Ẋ) − ∫F_w dt| / (m √(g l))
+    /// (`fall::momentum_balance`).
     MomentumError,
     /// Energy change over the run, relative to m g l (`energy_error`).
     EnergyError,

@@ -59,7 +59,7 @@ impl Units {
                 p.forces = p.forces.map(|(w, fl)| (w * f, fl * f));
             }
         }
-        // energy_error is |ΔE| / (m g l) and momentum_error a ratio: already unit-free.
+        // energy_error is |ΔE| / (m g l) and momentum_error over m √(g l): already unit-free.
         o
     }
 
