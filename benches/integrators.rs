@@ -1,10 +1,13 @@
 //! Integrators side by side, in the same run: every method of this crate on the same scenes,
 //! and the peer crate ode_solvers 0.6 (Dop853, Dopri5) at equal error.
 //!
-//! Equal error: for each solver the largest tolerance (from 1e-4 down to 1e-15, by decades)
+//! Equal error: for each solver the largest tolerance (from 1e-4 down to 1e-16, by decades)
 //! whose error is at most the target is chosen before timing (printed on stderr). The common task
 //! is "θ at the exact separation time t_s" (ode_solvers has no event location); this crate's
-//! separation with event location is timed too. Run: `cargo bench --bench integrators`.
+//! separation with event location is timed too, beside one closed-form evaluation, and the whole
+//! fall to flat (no closed form: the reference is the Taylor method at 1e-16, checked against
+//! DOP853 at 1e-16 on stderr). Run: `cargo bench --bench integrators`; only the Taylor
+//! comparisons of issue 13: `cargo bench --bench integrators -- at-1e-12`.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use ode_solvers::{OutputType, System, Vector2};
@@ -13,8 +16,10 @@ use sliding_ladder::sim::exact::PhaseOne;
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::integrators::dop853::Dop853;
 use sliding_ladder::sim::integrators::dopri5::Dopri5;
+use sliding_ladder::sim::integrators::taylor::Taylor;
 use sliding_ladder::sim::integrators::{Control, Stepper};
 use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+use sliding_ladder::sim::scene::{End, Scene};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -55,31 +60,30 @@ fn peer_theta(dop853: bool, tol: f64, theta0: f64, rate0: f64, t: f64) -> f64 {
     last.map_or(f64::NAN, |y| y[0])
 }
 
-fn our_theta(dop853: bool, tol: f64, theta0: f64, rate0: f64, t: f64) -> f64 {
+/// θ(t) by one of this crate's steppers, stepping to `t` exactly.
+fn run_to<St: Stepper<2>>(mut s: St, t: f64) -> f64 {
     let sys = WallPhase::new(&LADDER);
-    if dop853 {
-        let mut s = Dop853::new(0.0, [theta0, rate0], tol);
-        while s.t() < t {
-            if s.step(&sys, t).is_err() {
-                return f64::NAN;
-            }
+    while s.t() < t {
+        if s.step(&sys, t).is_err() {
+            return f64::NAN;
         }
-        s.y()[0]
-    } else {
-        let mut s = Dopri5::new(0.0, [theta0, rate0], tol);
-        while s.t() < t {
-            if s.step(&sys, t).is_err() {
-                return f64::NAN;
-            }
-        }
-        s.y()[0]
+    }
+    s.y()[0]
+}
+
+fn our_theta(method: &str, tol: f64, theta0: f64, rate0: f64, t: f64) -> f64 {
+    let y0 = [theta0, rate0];
+    match method {
+        "dop853" => run_to(Dop853::new(0.0, y0, tol), t),
+        "dopri5" => run_to(Dopri5::new(0.0, y0, tol), t),
+        _ => run_to(Taylor::new(0.0, y0, tol), t),
     }
 }
 
-/// Largest decade tolerance with relative error of θ(t_s) at most `target`.
-fn pick(f: &dyn Fn(f64) -> f64, exact: f64, target: f64) -> Option<(f64, f64)> {
-    (4..=15).map(|k| 10f64.powi(-k)).find_map(|tol| {
-        let e = (f(tol) - exact).abs() / exact;
+/// Largest decade tolerance whose relative error `err(tol)` is at most `target`.
+fn pick(err: &dyn Fn(f64) -> f64, target: f64) -> Option<(f64, f64)> {
+    (4..=16).map(|k| 10f64.powi(-k)).find_map(|tol| {
+        let e = err(tol);
         (e <= target).then_some((tol, e))
     })
 }
@@ -99,20 +103,20 @@ fn bench_peers(c: &mut Criterion) {
             .unwrap();
         for target in [1e-8, 1e-12] {
             let mut g = c.benchmark_group(format!("{name}/theta-at-ts/error<={target:e}"));
-            for (label, ours, dop853) in [
-                ("ours-dop853", true, true),
-                ("ode_solvers-dop853", false, true),
-                ("ours-dopri5", true, false),
-                ("ode_solvers-dopri5", false, false),
+            for label in [
+                "ours-taylor",
+                "ours-dop853",
+                "ode_solvers-dop853",
+                "ours-dopri5",
+                "ode_solvers-dopri5",
             ] {
-                let f = |tol: f64| {
-                    if ours {
-                        our_theta(dop853, tol, theta0, rate0, sep.time)
-                    } else {
-                        peer_theta(dop853, tol, theta0, rate0, sep.time)
-                    }
+                let f = |tol: f64| match label {
+                    "ode_solvers-dop853" => peer_theta(true, tol, theta0, rate0, sep.time),
+                    "ode_solvers-dopri5" => peer_theta(false, tol, theta0, rate0, sep.time),
+                    _ => our_theta(&label[5..], tol, theta0, rate0, sep.time),
                 };
-                let Some((tol, err)) = pick(&f, sep.angle, target) else {
+                let Some((tol, err)) = pick(&|tol| (f(tol) - sep.angle).abs() / sep.angle, target)
+                else {
                     eprintln!("{name}: {label} never reaches {target:e}");
                     continue;
                 };
@@ -126,6 +130,87 @@ fn bench_peers(c: &mut Criterion) {
     }
 }
 
+fn scene_with(theta0: f64, rate0: f64, method: &str, ctl: Control, end: End) -> Scene {
+    let mut sc = scene_at(theta0, rate0);
+    sc.method = method.into();
+    sc.control = Some(ctl);
+    sc.end = end;
+    sc
+}
+
+/// Issue 13's targets: separation (with event location) at angle error ≤ 1e-12 beside one
+/// closed-form evaluation, and the whole fall to flat at flat-time error ≤ 1e-12.
+fn bench_at_1e12(c: &mut Criterion) {
+    let target = 1e-12;
+    for (name, theta0, rate0) in &SCENES[..2] {
+        let (theta0, rate0) = (*theta0, *rate0);
+        let exact = PhaseOne::new(theta0, rate0, LADDER.omega2())
+            .unwrap()
+            .separation()
+            .unwrap();
+        let mut g = c.benchmark_group(format!("{name}/separation-at-1e-12"));
+        g.bench_function("closed-form", |b| {
+            b.iter(|| {
+                PhaseOne::new(black_box(theta0), black_box(rate0), LADDER.omega2())
+                    .ok()
+                    .and_then(|p| p.separation())
+            })
+        });
+        for m in ["taylor", "dop853"] {
+            let sc = |tol| scene_with(theta0, rate0, m, Control::Tolerance(tol), End::Separation);
+            let err = |tol| {
+                fall::run(&sc(tol), fall::MAX_STEPS)
+                    .ok()
+                    .and_then(|o| o.separation)
+                    .map_or(f64::INFINITY, |s| {
+                        (s.angle - exact.angle).abs() / exact.angle
+                    })
+            };
+            let Some((tol, e)) = pick(&err, target) else {
+                eprintln!("{name}: {m} never reaches {target:e}");
+                continue;
+            };
+            eprintln!("{name}: {m} separation, tolerance {tol:e} gives angle error {e:.2e}");
+            let sc = sc(tol);
+            g.bench_function(m, |b| {
+                b.iter(|| fall::run(black_box(&sc), fall::MAX_STEPS).ok())
+            });
+        }
+        g.finish();
+    }
+    // The whole fall to flat from θ0 = 0.3: reference flat time by Taylor at 1e-16.
+    let flat = |m: &str, tol: f64| {
+        fall::run(
+            &scene_with(0.3, 0.0, m, Control::Tolerance(tol), End::Flat),
+            fall::MAX_STEPS,
+        )
+        .ok()
+        .and_then(|o| o.flat)
+    };
+    let reference = flat("taylor", 1e-16).expect("reference run").time;
+    if let Some(d) = flat("dop853", 1e-16) {
+        eprintln!(
+            "full fall: reference flat time {reference} (dop853 at 1e-16 differs by {:.1e})",
+            (d.time - reference).abs() / reference
+        );
+    }
+    let mut g = c.benchmark_group("full-fall-0.3/flat-at-1e-12");
+    for m in ["taylor", "dop853"] {
+        let err =
+            |tol| flat(m, tol).map_or(f64::INFINITY, |f| (f.time - reference).abs() / reference);
+        let Some((tol, e)) = pick(&err, target) else {
+            eprintln!("full fall: {m} never reaches {target:e}");
+            continue;
+        };
+        eprintln!("full fall: {m} tolerance {tol:e} gives flat-time error {e:.2e}");
+        let sc = scene_with(0.3, 0.0, m, Control::Tolerance(tol), End::Flat);
+        g.bench_function(m, |b| {
+            b.iter(|| fall::run(black_box(&sc), fall::MAX_STEPS).ok())
+        });
+    }
+    g.finish();
+}
+
 fn bench_methods(c: &mut Criterion) {
     let settings = [
         ("euler", Control::Fixed(1e-5)),
@@ -136,6 +221,8 @@ fn bench_methods(c: &mut Criterion) {
         ("dop853", Control::Tolerance(1e-8)),
         ("dop853", Control::Tolerance(1e-12)),
         ("radau5", Control::Tolerance(1e-8)),
+        ("taylor", Control::Tolerance(1e-8)),
+        ("taylor", Control::Tolerance(1e-12)),
     ];
     for (name, theta0, rate0) in SCENES {
         let mut g = c.benchmark_group(format!("{name}/separation-with-event"));
@@ -144,9 +231,7 @@ fn bench_methods(c: &mut Criterion) {
             .separation()
             .unwrap();
         for (m, ctl) in settings {
-            let mut sc = scene_at(theta0, rate0);
-            sc.method = m.into();
-            sc.control = Some(ctl);
+            let sc = scene_with(theta0, rate0, m, ctl, End::Separation);
             let s = fall::run(&sc, fall::MAX_STEPS).unwrap().separation.unwrap();
             let label = match ctl {
                 Control::Fixed(h) => format!("{m}/h={h:e}"),
@@ -164,5 +249,5 @@ fn bench_methods(c: &mut Criterion) {
     }
 }
 
-criterion_group! { name = benches; config = configure(); targets = bench_peers, bench_methods }
+criterion_group! { name = benches; config = configure(); targets = bench_at_1e12, bench_peers, bench_methods }
 criterion_main!(benches);

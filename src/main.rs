@@ -34,6 +34,9 @@ enum Command {
         /// Seed of the random states.
         #[arg(long, default_value_t = Config::default().seed)]
         seed: u64,
+        /// Show only these displays: equation numbers or sections, e.g. `25,28` or `2.5`.
+        #[arg(long)]
+        only: Option<String>,
     },
     /// The note's misprints: printed and corrected forms with their residuals.
     Errata {
@@ -52,10 +55,11 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
     },
-    /// Error against run time for every integrator (CSV + SVG with --out).
+    /// Error against run time for every integrator on each scene (CSV + SVG with --out).
     WorkPrecision {
-        /// The scene (default: the built-in from-rest scene θ0 = 0.3).
-        scene: Option<PathBuf>,
+        /// The scenes (default: upright with a tiny push, from rest at 0.1, 0.3, 1.0, 1.5, and
+        /// the full fall to flat from 0.3).
+        scenes: Vec<PathBuf>,
         /// Print JSON (runs[]) instead of a table.
         #[arg(long)]
         json: bool,
@@ -92,7 +96,7 @@ fn main() -> ExitCode {
     };
     match cli.command {
         None => {
-            let verified = verify::verify(false, &Config::default());
+            let verified = verify::verify(false, &Config::default(), None);
             println!();
             let simulated = sim::simulate_builtin_classic();
             if verified == ExitCode::SUCCESS {
@@ -106,6 +110,7 @@ fn main() -> ExitCode {
             cases,
             exact_points,
             seed,
+            only,
         }) => verify::verify(
             json,
             &Config {
@@ -113,11 +118,12 @@ fn main() -> ExitCode {
                 exact_points,
                 seed,
             },
+            only.as_deref(),
         ),
         Some(Command::Errata { json }) => verify::errata_command(json, &Config::default()),
         Some(Command::Simulate { scene, json, out }) => sim::simulate(&scene, json, out.as_deref()),
-        Some(Command::WorkPrecision { scene, json, out }) => {
-            sim::work_precision(scene.as_deref(), json, out.as_deref())
+        Some(Command::WorkPrecision { scenes, json, out }) => {
+            sim::work_precision(&scenes, json, out.as_deref())
         }
         Some(Command::Stability { json }) => sliding_ladder::report::stability::command(json),
         Some(Command::Book { out, cases }) => sliding_ladder::book::command(

@@ -56,14 +56,14 @@ fn every_bad_scene_gets_one_line_exit_2_and_no_file() {
             with("gravity = 9.81", "gravity = 9.81\ncolour = 1"),
             Some(5),
             "ladder",
-            "unknown field",
+            "unknown key",
         ),
         (
             "wrong type",
             with("mass = 1.0", "mass = \"heavy\""),
             Some(2),
             "ladder.mass",
-            "invalid type",
+            "wrong type",
         ),
         (
             "nan",
@@ -247,7 +247,7 @@ fn every_bad_scene_gets_one_line_exit_2_and_no_file() {
             with("at = \"separation\"", "at = \"time\""),
             Some(14),
             "end.time",
-            "needs end.time",
+            "at = \"time\" needs it",
         ),
         (
             "unknown output",
@@ -276,9 +276,9 @@ fn every_bad_scene_gets_one_line_exit_2_and_no_file() {
         (
             "missing section",
             BASE.replace("[end]\nat = \"separation\"\n", ""),
-            None,
-            "scene",
-            "missing field `end`",
+            Some(13),
+            "[end]",
+            "missing section",
         ),
     ];
     for (case, text, line, field, words) in cases {
@@ -292,7 +292,12 @@ fn every_bad_scene_gets_one_line_exit_2_and_no_file() {
                 "{case}: line {l} not in {err}"
             );
         }
-        assert!(err.contains(field), "{case}: field {field} not in {err}");
+        // Fields are shown as `[section] key` (or `[section]`).
+        let place = match field.split_once('.') {
+            Some((section, key)) => format!("[{section}] {key}"),
+            None => field.to_string(),
+        };
+        assert!(err.contains(&place), "{case}: field {place} not in {err}");
         assert!(err.contains(words), "{case}: '{words}' not in {err}");
         assert_eq!(files, 0, "{case}: output written");
     }

@@ -129,3 +129,25 @@ fn breaks_finds_each_differing_step() {
     let chain = vec![printed("a", q(5)), printed("b", q(5))];
     assert_eq!(breaks(&[chain]), Vec::<u32>::new());
 }
+
+/// `ladder verify --only`: numbers, labels and sections select rows; an unknown item is an error.
+#[test]
+fn only_selects_rows_by_number_or_section_and_rejects_unknown_items() {
+    use sliding_ladder::verify::legend::{law_lines, only};
+    let cfg = Config {
+        float_cases: 2,
+        exact_points: 1,
+        seed: 2019,
+    };
+    let all = sliding_ladder::verify::verify_all(&cfg);
+    let picked = only(all.clone(), "25, 28,2.3").expect("known items");
+    let numbers: Vec<u32> = picked.iter().map(|r| r.number).collect();
+    assert_eq!(numbers, vec![17, 18, 19, 25, 28]);
+    assert!(only(all.clone(), "91").is_err());
+    assert!(only(all.clone(), "2.9").is_err());
+    let lines = law_lines(&picked);
+    assert!(
+        lines.contains("(25)  2nd `=`") && !lines.contains("(17)"),
+        "{lines}"
+    );
+}

@@ -205,5 +205,5 @@ fn steps_and_end_times_in_the_scenes_own_units() {
     )
     .unwrap_err()
     .to_string();
-    assert!(both.contains("not both"), "{both}");
+    assert!(both.contains("given together with"), "{both}");
 }

@@ -103,14 +103,14 @@ fn every_bad_penalty_scene_gets_one_line_exit_2_and_no_file() {
             with(PENALTY, "stiffness = 9.81e6", "stiffness = \"stiff\""),
             10,
             "contact.stiffness",
-            "invalid type",
+            "wrong type",
         ),
         (
             "stiffness missing",
             with(PENALTY, "stiffness = 9.81e6\n", ""),
             9,
             "contact.stiffness",
-            "needs stiffness",
+            "the penalty model needs it",
         ),
         (
             "kappa too large",
@@ -169,7 +169,7 @@ fn every_bad_penalty_scene_gets_one_line_exit_2_and_no_file() {
             ),
             10,
             "contact.stiffness",
-            "only for contact.model = \"penalty\"",
+            "only for model = \"penalty\"",
         ),
         (
             "damping for rigid",
@@ -180,7 +180,7 @@ fn every_bad_penalty_scene_gets_one_line_exit_2_and_no_file() {
             ),
             10,
             "contact.damping",
-            "only for contact.model = \"penalty\"",
+            "only for model = \"penalty\"",
         ),
         (
             "exact for penalty",
@@ -216,7 +216,12 @@ fn every_bad_penalty_scene_gets_one_line_exit_2_and_no_file() {
             err.contains(&format!("scene.toml:{line}: ")),
             "{case}: line {line} not in {err}"
         );
-        assert!(err.contains(field), "{case}: field {field} not in {err}");
+        // Fields are shown as `[section] key` (or `[section]`).
+        let place = match field.split_once('.') {
+            Some((section, key)) => format!("[{section}] {key}"),
+            None => field.to_string(),
+        };
+        assert!(err.contains(&place), "{case}: field {place} not in {err}");
         assert!(err.contains(words), "{case}: '{words}' not in {err}");
         assert!(out.is_empty(), "{case}: stdout {out}");
         assert_eq!(files, 0, "{case}: output written");

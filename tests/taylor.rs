@@ -287,7 +287,7 @@ fn scenes_accept_taylor_for_rigid_contact_only() {
     let err = sliding_ladder::sim::scene::parse("penalty.toml", &penalty).unwrap_err();
     let msg = err.to_string();
     assert!(
-        msg.contains("integrator.method") && msg.contains("rigid phases only"),
+        msg.contains("[integrator] method") && msg.contains("rigid phases only"),
         "{msg}"
     );
 }

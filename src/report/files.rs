@@ -1,7 +1,7 @@
 //! Output files, written all-or-nothing: each goes to a hidden temporary name in the target
 //! directory first and is renamed into place only when every file has been written.
 
-use super::plot::{line_plot, PlotSpec, Series};
+use super::plot::{line_plot, panel_plot, PlotSpec, Series};
 use std::path::Path;
 
 /// A file to write.
@@ -11,6 +11,8 @@ pub enum Content {
     Text(String),
     /// An SVG line plot.
     Plot(PlotSpec, Vec<Series>),
+    /// An SVG figure of several line plots (panels).
+    Panels(Vec<(PlotSpec, Vec<Series>)>),
 }
 
 /// A named output file.
@@ -28,6 +30,13 @@ impl OutFile {
         OutFile {
             name: name.into(),
             content: Content::Text(text),
+        }
+    }
+    /// An SVG figure with one panel per entry.
+    pub fn panels(name: &str, panels: Vec<(PlotSpec, Vec<Series>)>) -> Self {
+        OutFile {
+            name: name.into(),
+            content: Content::Panels(panels),
         }
     }
     /// An SVG plot.
@@ -55,6 +64,7 @@ pub fn write_all(dir: &Path, files: &[OutFile]) -> Result<(), String> {
                 Content::Text(t) => std::fs::write(&tmp, t)
                     .map_err(|e| format!("{}: cannot write: {e}", tmp.display()))?,
                 Content::Plot(spec, series) => line_plot(&tmp, spec, series)?,
+                Content::Panels(panels) => panel_plot(&tmp, panels)?,
             }
         }
         for (f, tmp) in files.iter().zip(&temps) {

@@ -8,3 +8,5 @@ pub mod stability_extreme;
 pub mod stability_scale;
 pub mod stability_stiff;
 pub mod work_precision;
+pub mod work_precision_fit;
+pub mod work_precision_report;

@@ -57,6 +57,35 @@ fn range(vals: impl Iterator<Item = f64>) -> (f64, f64) {
 
 /// Draw `series` into the SVG file `path`.
 pub fn line_plot(path: &Path, spec: &PlotSpec, series: &[Series]) -> Result<(), String> {
+    let e = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
+    let root = SVGBackend::new(path, (900, 600)).into_drawing_area();
+    root.fill(&WHITE).map_err(|x| e(&x))?;
+    draw_chart(&root, spec, series, 22).map_err(|x| e(&x))?;
+    root.present().map_err(|x| e(&x))?;
+    Ok(())
+}
+
+/// Draw one chart per panel into the SVG file `path`, in a grid two panels wide.
+pub fn panel_plot(path: &Path, panels: &[(PlotSpec, Vec<Series>)]) -> Result<(), String> {
+    let e = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
+    let cols = panels.len().clamp(1, 2);
+    let rows = panels.len().div_ceil(cols).max(1);
+    let root = SVGBackend::new(path, (700 * cols as u32, 480 * rows as u32)).into_drawing_area();
+    root.fill(&WHITE).map_err(|x| e(&x))?;
+    for (area, (spec, series)) in root.split_evenly((rows, cols)).iter().zip(panels) {
+        draw_chart(area, spec, series, 18).map_err(|x| e(&x))?;
+    }
+    root.present().map_err(|x| e(&x))?;
+    Ok(())
+}
+
+fn draw_chart<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+    spec: &PlotSpec,
+    series: &[Series],
+    caption_size: u32,
+) -> Result<(), String> {
+    let e = |x: &dyn std::fmt::Display| x.to_string();
     let clean: Vec<Vec<(f64, f64)>> = series
         .iter()
         .map(|s| {
@@ -70,11 +99,8 @@ pub fn line_plot(path: &Path, spec: &PlotSpec, series: &[Series]) -> Result<(), 
     let all = || clean.iter().flatten();
     let (x0, x1) = range(all().map(|p| p.0).chain(spec.vlines.iter().copied()));
     let (y0, y1) = range(all().map(|p| p.1).chain(spec.hlines.iter().copied()));
-    let root = SVGBackend::new(path, (900, 600)).into_drawing_area();
-    let e = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
-    root.fill(&WHITE).map_err(|x| e(&x))?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(&spec.title, ("sans-serif", 22))
+    let mut chart = ChartBuilder::on(area)
+        .caption(&spec.title, ("sans-serif", caption_size))
         .margin(15)
         .x_label_area_size(45)
         .y_label_area_size(70)
@@ -111,6 +137,5 @@ pub fn line_plot(path: &Path, spec: &PlotSpec, series: &[Series]) -> Result<(), 
         .position(SeriesLabelPosition::UpperRight)
         .draw()
         .map_err(|x| e(&x))?;
-    root.present().map_err(|x| e(&x))?;
     Ok(())
 }

@@ -1,24 +1,34 @@
-//! Work-precision: for every integrator a sweep of tolerances (adaptive) or steps (fixed), the
-//! error of the separation angle, time and energy against the exact reference, the run time
-//! (warm, median of repeats), the right-hand-side evaluations and the observed order.
-//! Modelled on DiffEqDevTools.jl (`WorkPrecision`): a plain record per run, plotting apart.
+//! Work-precision: for every integrator a sweep of tolerances (adaptive) or steps (fixed), on a
+//! list of scenes, the error against an independent reference, the run time (warm; median of
+//! repeats with the interquartile spread), the right-hand-side evaluations, the observed order
+//! on the asymptotic range and the Pareto front ([`super::work_precision_fit`]).
+//! Modelled on DiffEqDevTools.jl (`WorkPrecisionSet`): a plain record per run, plotting apart.
+//!
+//! References: separation scenes against the exact closed form (`sim::exact`); the full fall to
+//! flat against the Taylor method at order [`MAX_ORDER`] and tolerance 1e-16 (no closed form
+//! exists for the floor phase), whose agreement with DOP853 at 1e-16 is reported beside it.
 
-use super::files::{write_all, OutFile};
-use super::plot::{PlotSpec, Series};
+use super::work_precision_fit::Point;
+pub use super::work_precision_report::{command, report, SceneReport};
+use crate::sim::event::{Direction, Event};
 use crate::sim::exact::PhaseOne;
+use crate::sim::exact::Separation;
 use crate::sim::fall;
-use crate::sim::integrators::{is_adaptive, order, Control, RIGID_METHODS as METHODS};
+use crate::sim::floor::{self, FloorPhase};
+use crate::sim::integrators::taylor::{Taylor, MAX_ORDER};
+use crate::sim::integrators::{is_adaptive, Control};
 use crate::sim::output::Output;
 use crate::sim::rigid::Ladder;
-use crate::sim::scene::{self, End, Scene};
+use crate::sim::run::integrate_phase;
+use crate::sim::scene::{End, Scene};
 use serde::Serialize;
-use std::path::Path;
-use std::process::ExitCode;
 use std::time::Instant;
 
-/// One run of one method at one tolerance or step.
+/// One run of one method at one tolerance or step on one scene.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Run {
+    /// The scene's label.
+    pub scene: String,
     /// Method name.
     pub method: String,
     /// Tolerance (adaptive) or step in s (fixed).
@@ -27,12 +37,36 @@ pub struct Run {
     pub angle_error: f64,
     /// |t_s − t_s,exact| / t_s,exact.
     pub time_error: f64,
-    /// |E(t_s) − E(0)| / (m g l).
+    /// |t_flat − t_flat,ref| / t_flat,ref (full-fall scenes).
+    pub flat_time_error: Option<f64>,
+    /// |E(t_end) − E(0)| / (m g l).
     pub energy_error: f64,
-    /// Right-hand-side evaluations (f64).
+    /// Right-hand-side evaluations (f64; the Taylor method counts one per order per step).
     pub rhs_evals: u64,
     /// Median wall-clock seconds per solve (warm).
     pub seconds: f64,
+    /// First and third quartile of the repeats (the spread).
+    pub seconds_iqr: (f64, f64),
+    /// Timed repeats.
+    pub repeats: usize,
+}
+
+impl Point for Run {
+    fn method(&self) -> &str {
+        &self.method
+    }
+    fn rhs_evals(&self) -> u64 {
+        self.rhs_evals
+    }
+    fn seconds(&self) -> f64 {
+        self.seconds
+    }
+    /// The worse of the angle, time and (full fall) flat-time errors.
+    fn error(&self) -> f64 {
+        self.angle_error
+            .max(self.time_error)
+            .max(self.flat_time_error.unwrap_or(0.0))
+    }
 }
 
 /// The sweep of each method: tolerances or steps.
@@ -40,8 +74,7 @@ pub fn sweep(method: &str) -> Vec<f64> {
     let decades = |a: i32, b: i32| (a..=b).map(|k| 10f64.powi(-k)).collect::<Vec<_>>();
     let halves = |h0: f64, n: i32| (0..n).map(|k| h0 / 2f64.powi(k)).collect::<Vec<_>>();
     match method {
-        "dop853" => decades(3, 16),
-        "taylor" => decades(3, 16),
+        "dop853" | "taylor" => decades(3, 16),
         "dopri5" => decades(3, 15),
         "radau5" => decades(3, 13),
         "rk4" => halves(0.1, 10),
@@ -78,12 +111,44 @@ pub fn scene_at(theta0: f64, rate0: f64) -> Scene {
     }
 }
 
-/// Median of `f`'s wall time after one warm-up, repeated until ~20 ms or 51 times (at least 3).
-pub fn median_seconds(mut f: impl FnMut()) -> f64 {
+/// The built-in list: upright with a push of 1e-6 rad/s, from rest at 0.1, 0.3, 1.0 and 1.5,
+/// and the full fall to flat from 0.3.
+pub fn default_scenes() -> Vec<Scene> {
+    let mut v: Vec<Scene> = [(0.0, 1e-6), (0.1, 0.0), (0.3, 0.0), (1.0, 0.0), (1.5, 0.0)]
+        .into_iter()
+        .map(|(a, r)| scene_at(a, r))
+        .collect();
+    let mut flat = scene_at(0.3, 0.0);
+    flat.end = End::Flat;
+    flat.file = "(built in: θ0 = 0.3, θ̇0 = 0, to flat)".into();
+    v.push(flat);
+    v
+}
+
+/// Timing of each run: repeats until `budget` seconds or `max` repeats, at least `min`.
+#[derive(Clone, Copy, Debug)]
+pub struct Timing {
+    /// Seconds to spend per run (after one warm-up).
+    pub budget: f64,
+    /// Fewest repeats.
+    pub min: usize,
+    /// Most repeats.
+    pub max: usize,
+}
+
+/// The command's timing: ~20 ms per run, 5 to 51 repeats.
+pub const TIMING: Timing = Timing {
+    budget: 0.02,
+    min: 5,
+    max: 51,
+};
+
+/// Median, quartiles and number of repeats of `f`'s wall time, after one warm-up.
+pub fn time_it(timing: Timing, mut f: impl FnMut()) -> (f64, (f64, f64), usize) {
     let t = Instant::now();
     f();
     let once = t.elapsed().as_secs_f64().max(1e-9);
-    let reps = ((0.02 / once).ceil() as usize).clamp(3, 51);
+    let reps = ((timing.budget / once).ceil() as usize).clamp(timing.min, timing.max);
     let mut v: Vec<f64> = (0..reps)
         .map(|_| {
             let t = Instant::now();
@@ -92,23 +157,62 @@ pub fn median_seconds(mut f: impl FnMut()) -> f64 {
         })
         .collect();
     v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
+    let q = |p: f64| v[((v.len() - 1) as f64 * p).round() as usize];
+    (q(0.5), (q(0.25), q(0.75)), reps)
 }
 
-/// All runs for `base` (its ladder and start; method, end and outputs are replaced), calling
-/// `tick` after each run. Runs that fail (e.g. the step limit) are skipped.
-pub fn measure(base: &Scene, mut tick: impl FnMut(&str)) -> Result<Vec<Run>, String> {
+/// Median of `f`'s wall time (the command's timing).
+pub fn median_seconds(f: impl FnMut()) -> f64 {
+    time_it(TIMING, f).0
+}
+
+/// Flat: θ − π/2 rises through zero (for the reference run).
+struct Flat;
+impl Event<4> for Flat {
+    fn value(&self, _t: f64, y: &[f64; 4]) -> f64 {
+        y[0] - std::f64::consts::FRAC_PI_2
+    }
+    fn direction(&self) -> Direction {
+        Direction::Rising
+    }
+    fn rate(&self, _t: f64, _y: &[f64; 4], dy: &[f64; 4]) -> Option<f64> {
+        Some(dy[0])
+    }
+}
+
+/// The reference flat time: the floor phase from the exact separation state, by the Taylor
+/// method at order MAX_ORDER and tolerance 1e-16 (no run of the sweep uses that order, and the
+/// wall phase is the closed form).
+pub fn flat_reference(base: &Scene, sep: &Separation) -> Result<f64, String> {
+    let ladder = base.ladder;
+    let sys = FloorPhase::new(&ladder);
+    let y = floor::state_at_separation(&ladder, sep.angle, sep.rate);
+    let mut st = Taylor::with_order(sep.time, y, 1e-16, MAX_ORDER);
+    let t_end = sep.time + 1e3 * (ladder.half_length / ladder.gravity).sqrt();
+    let end = integrate_phase(&sys, &mut st, &[&Flat], t_end, 1_000_000, &mut ())
+        .map_err(|e| format!("reference run: {e}"))?;
+    end.event
+        .map(|_| end.t)
+        .ok_or_else(|| "the reference run never lies flat".into())
+}
+
+/// All runs of `methods` for `base` (its ladder, start and end; method and outputs are
+/// replaced), calling `tick` after each run. Runs that fail (e.g. the step limit) are skipped.
+pub fn measure(
+    base: &Scene,
+    methods: &[&str],
+    timing: Timing,
+    mut tick: impl FnMut(&str),
+) -> Result<Vec<Run>, String> {
     let exact = PhaseOne::new(base.theta0, base.rate0, base.ladder.omega2())?
         .separation()
         .ok_or("the start is the equilibrium: no separation")?;
-    let (m, l, g) = (
-        base.ladder.mass,
-        base.ladder.half_length,
-        base.ladder.gravity,
-    );
-    let e0 = crate::sim::rigid::energy(&base.ladder, base.theta0, base.rate0);
+    let flat_ref = match base.end {
+        End::Flat => Some(flat_reference(base, &exact)?),
+        _ => None,
+    };
     let mut runs = Vec::new();
-    for method in METHODS {
+    for &method in methods {
         for tol in sweep(method) {
             let mut sc = base.clone();
             sc.method = method.into();
@@ -117,188 +221,43 @@ pub fn measure(base: &Scene, mut tick: impl FnMut(&str)) -> Result<Vec<Run>, Str
             } else {
                 Control::Fixed(tol)
             });
-            sc.end = End::Separation;
-            sc.outputs = vec![Output::SeparationAngle, Output::SeparationTime];
+            sc.end = if flat_ref.is_some() {
+                End::Flat
+            } else {
+                End::Separation
+            };
+            sc.outputs = vec![
+                Output::SeparationAngle,
+                Output::SeparationTime,
+                Output::EnergyError,
+            ];
             tick(method);
             let Ok(o) = fall::run(&sc, fall::MAX_STEPS) else {
                 continue;
             };
             let Some(s) = o.separation else { continue };
-            let seconds = median_seconds(|| {
+            let flat_time_error = match (flat_ref, o.flat) {
+                (None, _) => None,
+                (Some(r), Some(f)) => Some((f.time - r).abs() / r),
+                (Some(_), None) => continue,
+            };
+            let (seconds, seconds_iqr, repeats) = time_it(timing, || {
                 std::hint::black_box(fall::run(std::hint::black_box(&sc), fall::MAX_STEPS).ok());
             });
-            let e1 = crate::sim::rigid::energy(&base.ladder, s.angle, s.rate);
             runs.push(Run {
+                scene: base.file.clone(),
                 method: method.into(),
                 tolerance: tol,
                 angle_error: (s.angle - exact.angle).abs() / exact.angle,
                 time_error: (s.time - exact.time).abs() / exact.time,
-                energy_error: (e1 - e0).abs() / (m * g * l),
-                rhs_evals: o.work.wall.rhs_evals,
+                flat_time_error,
+                energy_error: o.energy_error.unwrap_or(f64::NAN),
+                rhs_evals: o.work.wall.rhs_evals + o.work.floor.map_or(0, |f| f.rhs_evals),
                 seconds,
+                seconds_iqr,
+                repeats,
             });
         }
     }
     Ok(runs)
-}
-
-/// Observed order: least-squares slope of −log(angle error) against log(rhs evaluations), over
-/// runs whose error lies in (1e-12, 1e-2) (above rounding, inside the asymptotic regime).
-pub fn observed_order(runs: &[Run], method: &str) -> Option<f64> {
-    let pts: Vec<(f64, f64)> = runs
-        .iter()
-        .filter(|r| r.method == method && r.angle_error > 1e-12 && r.angle_error < 1e-2)
-        .map(|r| ((r.rhs_evals as f64).ln(), -r.angle_error.ln()))
-        .collect();
-    if pts.len() < 3 {
-        return None;
-    }
-    let n = pts.len() as f64;
-    let (mx, my) = (
-        pts.iter().map(|p| p.0).sum::<f64>() / n,
-        pts.iter().map(|p| p.1).sum::<f64>() / n,
-    );
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    (sxx > 0.0).then(|| sxy / sxx)
-}
-
-/// Runs not beaten by another run in both seconds and (worse of angle and time) error.
-pub fn pareto(runs: &[Run]) -> Vec<&Run> {
-    let err = |r: &Run| r.angle_error.max(r.time_error);
-    let mut front: Vec<&Run> = runs
-        .iter()
-        .filter(|r| {
-            !runs
-                .iter()
-                .any(|q| q.seconds < r.seconds && err(q) < err(r))
-        })
-        .collect();
-    front.sort_by(|a, b| a.seconds.total_cmp(&b.seconds));
-    front
-}
-
-fn csv(runs: &[Run]) -> String {
-    let mut s =
-        String::from("method,tolerance,angle_error,time_error,energy_error,rhs_evals,seconds\n");
-    for r in runs {
-        s += &format!(
-            "{},{:e},{:e},{:e},{:e},{},{:e}\n",
-            r.method,
-            r.tolerance,
-            r.angle_error,
-            r.time_error,
-            r.energy_error,
-            r.rhs_evals,
-            r.seconds
-        );
-    }
-    s
-}
-
-fn plot(runs: &[Run], title: &str) -> OutFile {
-    let series = METHODS
-        .iter()
-        .map(|m| Series {
-            name: (*m).into(),
-            points: runs
-                .iter()
-                .filter(|r| r.method == *m)
-                .map(|r| (r.seconds.log10(), r.angle_error.max(1e-17).log10()))
-                .collect(),
-        })
-        .collect();
-    let spec = PlotSpec {
-        title: format!("work-precision: {title}"),
-        x_label: "log10 run time per solve (s)".into(),
-        y_label: "log10 relative error of the separation angle".into(),
-        ..Default::default()
-    };
-    OutFile::plot("work_precision.svg", spec, series)
-}
-
-/// `ladder work-precision [SCENE] [--json] [--out DIR]`.
-pub fn command(scene_path: Option<&Path>, json: bool, out: Option<&Path>) -> ExitCode {
-    let base = match scene_path.map(scene::load) {
-        None => default_scene(),
-        Some(Ok(s)) => s,
-        Some(Err(e)) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(2);
-        }
-    };
-    let total: usize = METHODS.iter().map(|m| sweep(m).len()).sum();
-    let bar = indicatif::ProgressBar::new(total as u64);
-    let runs = measure(&base, |m| {
-        bar.set_message(m.to_string());
-        bar.inc(1);
-    });
-    bar.finish_and_clear();
-    let runs = match runs {
-        Ok(r) => r,
-        Err(e) => {
-            eprintln!("error: {}: {e}", base.file);
-            return ExitCode::from(2);
-        }
-    };
-    if let Some(dir) = out {
-        if let Err(e) = write_all(
-            dir,
-            &[
-                OutFile::text("runs.csv", csv(&runs)),
-                plot(&runs, &base.file),
-            ],
-        ) {
-            eprintln!("error: {e}");
-            return ExitCode::from(2);
-        }
-    }
-    let orders: Vec<serde_json::Value> = METHODS
-        .iter()
-        .map(|m| serde_json::json!({"method": m, "theoretical": order(m), "observed": observed_order(&runs, m)}))
-        .collect();
-    if json {
-        let v = serde_json::json!({ "scene": base.file, "runs": runs, "orders": orders, "pareto": pareto(&runs) });
-        println!("{}", serde_json::to_string_pretty(&v).unwrap_or_default());
-        return ExitCode::SUCCESS;
-    }
-    println!(
-        "work-precision for {} (θ0 = {}, θ̇0 = {})",
-        base.file, base.theta0, base.rate0
-    );
-    println!(
-        "{:<17} {:>9} {:>10} {:>10} {:>10} {:>9} {:>11}",
-        "method", "tol/step", "angle err", "time err", "energy err", "rhs", "µs/solve"
-    );
-    for r in &runs {
-        println!(
-            "{:<17} {:>9.1e} {:>10.2e} {:>10.2e} {:>10.2e} {:>9} {:>11.3}",
-            r.method,
-            r.tolerance,
-            r.angle_error,
-            r.time_error,
-            r.energy_error,
-            r.rhs_evals,
-            r.seconds * 1e6
-        );
-    }
-    println!("\nobserved order (slope of error against rhs evaluations):");
-    for m in METHODS {
-        let obs = observed_order(&runs, m).map_or("n/a".to_string(), |o| format!("{o:.2}"));
-        println!(
-            "  {m:<17} theoretical {}  observed {obs}",
-            order(m).unwrap_or(0)
-        );
-    }
-    println!("\nPareto front (run time against the worse of angle and time error):");
-    for r in pareto(&runs) {
-        println!(
-            "  {:<17} {:>9.1e}  error {:.2e}  {:.3} µs",
-            r.method,
-            r.tolerance,
-            r.angle_error.max(r.time_error),
-            r.seconds * 1e6
-        );
-    }
-    ExitCode::SUCCESS
 }

@@ -32,6 +32,11 @@ pub fn simulate(scene_path: &Path, json: bool, out: Option<&Path>) -> ExitCode {
             });
         }
     };
+    // A run that stops short of the end the scene asked for must say so (exit 1, stderr, JSON).
+    let short = unreached_end(&scene, &outcome);
+    if let Some(why) = &short {
+        eprintln!("error: {}: {why}", scene.file);
+    }
     if let Some(dir) = out {
         if let Err(e) = write_all(dir, &files(&scene, &outcome)) {
             eprintln!("error: {e}");
@@ -39,14 +44,32 @@ pub fn simulate(scene_path: &Path, json: bool, out: Option<&Path>) -> ExitCode {
         }
     }
     if json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&to_json(&scene, &outcome)).unwrap_or_default()
-        );
+        let mut v = to_json(&scene, &outcome);
+        if let (Some(why), Value::Object(m)) = (&short, &mut v) {
+            m.insert("incomplete".into(), json!(why));
+        }
+        println!("{}", serde_json::to_string_pretty(&v).unwrap_or_default());
     } else {
         print!("{}", summary(&scene, &outcome));
     }
+    if short.is_some() {
+        return ExitCode::from(1);
+    }
     ExitCode::SUCCESS
+}
+
+/// Why the run did not reach the end the scene asked for (separation or flat), if it did not.
+pub fn unreached_end(scene: &Scene, o: &Outcome) -> Option<String> {
+    let missing = match scene.end {
+        scene::End::Separation if o.separation.is_none() => "the separation",
+        scene::End::Flat if o.separation.is_none() => "the separation (and so flat)",
+        scene::End::Flat if o.flat.is_none() => "flat",
+        _ => return None,
+    };
+    Some(format!(
+        "the run stopped at t = {} s, θ = {} rad without reaching {missing}, the end the scene asks for",
+        o.last.0, o.last.1
+    ))
 }
 
 pub use crate::report::work_precision::command as work_precision;

@@ -35,6 +35,67 @@ pub trait Event<const N: usize> {
     fn interior_samples(&self) -> usize {
         0
     }
+    /// d/dt of [`Event::value`] along a motion through `y` with state rate `dy` (None: not
+    /// known; the root is then refined by Brent's method alone).
+    fn rate(&self, _t: f64, _y: &[f64; N], _dy: &[f64; N]) -> Option<f64> {
+        None
+    }
+}
+
+/// A root of `f` in the bracket `[a, b]` (`f(a)`, `f(b)` of opposite signs or one zero) by
+/// Newton's method safeguarded by bisection, with `f` returning the value and its derivative.
+/// Stops when the Newton correction is within 8 ulps of the iterate (rounding noise) or the
+/// bracket is two adjacent floats; None when `f` has no derivative (the caller falls back to [`brent`]).
+pub fn newton_in_bracket(
+    f: impl Fn(f64) -> Option<(f64, f64)>,
+    a: f64,
+    b: f64,
+    fa: f64,
+    fb: f64,
+) -> Option<f64> {
+    if fa == 0.0 {
+        return Some(a);
+    }
+    if fb == 0.0 {
+        return Some(b);
+    }
+    // lo keeps the sign of fa, hi the sign of fb. As in `rtsafe` (Press et al., *Numerical
+    // Recipes*, sec. 9.4): bisect when Newton would leave the bracket or is not halving the
+    // step, so a poor derivative costs speed, never the root.
+    let (mut lo, mut hi) = (a, b);
+    let mut t = if fa.abs() < fb.abs() { a } else { b };
+    let (mut dx, mut dx_old) = ((b - a).abs(), (b - a).abs());
+    for _ in 0..200 {
+        let (v, d) = f(t)?;
+        if v == 0.0 {
+            return Some(t);
+        }
+        if (v > 0.0) == (fa > 0.0) {
+            lo = t;
+        } else {
+            hi = t;
+        }
+        let (l, h) = (lo.min(hi), lo.max(hi));
+        let newton = t - v / d;
+        let next = if !(newton > l && newton < h) || (2.0 * v).abs() > (dx_old * d).abs() {
+            dx_old = dx;
+            dx = 0.5 * (h - l);
+            l + dx
+        } else {
+            dx_old = dx;
+            dx = (newton - t).abs();
+            newton
+        };
+        // Near the root the event's value is rounding noise and so is the correction: a
+        // correction of a few ulps means converged (bisecting on to adjacent floats would cost
+        // ~50 more evaluations for digits the noise does not have).
+        let noise = 8.0 * f64::EPSILON * t.abs().max(f64::MIN_POSITIVE);
+        if (next - t).abs() <= noise || h - l <= 2.0 * f64::EPSILON * h.abs().max(l.abs()) {
+            return Some(next);
+        }
+        t = next;
+    }
+    Some(t)
 }
 
 /// Whether going from `before` to `after` is a crossing in `dir`.
@@ -123,6 +184,21 @@ mod tests {
     fn brent_finds_cos_root_to_the_last_ulp() {
         let r = brent(f64::cos, 1.0, 2.0, 1f64.cos(), 2f64.cos());
         assert!((r - std::f64::consts::FRAC_PI_2).abs() <= 2.0 * f64::EPSILON * 2.0);
+    }
+
+    #[test]
+    fn newton_finds_cos_root_and_falls_back_without_derivative() {
+        let f = |t: f64| Some((t.cos(), -t.sin()));
+        let r = newton_in_bracket(f, 1.0, 2.0, 1f64.cos(), 2f64.cos()).unwrap();
+        assert!((r - std::f64::consts::FRAC_PI_2).abs() <= 8.0 * f64::EPSILON * 2.0);
+        // A wrong derivative still ends inside the bracket at the root (bisection guard).
+        let g = |t: f64| Some((t.cos(), 1.0));
+        let r = newton_in_bracket(g, 1.0, 2.0, 1f64.cos(), 2f64.cos()).unwrap();
+        assert!(
+            (r - std::f64::consts::FRAC_PI_2).abs() <= 4.0 * f64::EPSILON * 2.0,
+            "{r}"
+        );
+        assert!(newton_in_bracket(|_| None, 1.0, 2.0, 0.5, -0.4).is_none());
     }
 
     #[test]

@@ -17,7 +17,7 @@ use super::fall::SeparationState;
 use super::integrators::any::AnyStepper;
 use super::integrators::{Control, Stats, Stepper};
 use super::rigid::{separation_factor, Ladder, WallPhase};
-use super::run::{integrate_phase, RunError};
+use super::run::{integrate_phase, Observer, RunError};
 use super::scene::MAX_END_TIME;
 
 /// How the wall phase from a start ends.
@@ -65,18 +65,25 @@ pub fn wall_release(
         return Ok((WallRelease::AtOnce, Stats::default()));
     }
     let wall = WallPhase::new(ladder);
-    let mut stepper = AnyStepper::new(method, control, 0.0, [theta0, rate0])
+    let (t0, y0) = linear_lead_in(omega2, theta0, rate0)
+        .map_or((0.0, [theta0, rate0]), |(t, th, w)| (t, [th, w]));
+    let mut stepper = AnyStepper::new(method, control, 0.0, y0)
         .ok_or_else(|| RunError::Start(format!("method {method} does not take {control:?}")))?;
     // The longest fall the scenes allow (1e4 s at l = g = 1 m, s⁻²), in this ladder's units.
     let t_end = MAX_END_TIME * (ladder.half_length / ladder.gravity).sqrt();
+    // In time since the lead-in (the steppers' step floor is relative to |t|).
     let end = integrate_phase(
         &wall,
         &mut stepper,
         &[&Factor(omega2)],
-        t_end,
+        t_end - t0,
         max_steps,
         &mut (),
-    );
+    )
+    .map(|mut e| {
+        e.t += t0;
+        e
+    });
     let stats = stepper.stats();
     let end = end?;
     match end.event {
@@ -91,5 +98,49 @@ pub fn wall_release(
         None => Err(RunError::Start(format!(
             "the wall force did not reach zero by t = {t_end:e} s"
         ))),
+    }
+}
+
+/// Amplitude below which the wall phase is linear to f64 precision: sin θ = θ (1 − θ²/6 + …)
+/// and θ²/6 ≤ 1.5e-19 < u/700 for |θ| ≤ 2⁻³⁰, so (5) is θ̈ = ω² θ there.
+pub const LINEAR_AMPLITUDE: f64 = 9.313_225_746_154_785e-10;
+
+/// For a start (θ0, θ̇0) smaller than [`LINEAR_AMPLITUDE`] (in θ and θ̇/ω), the state where the
+/// motion reaches that amplitude, from the exact solution of the linearised (5):
+/// θ = ½ a e^{ωt} + ½ b e^{−ωt}, a = θ0 + θ̇0/ω, b = θ0 − θ̇0/ω. Integrators cannot start at
+/// subnormal or tiny θ themselves: a relative tolerance there measures nothing (5e-324 has one
+/// significant bit) and a fixed step needs ~ln(1/θ0) growth before anything happens.
+/// Returns (t, θ, θ̇), or None when the start is not tiny or does not move away from 0.
+pub fn linear_lead_in(omega2: f64, theta0: f64, rate0: f64) -> Option<(f64, f64, f64)> {
+    let omega = omega2.sqrt();
+    // a and b scaled by 2^600 (exact), so that θ̇0/ω cannot underflow for a subnormal θ̇0.
+    let scale = 2f64.powi(600);
+    let (p, q) = (theta0 * scale, rate0 * scale / omega);
+    let amp = LINEAR_AMPLITUDE;
+    if !(p.abs() < amp * scale && q.abs() < amp * scale && omega > 0.0 && omega.is_finite()) {
+        return None;
+    }
+    let (a, b) = ((p + q) / scale, (p - q) / scale);
+    if p + q <= 0.0 || p < 0.0 {
+        return None;
+    }
+    // e^{ωt} = 2A/a, formed through logarithms so that a subnormal a cannot overflow it.
+    let t = ((2.0 * amp * scale).ln() - (p + q).ln()) / omega;
+    if t <= 0.0 {
+        return None;
+    }
+    let back = b * (a / (4.0 * amp)); // ½ b e^{−ωt}
+    Some((t, amp + back, omega * (amp - back)))
+}
+
+/// An observer that sees times shifted by `.1` (a phase integrated in time since a lead-in).
+pub struct Shifted<'a, O>(pub &'a mut O, pub f64);
+
+impl<const N: usize, O: Observer<N>> Observer<N> for Shifted<'_, O> {
+    fn samples_per_step(&self) -> usize {
+        self.0.samples_per_step()
+    }
+    fn observe(&mut self, t: f64, y: &[f64; N]) {
+        self.0.observe(t + self.1, y);
     }
 }

@@ -213,6 +213,10 @@ impl Event<2> for SeparationEvent {
     fn direction(&self) -> Direction {
         Direction::Falling
     }
+    /// d/dt (ω² cos θ − θ̇²) = −ω² sin θ θ̇ − 2 θ̇ θ̈.
+    fn rate(&self, _t: f64, y: &[f64; 2], dy: &[f64; 2]) -> Option<f64> {
+        Some(-self.0 * y[0].sin() * dy[0] - 2.0 * y[1] * dy[1])
+    }
 }
 
 /// Flat: θ − π/2 rises through zero.
@@ -223,6 +227,9 @@ impl Event<4> for FlatEvent {
     }
     fn direction(&self) -> Direction {
         Direction::Rising
+    }
+    fn rate(&self, _t: f64, _y: &[f64; 4], dy: &[f64; 4]) -> Option<f64> {
+        Some(dy[0])
     }
 }
 
@@ -252,13 +259,28 @@ pub fn run(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
         return super::penalty_scene::run(scene, stiffness, damping, max_steps);
     }
     let units = Units::of(&scene.ladder);
-    run_rigid(&units.scale_scene(scene), max_steps)
+    // Tiny starts take their linear lead-in in SI, before scaling: θ̇0 T underflows (5e-324 T
+    // = 0 for T < 1), and a subnormal product keeps only part of θ̇0's digits. The lead-in ends
+    // at an amplitude (~1e-9) where the conversion is exact to rounding.
+    let lead = super::extreme::linear_lead_in(scene.ladder.omega2(), scene.theta0, scene.rate0)
+        .map(|(t, theta, rate)| (t / units.time, theta, rate * units.time));
+    let mut out = run_rigid(&units.scale_scene(scene), lead, max_steps)
         .map(|o| units.outcome_to_si(o))
-        .map_err(|e| units.error_to_si(e))
+        .map_err(|e| units.error_to_si(e))?;
+    // The trace's first point is the start as given (its rate may not survive the scaling).
+    if let Some(first) = out.trace.as_mut().and_then(|t| t.first_mut()) {
+        (first.theta, first.rate) = (scene.theta0, scene.rate0);
+    }
+    Ok(out)
 }
 
-/// A rigid `scene` already in its own units (m = l = g = 1).
-fn run_rigid(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
+/// A rigid `scene` already in its own units (m = l = g = 1), with the linear lead-in of a tiny
+/// start (t0, θ, θ̇) in those units when it has one ([`super::extreme::linear_lead_in`]).
+fn run_rigid(
+    scene: &Scene,
+    lead: Option<(f64, f64, f64)>,
+    max_steps: u64,
+) -> Result<Outcome, RunError> {
     let plan = Plan::of(scene);
     let ladder = scene.ladder;
     let (m, l, g) = (ladder.mass, ladder.half_length, ladder.gravity);
@@ -272,15 +294,20 @@ fn run_rigid(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
         .energy
         .then(|| rigid::energy(&ladder, scene.theta0, scene.rate0));
 
+    // Tiny and subnormal starts: the exact linear motion up to where f64 can follow it.
+    let (t0, y_lead) = lead
+        .filter(|(t, _, _)| *t < t_end)
+        .map_or((0.0, [scene.theta0, scene.rate0]), |(t, th, w)| {
+            (t, [th, w])
+        });
     let Some(control) = scene.control else {
         // The exact reference (wall phase only; the scene validation guarantees end = separation).
-        let p =
-            PhaseOne::new(scene.theta0, scene.rate0, ladder.omega2()).map_err(RunError::Start)?;
+        let p = PhaseOne::new(y_lead[0], y_lead[1], ladder.omega2()).map_err(RunError::Start)?;
         let s = p
             .separation()
             .ok_or_else(|| RunError::Start("the ladder never leaves the wall".into()))?;
         let sep = SeparationState {
-            time: s.time,
+            time: t0 + s.time,
             angle: s.angle,
             rate: s.rate,
         };
@@ -288,7 +315,7 @@ fn run_rigid(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
             plan,
             separation: Some(sep),
             flat: None,
-            last: (s.time, s.angle, s.rate),
+            last: (t0 + s.time, s.angle, s.rate),
             energy_error: None,
             momentum_error: None,
             floor_report: None,
@@ -298,7 +325,8 @@ fn run_rigid(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
     };
     let wall = WallPhase::new(&ladder);
     let y0 = [scene.theta0, scene.rate0];
-    let mut stepper = AnyStepper::new(&scene.method, control, 0.0, y0).ok_or_else(|| {
+    // The stepper runs in time since the lead-in (its step floor is relative to |t|).
+    let mut stepper = AnyStepper::new(&scene.method, control, 0.0, y_lead).ok_or_else(|| {
         RunError::Start(format!("method {} does not take {control:?}", scene.method))
     })?;
     let mut obs = TraceObserver {
@@ -310,15 +338,19 @@ fn run_rigid(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
         force_evals: 0,
     };
     obs.observe(0.0, &y0);
+    if t0 > 0.0 {
+        obs.observe(t0, &y_lead);
+    }
     let sep_event = SeparationEvent(wall.omega2);
-    let end1 = integrate_phase(
+    let mut end1 = integrate_phase(
         &wall,
         &mut stepper,
         &[&sep_event],
-        t_end,
+        t_end - t0,
         max_steps,
-        &mut obs,
+        &mut super::extreme::Shifted(&mut obs, t0),
     )?;
+    end1.t += t0;
     work.wall = stepper.stats();
     work.force_evals += obs.force_evals;
     let mut last = (end1.t, end1.y[0], end1.y[1]);

@@ -23,16 +23,23 @@
 //! that m, l, g anywhere in 1e-30..1e30 change nothing but the scaling back; the model then
 //! depends on the dimensionless stiffness κ = k l/(m g) and damping γ = c √(l/g)/m only.
 //!
+//! **Force coordinates.** At large κ the penetrations are tiny (p ~ 1/κ): written as
+//! p_w = sin θ − x with x in the state, the force κ p is κ times a *difference* of O(1)
+//! numbers, and the rounding of x alone (u = 1.1e-16) becomes a force error κ u, 1e-4 m g at
+//! κ = 1e12 and 0.1 m g at 1e15: spurious zeros of the wall force, separation angles that
+//! move by 1e-5 when κ moves by an ulp. So the state carries the spring forces themselves:
+//! y = [θ, f_w, f_f, θ̇, v_w, v_f] with f = κ p (units of m g) and v = κ ṗ, and
+//! v̇ = κ p̈ where p̈_w = cos θ θ̈ − sin θ θ̇² − F_w and p̈_f = −sin θ θ̈ − cos θ θ̇² − F_f + 1
+//! (from m ẍ = F_w, m ÿ = F_f − m g). The forces are then held to their own relative
+//! precision; x and y are recovered as sin θ − f_w/κ and cos θ − f_f/κ where needed (energy).
+//! The rigid model is the limit p̈ = 0 of the same equations.
+//!
 //! The contact oscillates at ω_c ~ √κ (in units of √(g/l)) while the fall takes O(1): explicit
-//! methods need h ≲ 1/√κ, an implicit L-stable method does not. At large κ the force is
-//! κ times a *difference* of positions (l sin θ − x ~ l/κ): an absolute position error δ
-//! becomes a force error κ δ (in units of m g). δ is at least the rounding of x (u l, u =
-//! 1.1e-16), so the separation angle cannot be better than ~κ u; an explicit method's δ is its
-//! tolerance, so it cannot be better than ~κ tol. Radau5 ends each step on its last stage, where
-//! the stiff components are in equilibrium with the slow ones (stiff accuracy), and does much
-//! better than κ tol; its Newton iteration, though, cannot converge below the rounding of the
-//! forces, so tolerances under ~κ u fail. Together with the model's own O(1/κ) distance to the
-//! rigid limit this is the stall reported by `ladder stability`.
+//! methods need h ≲ 1/√κ, an implicit L-stable method does not. Radau5 ends each step on its
+//! last stage, where the stiff components are in equilibrium with the slow ones (stiff
+//! accuracy): its error control holds the forces to the tolerance in units of m g (the contact
+//! layer's own scale), and the separation time, where F_w falls through zero at a rate of O(1),
+//! follows. The model's own distance to the rigid limit is O(1/κ).
 //!
 //! **The kink.** max(0, ·) has a kink where the force is zero. Inside the right-hand side
 //! ([`Law::OneSided`]) every stage, Newton iterate and finite-difference probe near a tiny
@@ -49,10 +56,11 @@
 
 use super::event::{Direction, Event};
 use super::integrators::any::AnyStepper;
-use super::integrators::{Control, Ode, Stats, Stepper};
+use super::integrators::{order, Control, Ode, Stats, Stepper};
+use super::penalty_start::{confirm_separation, rigid_forces, slow_forces};
 use super::rigid::{event_safe_step, Ladder};
 use super::run::{integrate_phase, RunError};
-use num_dual::{Dual64, DualNum};
+use num_dual::DualNum;
 use std::cell::Cell;
 
 /// Ω² = 3g/(4l) in units where l = g = 1 (eq. (5)).
@@ -94,25 +102,25 @@ impl Contact {
     }
 }
 
-/// Wall penetration p_w = −x_C = sin θ − x (units of l; positive inside the wall).
-pub fn wall_penetration<D: DualNum<Primitive = f64> + Copy>(y: &[D; 6]) -> D {
-    y[2].sin() - y[0]
+/// Wall penetration p_w = −x_C = sin θ − x = f_w/κ (units of l; positive inside the wall).
+pub fn wall_penetration(contact: &Contact, y: &[f64; 6]) -> f64 {
+    y[1] / contact.kappa
 }
 
-/// Floor penetration p_f = −y_D = cos θ − y (units of l; positive inside the floor).
-pub fn floor_penetration<D: DualNum<Primitive = f64> + Copy>(y: &[D; 6]) -> D {
-    y[2].cos() - y[1]
+/// Floor penetration p_f = −y_D = cos θ − y = f_f/κ (units of l; positive inside the floor).
+pub fn floor_penetration(contact: &Contact, y: &[f64; 6]) -> f64 {
+    y[2] / contact.kappa
 }
 
-/// A one-sided spring-dashpot: max(0, κ p + γ ṗ) while p > 0, zero otherwise.
-/// (The kinks are where the force is zero; num-dual differentiates the active branch.)
-pub fn one_sided<D: DualNum<Primitive = f64> + Copy>(contact: &Contact, pen: D, pen_rate: D) -> D {
-    if pen.re() <= 0.0 {
+/// A one-sided spring-dashpot in force units: max(0, f + (γ/κ) v) while f = κ p > 0, zero
+/// otherwise. (The kinks are where the force is zero; num-dual differentiates the active branch.)
+pub fn one_sided<D: DualNum<Primitive = f64> + Copy>(contact: &Contact, f: D, rate: D) -> D {
+    if f.re() <= 0.0 {
         return D::zero();
     }
-    let f = pen * contact.kappa + pen_rate * contact.gamma;
-    if f.re() > 0.0 {
-        f
+    let total = f + rate * (contact.gamma / contact.kappa);
+    if total.re() > 0.0 {
+        total
     } else {
         D::zero()
     }
@@ -137,33 +145,30 @@ pub fn contact_forces<D: DualNum<Primitive = f64> + Copy>(
     law: Law,
     y: &[D; 6],
 ) -> (D, D) {
-    let (s, c) = y[2].sin_cos();
-    let (pw, pf) = (wall_penetration(y), floor_penetration(y));
-    let wall_rate = c * y[5] - y[3];
-    let floor_rate = -(s * y[5]) - y[4];
+    let damp = contact.gamma / contact.kappa;
     match law {
-        Law::Switched => (
-            pw * contact.kappa + wall_rate * contact.gamma,
-            pf * contact.kappa + floor_rate * contact.gamma,
-        ),
+        Law::Switched => (y[1] + y[4] * damp, y[2] + y[5] * damp),
         Law::OneSided => (
-            one_sided(contact, pw, wall_rate),
-            one_sided(contact, pf, floor_rate),
+            one_sided(contact, y[1], y[4]),
+            one_sided(contact, y[2], y[5]),
         ),
     }
 }
 
 /// Energy in units of m g l: ½(ẋ² + ẏ²) + ⅙ θ̇² + y + ½ κ (p_w² + p_f²) (springs while
-/// compressed). Conserved when γ = 0: the blow-up detector of explicit methods.
+/// compressed), with x, y and their rates recovered from θ and the spring forces. Conserved
+/// when γ = 0: the blow-up detector of explicit methods.
 pub fn energy(contact: &Contact, y: &[f64; 6]) -> f64 {
-    let (pw, pf) = (wall_penetration(y).max(0.0), floor_penetration(y).max(0.0));
-    0.5 * (y[3] * y[3] + y[4] * y[4])
-        + y[5] * y[5] / 6.0
-        + y[1]
-        + 0.5 * contact.kappa * (pw * pw + pf * pf)
+    let k = contact.kappa;
+    let (s, c) = y[0].sin_cos();
+    // ẋ = cos θ θ̇ − ṗ_w, ẏ = −sin θ θ̇ − ṗ_f, height of B = cos θ − p_f.
+    let (vx, vy) = (c * y[3] - y[4] / k, -(s * y[3]) - y[5] / k);
+    let (fw, ff) = (y[1].max(0.0), y[2].max(0.0));
+    0.5 * (vx * vx + vy * vy) + y[3] * y[3] / 6.0 + (c - y[2] / k) + (fw * fw + ff * ff) / (2.0 * k)
 }
 
-/// The penalty model as an ODE, dimensionless: y = [x, y, θ, ẋ, ẏ, θ̇].
+/// The penalty model as an ODE, dimensionless, in force coordinates:
+/// y = [θ, f_w, f_f, θ̇, v_w, v_f] with f = κ p, v = κ ṗ (see the module docs).
 #[derive(Clone, Copy, Debug)]
 pub struct PenaltyModel {
     /// The contact parameters.
@@ -183,49 +188,40 @@ impl PenaltyModel {
 impl Ode<6> for PenaltyModel {
     fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 6]) -> [D; 6] {
         let (fw, ff) = contact_forces(&self.contact, self.law, y);
-        let (s, c) = y[2].sin_cos();
+        let (s, c) = y[0].sin_cos();
         // (m l²/3) θ̈ = l (sin θ F_f − cos θ F_w), with m = l = 1.
         let alpha = (s * ff - c * fw) * 3.0;
-        [y[3], y[4], y[5], fw, ff - 1.0, alpha]
+        let w2 = y[3] * y[3];
+        let k = self.contact.kappa;
+        // p̈_w = d²(sin θ − x)/dt² = cos θ θ̈ − sin θ θ̇² − F_w, p̈_f = −sin θ θ̈ − cos θ θ̇² − F_f + 1.
+        let wall_acc = c * alpha - s * w2 - fw;
+        let floor_acc = -(s * alpha) - c * w2 - ff + 1.0;
+        [y[3], y[4], y[5], alpha, wall_acc * k, floor_acc * k]
     }
     fn max_step(&self, y: &[f64; 6]) -> f64 {
-        event_safe_step(OMEGA2.sqrt(), y[5])
+        event_safe_step(OMEGA2.sqrt(), y[3])
     }
-    /// Absolute control in the problem's own units: positions against l, velocities against
-    /// √(g l) Ω (a relative scale would demand ever more digits of the tiny penetrations).
+    /// Absolute control in the problem's own units: θ against 1 rad, forces against m g, rates
+    /// against Ω (θ̇ in √(g/l), force rates in m g √(g/l)): the force, whose zero is the
+    /// separation, is held to the tolerance itself.
     fn scale(&self, _y: &[f64; 6]) -> [f64; 6] {
         let w = OMEGA2.sqrt();
         [1.0, 1.0, 1.0, w, w, w]
     }
 }
 
-/// The rigid model's forces (eqs. (14), (15), dimensionless) along the motion at (θ, θ̇),
-/// with their time derivatives (θ lifted to θ + θ̇ε, θ̇ to θ̇ + θ̈ε, eq. (5)).
-fn rigid_forces(theta: f64, rate: f64) -> (Dual64, Dual64) {
-    let th = Dual64::new(theta, rate);
-    let w = Dual64::new(rate, OMEGA2 * theta.sin());
-    let acc = th.sin() * OMEGA2;
-    let wall = th.cos() * acc - th.sin() * w * w;
-    let floor = -(th.sin() * acc + th.cos() * w * w) + 1.0;
-    (wall, floor)
-}
-
-/// The pre-loaded start: the rigid start (θ0, θ̇0) with each contact compressed so that its
-/// force equals the rigid model's, and compressing at the rate that keeps it so.
+/// The pre-loaded start: the rigid start (θ0, θ̇0) with the springs on the contact's slow
+/// manifold, their forces and rates those of [`slow_forces`] (κ p + γ ṗ = F, κ ṗ = Ḟ).
 pub fn preloaded_start(contact: &Contact, theta0: f64, rate0: f64) -> [f64; 6] {
-    let (fw, ff) = rigid_forces(theta0, rate0);
-    // κ p + γ ṗ = F with ṗ = Ḟ / κ.
-    let (kw, kf) = (fw.eps / contact.kappa, ff.eps / contact.kappa);
-    let pw = (fw.re - contact.gamma * kw) / contact.kappa;
-    let pf = (ff.re - contact.gamma * kf) / contact.kappa;
-    let (s, c) = theta0.sin_cos();
+    let (force, rate) = slow_forces(contact.kappa, theta0, rate0);
+    let damp = contact.gamma / contact.kappa;
     [
-        s - pw,
-        c - pf,
         theta0,
-        c * rate0 - kw,
-        -s * rate0 - kf,
+        force[0] - damp * rate[0],
+        force[1] - damp * rate[1],
         rate0,
+        rate[0],
+        rate[1],
     ]
 }
 
@@ -301,14 +297,14 @@ pub fn separate_with_ode<S: Ode<6>, St: Stepper<6>>(
     let stats = stepper.stats();
     let result = end.and_then(|e| match e.event {
         Some(0) => Ok(PenaltySeparation {
-            angle: e.y[2],
+            angle: e.y[0],
             time: e.t,
-            rate: e.y[5],
+            rate: e.y[3],
             energy_change: (energy(&model.contact, &e.y) - e0).abs(),
         }),
         Some(_) => Err(RunError::LiftOff {
             t: e.t,
-            theta: e.y[2],
+            theta: e.y[0],
         }),
         None => Err(RunError::Start(format!(
             "the wall force did not reach zero by t = {T_END} √(l/g)"
@@ -339,7 +335,7 @@ pub fn separation(
     if theta0 == 0.0 && rate0 == 0.0 {
         return fail("θ0 = θ̇0 = 0 is the equilibrium: the ladder never leaves the wall".into());
     }
-    if fw0.re < 0.0 || (fw0.re == 0.0 && theta0 > 0.0) {
+    if fw0 < 0.0 || (fw0 == 0.0 && theta0 > 0.0) {
         // The wall would have to pull at once: the ladder leaves it at t = 0.
         return PenaltyRun {
             result: Ok(PenaltySeparation {
@@ -356,5 +352,18 @@ pub fn separation(
     let Some(mut stepper) = AnyStepper::new(method, control, 0.0, y0) else {
         return fail(format!("method {method} does not take {control:?}"));
     };
-    separate_with(&model, &mut stepper, max_steps)
+    let mut run = separate_with(&model, &mut stepper, max_steps);
+    // A zero of the force is the separation only where the rigid solution's bracket agrees.
+    let tau = match control {
+        Control::Tolerance(t) => t,
+        Control::Fixed(h) => h.powi(order(method).map_or(2, |p| p as i32 + 1)),
+    };
+    if let Ok(s) = &run.result {
+        // The integration's error model: N steps of local error τ (in m g for the forces).
+        let slack = 10.0 * run.stats.steps.max(1) as f64 * tau;
+        if let Err(m) = confirm_separation(contact.kappa, s.angle, s.rate, slack) {
+            run.result = Err(RunError::Start(m));
+        }
+    }
+    run
 }

@@ -2,7 +2,7 @@
 //! feed an observer. Nothing is stored here; what is kept is the observer's business, so a run
 //! that asks for nothing but the separation keeps O(1) memory.
 
-use super::event::{brent, crosses, Event};
+use super::event::{brent, crosses, newton_in_bracket, Event};
 use super::integrators::{Ode, StepError, Stepper};
 use std::fmt;
 
@@ -142,7 +142,15 @@ pub fn integrate_phase<const N: usize, S: Ode<N>, St: Stepper<N>, O: Observer<N>
                 // rounding, so fall back to the step's values where they disagree in sign.
                 let (ia, ib) = (value_at(stepper, a), value_at(stepper, b));
                 let (fa, fb) = if ia * ib <= 0.0 { (ia, ib) } else { (fa, fb) };
-                let root = brent(|t| value_at(stepper, t), a, b, fa, fb);
+                // Newton's method where the interpolant and the event have exact derivatives
+                // (the Taylor method), else Brent's.
+                let with_rate = |t: f64| {
+                    let dy = stepper.interpolate_rate(t)?;
+                    let y = stepper.interpolate(t);
+                    Some((ev.value(t, &y), ev.rate(t, &y, &dy)?))
+                };
+                let root = newton_in_bracket(with_rate, a, b, fa, fb)
+                    .unwrap_or_else(|| brent(|t| value_at(stepper, t), a, b, fa, fb));
                 if first.is_none_or(|(r, _)| root < r) {
                     first = Some((root, i));
                 }

@@ -12,32 +12,12 @@ use super::scaled::Units;
 use super::scene_checks::{
     check_contact, check_end, check_integrator, check_outputs, check_penalty,
 };
+pub(super) use super::scene_errors::Ctx;
+pub use super::scene_errors::SceneError;
+use super::scene_shape::{check_shape, value_error};
 use serde::Deserialize;
-use std::fmt;
 use std::path::Path;
 use toml::Spanned;
-
-/// A bad scene: one line for the user.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SceneError {
-    /// The scene file as given.
-    pub file: String,
-    /// 1-based line, where the problem has one.
-    pub line: Option<usize>,
-    /// The field, as `section.key`.
-    pub field: String,
-    /// What is wrong and what is allowed.
-    pub message: String,
-}
-
-impl fmt::Display for SceneError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.line {
-            Some(l) => write!(f, "{}:{}: {}: {}", self.file, l, self.field, self.message),
-            None => write!(f, "{}: {}: {}", self.file, self.field, self.message),
-        }
-    }
-}
 
 /// Where the ladder run ends.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -148,122 +128,35 @@ pub const MAX_STEP: f64 = 1.0;
 /// Longest end time accepted, in units of √(l/g).
 pub const MAX_END_TIME: f64 = 1e4;
 
-pub(super) struct Ctx<'a> {
-    file: &'a str,
-    text: &'a str,
-}
-
-impl Ctx<'_> {
-    fn line_of(&self, pos: usize) -> usize {
-        self.text[..pos.min(self.text.len())]
-            .bytes()
-            .filter(|&b| b == b'\n')
-            .count()
-            + 1
-    }
-    pub(super) fn err(
-        &self,
-        span: Option<std::ops::Range<usize>>,
-        field: &str,
-        message: impl Into<String>,
-    ) -> SceneError {
-        SceneError {
-            file: self.file.to_string(),
-            line: span.map(|s| self.line_of(s.start)),
-            field: field.to_string(),
-            message: message.into().replace('\n', " "),
-        }
-    }
-    /// A finite number in the range `ok`, described by `allowed`.
-    pub(super) fn number(
-        &self,
-        v: &Spanned<f64>,
-        field: &str,
-        ok: impl Fn(f64) -> bool,
-        allowed: &str,
-    ) -> Result<f64, SceneError> {
-        let x = *v.get_ref();
-        let x_text = if x != 0.0 && (x.abs() < 1e-4 || x.abs() >= 1e6) {
-            format!("{x:e}")
-        } else {
-            format!("{x}")
-        };
-        if !x.is_finite() {
-            return Err(self.err(
-                Some(v.span()),
-                field,
-                format!("{x} is not a finite number; allowed: {allowed}"),
-            ));
-        }
-        if !ok(x) {
-            return Err(self.err(
-                Some(v.span()),
-                field,
-                format!("{x_text} is out of range; allowed: {allowed}"),
-            ));
-        }
-        Ok(x)
-    }
-    /// A duration given either in seconds (`keys.0`) or in units of √(l/g) = `unit` s
-    /// (`keys.1`), at most one of them; `ok` judges it in units of √(l/g). Returns it in
-    /// seconds with the span of the key that gave it.
-    pub(super) fn time_like(
-        &self,
-        seconds: Option<&Spanned<f64>>,
-        scaled: Option<&Spanned<f64>>,
-        keys: (&str, &str),
-        unit: f64,
-        ok: impl Fn(f64) -> bool,
-        allowed: &str,
-    ) -> Result<Option<(f64, std::ops::Range<usize>)>, SceneError> {
-        match (seconds, scaled) {
-            (Some(_), Some(b)) => Err(self.err(
-                Some(b.span()),
-                keys.1,
-                format!("give {} or {}, not both", keys.0, keys.1),
-            )),
-            (Some(v), None) => {
-                let x = self.number(v, keys.0, |x| ok(x / unit), allowed)?;
-                Ok(Some((x, v.span())))
-            }
-            (None, Some(v)) => {
-                let x = self.number(v, keys.1, &ok, allowed)?;
-                Ok(Some((x * unit, v.span())))
-            }
-            (None, None) => Ok(None),
-        }
-    }
-    /// The `section.key` around byte `pos` (for toml's own errors, which carry a span only).
-    fn field_at(&self, pos: usize) -> String {
-        let before = &self.text[..pos.min(self.text.len())];
-        let section = before
-            .lines()
-            .rev()
-            .find_map(|l| {
-                let l = l.trim();
-                (l.starts_with('[') && l.ends_with(']'))
-                    .then(|| l.trim_matches(|c| c == '[' || c == ']').trim().to_string())
-            })
-            .unwrap_or_default();
-        let line_start = before.rfind('\n').map_or(0, |i| i + 1);
-        let line = self.text[line_start..].lines().next().unwrap_or("");
-        let key = line.split('=').next().unwrap_or("").trim();
-        match (section.is_empty(), key.is_empty() || key.starts_with('[')) {
-            (true, _) => key.to_string(),
-            (false, true) => section,
-            (false, false) => format!("{section}.{key}"),
-        }
-    }
-}
-
 /// Read and validate the scene at `path`.
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| SceneError {
+    let whole = |message: String| SceneError {
         file: file.clone(),
         line: None,
-        field: "file".into(),
-        message: format!("cannot read the scene: {e}"),
+        field: String::new(),
+        message,
+    };
+    if path.is_dir() {
+        return Err(whole(
+            "a directory; allowed: a scene file (TOML), e.g. scenes/from-rest.toml".into(),
+        ));
+    }
+    let bytes = std::fs::read(path).map_err(|e| {
+        whole(format!(
+            "cannot read the scene: {e}; allowed: a readable scene file (TOML)"
+        ))
+    })?;
+    let text = String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let bytes = e.as_bytes();
+        SceneError {
+            line: Some(bytes[..at].iter().filter(|&&b| b == b'\n').count() + 1),
+            ..whole(format!(
+                "not UTF-8 text (byte 0x{:02x}); allowed: a UTF-8 TOML file",
+                bytes[at]
+            ))
+        }
     })?;
     parse(&file, &text)
 }
@@ -271,12 +164,8 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
 /// Validate the scene text `text` read from `file`.
 pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
     let cx = Ctx { file, text };
-    let raw: Raw = toml::from_str(text).map_err(|e| {
-        let field = e
-            .span()
-            .map_or_else(|| "scene".to_string(), |s| cx.field_at(s.start));
-        cx.err(e.span(), &field, e.message().trim().to_string())
-    })?;
+    check_shape(&cx)?;
+    let raw: Raw = toml::from_str(text).map_err(|e| value_error(&cx, &e))?;
     let l = raw.ladder.get_ref();
     // Any scale from 1e-30 to 1e30: the simulator is checked to give the same angles, times
     // scaled by √(l/g) and forces by m g over that whole range (`ladder stability`).
@@ -327,7 +216,7 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
     let (method, control) = check_integrator(&cx, raw.integrator.get_ref(), unit)?;
     let end = check_end(&cx, raw.end.get_ref(), unit)?;
     if theta0 == 0.0 && rate0 == 0.0 && !matches!(end, End::Time(_)) {
-        return Err(cx.err(Some(s.angle.span()), "start", "θ0 = 0 with θ̇0 = 0 is the equilibrium: the ladder never leaves the wall; give angle > 0 or angular_velocity > 0"));
+        return Err(cx.err(Some(s.angle.span()), "start", "θ0 = 0 with θ̇0 = 0 is the equilibrium: the ladder never leaves the wall; allowed: angle > 0 or angular_velocity > 0 (or end.at = \"time\")"));
     }
     let outputs = check_outputs(&cx, raw.outputs.get_ref(), &method, end)?;
     if let ContactModel::Penalty { .. } = contact {

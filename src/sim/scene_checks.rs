@@ -24,7 +24,7 @@ pub(super) fn check_contact(
                     return Err(cx.err(
                         Some(v.span()),
                         k,
-                        "only for contact.model = \"penalty\"; remove it for \"rigid\"",
+                        "only for model = \"penalty\"; allowed: no stiffness or damping with model = \"rigid\"",
                     ));
                 }
             }
@@ -35,7 +35,7 @@ pub(super) fn check_contact(
                 return Err(cx.err(
                     Some(c.model.span()),
                     "contact.stiffness",
-                    "the penalty model needs stiffness (N/m, > 0)",
+                    "missing; the penalty model needs it; allowed: a number > 0 (N/m)",
                 ));
             };
             let stiffness = cx.number(k, "contact.stiffness", |x| x > 0.0, "a number > 0 (N/m)")?;
@@ -87,7 +87,7 @@ pub(super) fn check_penalty(
         return Err(cx.err(
             Some(i.method.span()),
             "integrator.method",
-            "\"exact\" is the rigid model's reference; the penalty model needs an integrator (e.g. radau5)",
+            "\"exact\" is the rigid model's reference and the penalty model needs an integrator; allowed: e.g. radau5",
         ));
     }
     if method == TAYLOR {
@@ -134,17 +134,18 @@ pub(super) fn check_integrator(
 ) -> Result<(String, Option<Control>), SceneError> {
     let method = i.method.get_ref().as_str();
     if method == "exact" {
-        if let Some(v) = i
-            .tolerance
-            .as_ref()
-            .or(i.step.as_ref())
-            .or(i.scaled_step.as_ref())
-        {
-            return Err(cx.err(
-                Some(v.span()),
-                "integrator",
-                "method \"exact\" takes neither tolerance nor step",
-            ));
+        for (key, v) in [
+            ("integrator.tolerance", &i.tolerance),
+            ("integrator.step", &i.step),
+            ("integrator.scaled_step", &i.scaled_step),
+        ] {
+            if let Some(v) = v {
+                return Err(cx.err(
+                    Some(v.span()),
+                    key,
+                    "method \"exact\" takes neither tolerance nor step; allowed: method = \"exact\" alone",
+                ));
+            }
         }
         return Ok((method.into(), None));
     }
@@ -163,14 +164,14 @@ pub(super) fn check_integrator(
             return Err(cx.err(
                 Some(s.span()),
                 "integrator.step",
-                format!("\"{method}\" is adaptive: give tolerance, not step"),
+                format!("\"{method}\" is adaptive and takes no step; allowed: tolerance in [1e-16, 0.1]"),
             ));
         }
         let Some(t) = &i.tolerance else {
             return Err(cx.err(
                 Some(i.method.span()),
                 "integrator.tolerance",
-                format!("\"{method}\" needs a tolerance in [1e-16, 0.1]"),
+                format!("missing; \"{method}\" needs one; allowed: a tolerance in [1e-16, 0.1]"),
             ));
         };
         Control::Tolerance(cx.number(
@@ -184,7 +185,9 @@ pub(super) fn check_integrator(
             return Err(cx.err(
                 Some(t.span()),
                 "integrator.tolerance",
-                format!("\"{method}\" has a fixed step: give step, not tolerance"),
+                format!(
+                    "\"{method}\" has a fixed step and takes no tolerance; allowed: step (s) or scaled_step (units of √(l/g)) in [{MIN_STEP:e}, {MAX_STEP}] √(l/g)"
+                ),
             ));
         }
         let allowed = format!(
@@ -192,7 +195,7 @@ pub(super) fn check_integrator(
             MIN_STEP * unit,
             MAX_STEP * unit
         );
-        let Some((h, _)) = cx.time_like(
+        let Some((h, _, _)) = cx.time_like(
             i.step.as_ref(),
             i.scaled_step.as_ref(),
             ("integrator.step", "integrator.scaled_step"),
@@ -204,7 +207,7 @@ pub(super) fn check_integrator(
             return Err(cx.err(
                 Some(i.method.span()),
                 "integrator.step",
-                format!("\"{method}\" needs {allowed}"),
+                format!("missing; \"{method}\" needs a step; allowed: {allowed}"),
             ));
         };
         Control::Fixed(h)
@@ -239,7 +242,7 @@ pub(super) fn check_outputs(
             return Err(cx.err(
                 Some(w.span()),
                 "outputs.want",
-                format!("\"{name}\" is listed twice"),
+                format!("\"{name}\" is listed twice; allowed: each output once"),
             ));
         }
         if let Err(why) = x.producible(method, end) {
@@ -271,16 +274,16 @@ pub(super) fn check_end(cx: &Ctx, e: &RawEnd, unit: f64) -> Result<End, SceneErr
     match (e.at.get_ref().as_str(), time) {
         ("separation", None) => Ok(End::Separation),
         ("flat", None) => Ok(End::Flat),
-        ("time", Some((t, _))) => Ok(End::Time(t)),
+        ("time", Some((t, _, _))) => Ok(End::Time(t)),
         ("time", None) => Err(cx.err(
             Some(e.at.span()),
             "end.time",
-            "end.at = \"time\" needs end.time (s) or end.scaled_time (units of √(l/g))",
+            format!("missing; at = \"time\" needs it; allowed: {allowed}"),
         )),
-        ("separation" | "flat", Some((_, span))) => Err(cx.err(
+        ("separation" | "flat", Some((_, span, key))) => Err(cx.err(
             Some(span),
-            "end.time",
-            "end.time is only allowed with end.at = \"time\"",
+            key,
+            "only for at = \"time\"; allowed: no time with at = \"separation\" or \"flat\"",
         )),
         (other, _) => Err(cx.err(
             Some(e.at.span()),

@@ -10,9 +10,16 @@ use std::time::Instant;
 
 /// Run `ladder verify`; exit 0 when every equation is verified, a definition or a recorded
 /// erratum, 1 otherwise.
-pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
+pub fn verify(json_out: bool, cfg: &Config, only: Option<&str>) -> ExitCode {
     let t = Instant::now();
-    let results = verify_all(cfg);
+    let results = match only.map(|spec| super::legend::only(verify_all(cfg), spec)) {
+        None => verify_all(cfg),
+        Some(Ok(r)) => r,
+        Some(Err(msg)) => {
+            eprintln!("ladder verify: {msg}");
+            return ExitCode::from(2);
+        }
+    };
     let docs = crate::docs::check_book(&crate::docs::default_dir());
     let methods = crate::verify::check_methods(cfg);
     let extensions = crate::verify::verify_extensions(cfg);
@@ -42,6 +49,8 @@ pub fn verify(json_out: bool, cfg: &Config) -> ExitCode {
         println!(
             "print: {pd} of {nd} displays parsed in full, {pf} of {nf} printed forms parsed and checked, {pm} displays with every Rust form matching the print (equations/symbols.toml)"
         );
+        print!("{}", super::legend::legend(cfg));
+        print!("{}", super::legend::law_lines(&results));
         println!("beyond the note: the floor phase after the ladder leaves the wall (equations/phase2.md)");
         print!(
             "{}",

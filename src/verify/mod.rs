@@ -3,6 +3,7 @@
 pub mod claims;
 pub mod command;
 pub mod errata;
+pub mod legend;
 pub mod proof;
 pub mod units;
 

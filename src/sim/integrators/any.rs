@@ -89,6 +89,9 @@ impl<const N: usize> Stepper<N> for AnyStepper<N> {
     fn interpolate(&self, t: f64) -> [f64; N] {
         each!(self, s => s.interpolate(t))
     }
+    fn interpolate_rate(&self, t: f64) -> Option<[f64; N]> {
+        each!(self, s => s.interpolate_rate(t))
+    }
     fn restart(&mut self, t: f64, y: [f64; N]) {
         each!(self, s => s.restart(t, y))
     }

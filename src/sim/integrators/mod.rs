@@ -140,6 +140,11 @@ pub trait Stepper<const N: usize> {
     fn prepare_dense<S: Ode<N>>(&mut self, sys: &S);
     /// The interpolant at `t` in `[t_prev, t]` (call [`Stepper::prepare_dense`] first).
     fn interpolate(&self, t: f64) -> [f64; N];
+    /// The time derivative of the interpolant at `t`, when the method has it exactly (the
+    /// Taylor method: its step's polynomial); events are then refined by Newton's method.
+    fn interpolate_rate(&self, _t: f64) -> Option<[f64; N]> {
+        None
+    }
     /// Start again at `(t, y)` (after an event ends a phase).
     fn restart(&mut self, t: f64, y: [f64; N]);
     /// Counters so far.

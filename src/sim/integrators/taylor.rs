@@ -90,7 +90,7 @@ pub fn sin_cos_coefficient<S: Scalar>(inv_k: &S, d: &[S], sin: &[S], cos: &[S]) 
     (s * inv_k.clone(), -(c * inv_k.clone()))
 }
 
-/// Taylor coefficients of the wall phase, eq. (5) θ̈ = ω² sin θ, to order p = `theta.len() − 1`.
+/// Taylor coefficients of the wall phase, eq. (5) θ̈ = Ω² sin θ, to order p = `theta.len() − 1`.
 ///
 /// On entry `theta[0]`, `rate[0]`, `sin[0] = sin θ0`, `cos[0] = cos θ0` hold the start; on return
 /// every slice holds its series to order p. `inv[k] = 1/k` for k ≤ p.
@@ -376,6 +376,19 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
         let tau = t - self.t_prev;
         let p = self.series.order;
         std::array::from_fn(|i| horner(&self.series.y[i][..=p], tau))
+    }
+
+    fn interpolate_rate(&self, t: f64) -> Option<[f64; N]> {
+        let tau = t - self.t_prev;
+        let p = self.series.order;
+        Some(std::array::from_fn(|i| {
+            let c = &self.series.y[i];
+            let mut acc = 0.0;
+            for k in (1..=p).rev() {
+                acc = acc * tau + k as f64 * c[k];
+            }
+            acc
+        }))
     }
 
     fn restart(&mut self, t: f64, y: [f64; N]) {

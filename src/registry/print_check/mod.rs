@@ -1,0 +1,293 @@
+//! The print as the thing checked: every display's LaTeX parsed ([`crate::print`]), each chain of
+//! printed forms evaluated on the registry's own samples and held equal with the registry's own
+//! verdicts (float within the running error bound, exact with zero residual), and every Rust
+//! form's value held against the parsed forms.
+//!
+//! Per display: statements become chains; Milne's statement k joins our statement k (his names
+//! denote our quantities, so every form must agree); `X = \text{const}` is checked as
+//! d/dt X = 0; a premise and its conclusion (`\Rightarrow`) are both checked on the registry's
+//! sample, which is drawn so that the premise holds; an evaluation bar `|_{a=b}` adds the chain
+//! a = b (the sample must satisfy it). A form recorded as a misprint ([`MISPRINTS`]) must differ.
+
+use super::{Chain, Equation, Role, Side};
+use crate::print::ast::{Chain as PChain, Expr};
+use crate::print::eval::{evaluate, Ctx};
+use crate::print::quantity::{Model, Value};
+use crate::print::symbols::{table, Entry};
+use crate::scalar::Scalar;
+use serde::Serialize;
+
+/// Misprinted forms (display, the form's LaTeX as printed): they must fail against the chain.
+/// Each is one side of a recorded erratum (`Equation::erratum`), tested in `tests/print.rs`.
+pub const MISPRINTS: &[(u32, &str)] = &[
+    (28, r"\tau_E - F_{E,y} l \sin \theta"),
+    (
+        49,
+        r"\frac{m l^2 \dot{\theta}}{3} \hat{\mathbf{z}} + l^2 \dot{\theta} (\cos^2 \theta - \sin^2 \theta) \hat{\mathbf{z}}",
+    ),
+    (54, r"\frac{4m l^2 \dot{\theta}^2}{3}"),
+    (
+        62,
+        r"m l g \sin \theta - m l \sin^2 \theta \ddot{\theta} - m l \cos \theta \sin \theta \dot{\theta}^2",
+    ),
+    (68, r"\sum \mathbf{r} \wedge \ddot{\mathbf{r}}"),
+];
+
+/// Displays that continue the previous one: (57) begins with `=`, continuing (56)'s chain from
+/// its last form.
+pub const CONTINUATIONS: &[(u32, &str)] = &[(57, r"\boldsymbol{\tau}_P ")];
+
+const LABELS: [&str; 24] = [
+    "form 1", "form 2", "form 3", "form 4", "form 5", "form 6", "form 7", "form 8", "form 9",
+    "form 10", "form 11", "form 12", "form 13", "form 14", "form 15", "form 16", "form 17",
+    "form 18", "form 19", "form 20", "form 21", "form 22", "form 23", "form 24",
+];
+
+/// One printed form in a chain to check.
+#[derive(Clone, Debug)]
+pub struct Form {
+    /// The parsed form.
+    pub expr: Expr,
+    /// Its printed LaTeX (canonical, spaces dropped).
+    pub text: String,
+    /// Printed (must equal the chain) or misprint (must differ).
+    pub role: Role,
+    /// In Milne's notation.
+    pub milne: bool,
+}
+
+/// What the print of one display gave.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct PrintReport {
+    /// Forms in the print (every side of every chain).
+    pub forms: usize,
+    /// Forms parsed and evaluated.
+    pub parsed: usize,
+    /// Forms held against another form (chains of two or more).
+    pub checked: usize,
+    /// Why a form or the display could not be parsed or evaluated.
+    pub unparsed: Vec<String>,
+    /// Chains that failed: the form, the residual.
+    pub problems: Vec<String>,
+    /// Every Rust printed/misprint form equals some parsed printed form (exactly).
+    pub matches_code: bool,
+    /// Rust forms that equal no parsed form.
+    pub code_mismatches: Vec<String>,
+}
+
+/// The chains of a display's print, ready to evaluate.
+pub fn print_chains(number: u32, latex: &str) -> Result<(usize, Vec<Vec<Form>>), String> {
+    print_chains_with(number, latex, MISPRINTS)
+}
+
+/// [`print_chains`] with a given list of misprinted forms.
+pub fn print_chains_with(
+    number: u32,
+    latex: &str,
+    misprint_list: &[(u32, &str)],
+) -> Result<(usize, Vec<Vec<Form>>), String> {
+    let src = match CONTINUATIONS.iter().find(|c| c.0 == number) {
+        Some((_, prefix)) => format!("{prefix}{latex}"),
+        None => latex.to_string(),
+    };
+    let d = crate::print::parser::parse_display(&src)?;
+    let misprints: Vec<String> = misprint_list
+        .iter()
+        .filter(|m| m.0 == number)
+        .filter_map(|m| crate::print::parser::canonical(m.1).ok())
+        .collect();
+    let forms = |c: &PChain, milne: bool| -> Vec<Form> {
+        c.forms
+            .iter()
+            .zip(&c.texts)
+            .map(|(e, t)| Form {
+                expr: e.clone(),
+                text: t.clone(),
+                role: if misprints.contains(t) {
+                    Role::Misprint
+                } else {
+                    Role::Printed
+                },
+                milne,
+            })
+            .collect()
+    };
+    let mut ours: Vec<Vec<Form>> = Vec::new();
+    let mut milne_k = 0;
+    let mut count = d.form_count();
+    if number == 57 {
+        count -= 1; // the continued form belongs to (56)
+    }
+    for st in &d.statements {
+        let mut chain = forms(&st.chain, st.milne);
+        let mut extra = Vec::new();
+        if let Some(concl) = &st.implies {
+            extra.push(constant(forms(concl, st.milne)));
+        }
+        chain = constant(chain);
+        for f in chain.iter() {
+            conditions(&f.expr, f.milne, &mut extra);
+        }
+        if st.milne && milne_k < ours.len() {
+            ours[milne_k].extend(chain);
+            milne_k += 1;
+        } else {
+            ours.push(chain);
+        }
+        ours.extend(extra);
+    }
+    Ok((count, ours))
+}
+
+/// `X = \text{const}` → d/dt X = 0.
+fn constant(chain: Vec<Form>) -> Vec<Form> {
+    if chain.len() == 2 && chain[1].expr == Expr::Const {
+        let mut c = chain;
+        c[0].expr = Expr::Deriv(Box::new(c[0].expr.clone()));
+        c[1].expr = Expr::Int(0);
+        c
+    } else {
+        chain
+    }
+}
+
+/// The chains a = b of every evaluation bar in a form.
+fn conditions(e: &Expr, milne: bool, out: &mut Vec<Vec<Form>>) {
+    use Expr::*;
+    match e {
+        At(a, conds) => {
+            out.push(
+                conds
+                    .iter()
+                    .map(|c| Form {
+                        expr: c.clone(),
+                        text: "evaluation condition".into(),
+                        role: Role::Printed,
+                        milne,
+                    })
+                    .collect(),
+            );
+            conditions(a, milne, out);
+        }
+        Neg(a) | Pow(a, _) | Sin(a) | Cos(a) | Sum(a) | Deriv(a) | Partial(a, _) | ZComp(a) => {
+            conditions(a, milne, out)
+        }
+        Add(a, b) | Sub(a, b) | Mul(a, b) | Div(a, b) | Cross(a, b) => {
+            conditions(a, milne, out);
+            conditions(b, milne, out);
+        }
+        Tuple(v) => v.iter().for_each(|x| conditions(x, milne, out)),
+        Int(_) | Sym(_) | Const => {}
+    }
+}
+
+fn ctx<'t, S: Scalar>(
+    e: &'t Equation,
+    model: &std::rc::Rc<Model<S>>,
+    milne: bool,
+    index: Option<usize>,
+    table: &'t [Entry],
+) -> Ctx<'t, S> {
+    Ctx {
+        model: model.clone(),
+        section: e.section,
+        number: e.number,
+        milne,
+        index,
+        table,
+    }
+}
+
+/// Evaluate chains into component chains (scalars against vectors: a literal 0 is the zero vector).
+pub(crate) fn evaluate_chains<S: Scalar>(
+    e: &Equation,
+    chains: &[Vec<Form>],
+    model: Model<S>,
+    index: Option<usize>,
+) -> Result<Vec<Chain<S>>, String> {
+    let t = table();
+    let model = std::rc::Rc::new(model);
+    let mut out = Vec::new();
+    for (ci, chain) in chains.iter().enumerate() {
+        let mut vals = Vec::new();
+        for f in chain {
+            let v = evaluate(&f.expr, &ctx(e, &model, f.milne, index, t))
+                .map_err(|err| format!("'{}': {err}", f.text))?;
+            vals.push(v);
+        }
+        let width = vals.iter().map(|v| v.components().len()).max().unwrap_or(1);
+        let comps: Vec<Vec<S>> = vals
+            .iter()
+            .map(|v| match v {
+                Value::Scalar(x) if width == 3 => vec![x.clone(), x.clone(), x.clone()],
+                _ => v.components(),
+            })
+            .collect();
+        for k in 0..width {
+            out.push(
+                chain
+                    .iter()
+                    .zip(&comps)
+                    .enumerate()
+                    .map(|(j, (f, c))| Side {
+                        label: LABELS[(chain_offset(chains, ci) + j).min(LABELS.len() - 1)],
+                        value: c[k].clone(),
+                        role: f.role,
+                    })
+                    .collect(),
+            );
+        }
+    }
+    Ok(out)
+}
+
+/// The additive terms of a form (so a Rust side may name one term of a printed sum, like
+/// Milne's v' in v = V + v').
+fn terms(e: &Expr, out: &mut Vec<Expr>) {
+    match e {
+        Expr::Add(a, b) | Expr::Sub(a, b) => {
+            terms(a, out);
+            terms(b, out);
+        }
+        _ => out.push(e.clone()),
+    }
+}
+
+/// The chains of every form's additive terms (each term alone), for matching Rust forms.
+pub(crate) fn term_chains(chains: &[Vec<Form>]) -> Vec<Vec<Form>> {
+    chains
+        .iter()
+        .flatten()
+        .map(|f| {
+            let mut t = Vec::new();
+            terms(&f.expr, &mut t);
+            t.into_iter()
+                .map(|expr| Form {
+                    expr,
+                    text: f.text.clone(),
+                    role: Role::Printed,
+                    milne: f.milne,
+                })
+                .collect()
+        })
+        .collect()
+}
+
+fn chain_offset(chains: &[Vec<Form>], ci: usize) -> usize {
+    chains[..ci].iter().map(Vec::len).sum()
+}
+
+/// The form a label names.
+pub(crate) fn form_text<'a>(chains: &'a [Vec<Form>], label: &str) -> &'a str {
+    let k: usize = label.trim_start_matches("form ").parse().unwrap_or(1);
+    chains
+        .iter()
+        .flatten()
+        .nth(k - 1)
+        .map_or("?", |f| f.text.as_str())
+}
+
+mod inject;
+mod run;
+pub use inject::{injections, run_injection, Injection, Outcome, Typo};
+pub use run::{check_print, check_print_with, PRINT_EXACT_POINTS, PRINT_FLOAT_CASES};

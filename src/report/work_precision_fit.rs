@@ -1,0 +1,316 @@
+//! The judgement half of work-precision: the observed order, fitted only where it means
+//! something, and the Pareto front. Kept apart from the measuring half so both can be tested on
+//! made-up runs.
+//!
+//! **Fitting rule for the observed order** (stated once, applied to every method and scene):
+//! of a method's runs, sorted by rhs evaluations, keep those whose error is
+//! 1. above the rounding floor: error ≥ floor = min([`FLOOR`], [`ROUNDING_MARGIN`] × the rounding
+//!    level), where the rounding level is the median error of the method's [`ROUNDING_RUNS`]
+//!    most accurate runs. [`FLOOR`] = 1e-13 (about 500 u) is the floor a sweep is held to when it
+//!    does not show where its rounding lies; a sweep whose tightest runs reach a lower level shows
+//!    it, and above ten times that level rounding changes ln(error) by at most ~0.1 (the exact
+//!    reference itself is good to 2 ulps). A sweep that never reaches rounding keeps 1e-13.
+//! 2. in the asymptotic regime: error ≤ [`ASYMPTOTIC`] = 1e-4 (the leading error term dominates;
+//!    looser tolerances also meet the event-safe step limit, so work stops following tolerance),
+//! 3. bought by the tolerance: no other run of the method costs exactly as many rhs evaluations
+//!    (several tolerances with the same work all measured the step limit, not the method: the
+//!    loosest of them is as step-limited as the rest), and its rhs evaluations are strictly above
+//!    those of the last kept run;
+//!
+//! and fit −ln(error) = q ln(rhs evaluations) + c by least squares over at least three such runs.
+//! The report gives q with the range used (rhs evaluations and errors, number of runs, floor).
+
+use serde::Serialize;
+
+/// Smallest error used in the order fit.
+pub const FLOOR: f64 = 1e-13;
+/// Largest error used in the order fit.
+pub const ASYMPTOTIC: f64 = 1e-4;
+/// How far above the measured rounding level the fit starts.
+pub const ROUNDING_MARGIN: f64 = 10.0;
+/// How many of the most accurate runs measure the rounding level.
+pub const ROUNDING_RUNS: usize = 3;
+
+/// A point of a work-precision diagram: work (rhs evaluations), time and error.
+pub trait Point {
+    /// Method name.
+    fn method(&self) -> &str;
+    /// Right-hand-side evaluations.
+    fn rhs_evals(&self) -> u64;
+    /// Median seconds per solve.
+    fn seconds(&self) -> f64;
+    /// The error judged (the worse of the scene's error measures).
+    fn error(&self) -> f64;
+}
+
+/// An observed order and the range it was fitted on.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct OrderFit {
+    /// The fitted slope q of −ln(error) against ln(rhs evaluations).
+    pub order: f64,
+    /// Runs used.
+    pub runs: usize,
+    /// (fewest, most) rhs evaluations of the runs used.
+    pub rhs_range: (u64, u64),
+    /// (largest, smallest) error of the runs used.
+    pub error_range: (f64, f64),
+    /// The rounding floor the rule used (rule 1).
+    pub floor: f64,
+}
+
+/// The rounding floor of rule 1 for `method`'s runs: min(FLOOR, margin × median error of the
+/// most accurate runs), that median taken as at least 2 ε (the reference's accuracy).
+pub fn rounding_floor<P: Point>(runs: &[P], method: &str) -> f64 {
+    let mut errs: Vec<f64> = runs
+        .iter()
+        .filter(|r| r.method() == method && r.error().is_finite())
+        .map(|r| r.error())
+        .collect();
+    if errs.len() < ROUNDING_RUNS {
+        return FLOOR;
+    }
+    errs.sort_by(f64::total_cmp);
+    // An error below the reference's own 2 ulps is a lucky rounding, not a level.
+    let level = errs[ROUNDING_RUNS / 2].max(2.0 * f64::EPSILON);
+    FLOOR.min(ROUNDING_MARGIN * level)
+}
+
+/// The runs of `method` that the fitting rule keeps, in order of work.
+pub fn fit_range<'a, P: Point>(runs: &'a [P], method: &str) -> Vec<&'a P> {
+    let floor = rounding_floor(runs, method);
+    let mut mine: Vec<&P> = runs.iter().filter(|r| r.method() == method).collect();
+    mine.sort_by_key(|r| r.rhs_evals());
+    let tied = |r: &P| {
+        mine.iter()
+            .filter(|q| q.rhs_evals() == r.rhs_evals())
+            .count()
+            > 1
+    };
+    let mut kept: Vec<&P> = Vec::new();
+    for &r in &mine {
+        let e = r.error();
+        if !(floor..=ASYMPTOTIC).contains(&e) || tied(r) {
+            continue;
+        }
+        if kept.last().is_some_and(|k| r.rhs_evals() <= k.rhs_evals()) {
+            continue;
+        }
+        kept.push(r);
+    }
+    kept
+}
+
+/// The observed order of `method` by the fitting rule (module docs), or None with fewer than
+/// three runs in range.
+pub fn observed_order<P: Point>(runs: &[P], method: &str) -> Option<OrderFit> {
+    let kept = fit_range(runs, method);
+    if kept.len() < 3 {
+        return None;
+    }
+    let pts: Vec<(f64, f64)> = kept
+        .iter()
+        .map(|r| ((r.rhs_evals() as f64).ln(), -r.error().ln()))
+        .collect();
+    let n = pts.len() as f64;
+    let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
+    let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    (sxx > 0.0).then(|| OrderFit {
+        order: sxy / sxx,
+        runs: kept.len(),
+        rhs_range: (kept[0].rhs_evals(), kept[kept.len() - 1].rhs_evals()),
+        error_range: (kept[0].error(), kept[kept.len() - 1].error()),
+        floor: rounding_floor(runs, method),
+    })
+}
+
+/// Whether `q` dominates `r`: no slower and no less accurate, and better in at least one.
+pub fn dominates<P: Point>(q: &P, r: &P) -> bool {
+    let (qs, rs, qe, re) = (q.seconds(), r.seconds(), q.error(), r.error());
+    qs <= rs && qe <= re && (qs < rs || qe < re)
+}
+
+/// The Pareto front of run time against error: every run that no other run dominates (runs
+/// equal in both stay, neither dominates the other), fastest first.
+pub fn pareto<P: Point>(runs: &[P]) -> Vec<&P> {
+    let mut front: Vec<&P> = runs
+        .iter()
+        .filter(|r| !runs.iter().any(|q| dominates(q, *r)))
+        .collect();
+    front.sort_by(|a, b| a.seconds().total_cmp(&b.seconds()));
+    front
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[derive(Debug, PartialEq)]
+    struct P(&'static str, u64, f64, f64);
+    impl Point for P {
+        fn method(&self) -> &str {
+            self.0
+        }
+        fn rhs_evals(&self) -> u64 {
+            self.1
+        }
+        fn seconds(&self) -> f64 {
+            self.2
+        }
+        fn error(&self) -> f64 {
+            self.3
+        }
+    }
+
+    /// A method of order 8 on its asymptotic range, with a floor and a step-limited start.
+    fn order_eight() -> Vec<P> {
+        let mut v: Vec<P> = (0..6)
+            .map(|k| {
+                let n = 100.0 * 2f64.powi(k);
+                P("m", n as u64, n * 1e-8, 1e-3 * (100.0 / n).powi(8))
+            })
+            .collect();
+        // Rounding floor at tighter tolerances, and loose runs with the same work.
+        v.push(P("m", 10_000, 1e-4, 2e-16));
+        v.push(P("m", 100, 1e-6, 5e-3));
+        v.push(P("m", 90, 1e-6, 2e-2));
+        v.push(P("m", 200, 2e-6, 3.9e-6));
+        for (n, e) in [
+            (5000, 3e-16),
+            (7000, 2e-16),
+            (14_000, 2e-16),
+            (20_000, 3e-16),
+        ] {
+            v.push(P("m", n, n as f64 * 1e-8, e));
+        }
+        v
+    }
+
+    #[test]
+    fn the_order_fit_uses_the_asymptotic_range_only() {
+        let runs = order_eight();
+        let fit = observed_order(&runs, "m").unwrap();
+        assert!((fit.order - 8.0).abs() < 1e-9, "{fit:?}");
+        assert!(fit.error_range.1 >= FLOOR && fit.error_range.0 <= ASYMPTOTIC);
+        // Without the rule (all runs) the slope is far from 8: the rule matters.
+        let all: Vec<(f64, f64)> = runs
+            .iter()
+            .map(|r| ((r.1 as f64).ln(), -r.3.ln()))
+            .collect();
+        let n = all.len() as f64;
+        let mx = all.iter().map(|p| p.0).sum::<f64>() / n;
+        let my = all.iter().map(|p| p.1).sum::<f64>() / n;
+        let naive = all.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>()
+            / all.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
+        assert!((naive - 8.0).abs() > 1.0, "naive {naive}");
+        assert!(observed_order(&runs[..2], "m").is_none());
+        // The tied loose runs (rhs 100 and 200) are out, and the floor came from the sweep.
+        assert_eq!((fit.runs, fit.rhs_range), (3, (400, 1600)), "{fit:?}");
+        assert_eq!(fit.floor, ROUNDING_MARGIN * 2.0 * f64::EPSILON);
+    }
+
+    /// Order 8 from 100 to 3200 rhs (errors 1e-3 .. 8.7e-16), plus `extra`.
+    fn clean_eight(extra: &[(u64, f64)]) -> Vec<P> {
+        let mut v: Vec<P> = (0..6)
+            .map(|k| {
+                let n = 100.0 * 2f64.powi(k);
+                P("m", n as u64, 0.0, 1e-3 * (100.0 / n).powi(8))
+            })
+            .collect();
+        v.extend(extra.iter().map(|&(n, e)| P("m", n, 0.0, e)));
+        v
+    }
+
+    #[test]
+    fn every_run_of_a_work_tie_is_step_limited() {
+        // A step-limited plateau: three loose tolerances cost 90 rhs each and err 1e-8 (far
+        // below the order-8 line at 90 rhs: the capped steps, not the tolerance, set it).
+        let runs = clean_eight(&[(90, 1e-8), (90, 1.1e-8), (90, 1.2e-8)]);
+        let fit = observed_order(&runs, "m").unwrap();
+        assert!((fit.order - 8.0).abs() < 1e-9, "{fit:?}");
+        // Keeping the loosest of the tie (the old rule 3) bends the slope by more than 1.
+        let mut with_first: Vec<&P> = vec![&runs[6]];
+        with_first.extend(fit_range(&runs, "m"));
+        let pts: Vec<(f64, f64)> = with_first
+            .iter()
+            .map(|r| ((r.1 as f64).ln(), -r.3.ln()))
+            .collect();
+        let n = pts.len() as f64;
+        let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
+        let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
+        let q = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>()
+            / pts.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
+        assert!((q - 8.0).abs() > 1.0, "with the tie's first run: {q}");
+    }
+
+    #[test]
+    fn the_floor_is_the_sweeps_own_rounding_level_but_never_above_1e_13() {
+        // On the line at 2000 rhs the error is 3.9e-14: below 1e-13, above this sweep's floor.
+        let at_2000 = 1e-3 * (100.0f64 / 2000.0).powi(8);
+        // Tightest runs at 1e-15 (rounding): floor 1e-14, so the 2000-rhs run is fitted...
+        let low = clean_eight(&[
+            (2000, at_2000),
+            (6400, 1e-15),
+            (12_800, 1e-15),
+            (25_600, 1.2e-15),
+        ]);
+        assert!((rounding_floor(&low, "m") / 1e-14 - 1.0).abs() < 1e-12);
+        let fit = observed_order(&low, "m").unwrap();
+        assert_eq!(fit.rhs_range, (200, 2000), "{fit:?}");
+        assert!((fit.order - 8.0).abs() < 1e-9, "{fit:?}");
+        // ...while a sweep that does not show its rounding level is held to 1e-13 and is not.
+        let held = clean_eight(&[(2000, at_2000)]);
+        assert_eq!(rounding_floor(&held, "m"), FLOOR);
+        assert_eq!(observed_order(&held, "m").unwrap().rhs_range, (200, 1600));
+        // A sweep that never reaches rounding (smallest error 6e-11) keeps FLOOR = 1e-13.
+        let high: Vec<P> = clean_eight(&[]).into_iter().take(4).collect();
+        assert_eq!(rounding_floor(&high, "m"), FLOOR);
+        // Exact zeros (lucky roundings) do not pull the floor below 10 × 2 ε.
+        let zeros = clean_eight(&[(6400, 0.0), (12_800, 0.0), (25_600, 0.0)]);
+        assert_eq!(
+            rounding_floor(&zeros, "m"),
+            ROUNDING_MARGIN * 2.0 * f64::EPSILON
+        );
+        // Without the floor the rounding-level runs would be fitted: slope far from 8.
+        let mut all: Vec<&P> = fit_range(&low, "m");
+        all.extend(low[7..].iter());
+        let pts: Vec<(f64, f64)> = all.iter().map(|r| ((r.1 as f64).ln(), -r.3.ln())).collect();
+        let n = pts.len() as f64;
+        let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
+        let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
+        let q = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>()
+            / pts.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
+        assert!((q - 8.0).abs() > 1.0, "with rounding-level runs: {q}");
+    }
+
+    #[test]
+    fn no_listed_point_is_dominated_and_every_other_is() {
+        let runs = vec![
+            P("a", 1, 1.0, 1e-4),
+            P("a", 1, 1.0, 1e-7), // same time, better: dominates the one above
+            P("b", 1, 2.0, 1e-7), // slower, same error: dominated
+            P("b", 1, 3.0, 1e-9),
+            P("c", 1, 3.0, 1e-9), // an exact tie: both stay
+            P("c", 1, 0.5, 1e-3),
+            P("d", 1, 4.0, 1e-8), // dominated by (3.0, 1e-9)
+        ];
+        let front = pareto(&runs);
+        for r in &front {
+            assert!(!runs.iter().any(|q| dominates(q, *r)), "{r:?} is dominated");
+        }
+        for r in &runs {
+            if !front.contains(&r) {
+                assert!(runs.iter().any(|q| dominates(q, r)), "{r:?} left out");
+            }
+        }
+        let listed: Vec<(f64, f64)> = front.iter().map(|r| (r.2, r.3)).collect();
+        assert_eq!(listed, [(0.5, 1e-3), (1.0, 1e-7), (3.0, 1e-9), (3.0, 1e-9)]);
+        // The old rule (strictly better in both) kept the tied-time point: show it differs.
+        let strict: Vec<&P> = runs
+            .iter()
+            .filter(|r| !runs.iter().any(|q| q.2 < r.2 && q.3 < r.3))
+            .collect();
+        assert!(strict.len() > front.len());
+    }
+}

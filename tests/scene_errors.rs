@@ -1,0 +1,241 @@
+//! Every kind of bad scene, each with its exact message (issue 11, item 4): one line
+//! `file:line: [section] key: what is wrong; what is allowed`. The expected lines are written
+//! here by hand from the scene text (line numbers counted in `BASE`); the command-line side
+//! (exit 2, nothing on stdout or in `--out`) is held in `cli_scene_errors.rs`.
+
+use sliding_ladder::sim::output::Output;
+use sliding_ladder::sim::scene::{load, parse};
+
+/// The valid scene the cases edit. Lines: 1 [ladder], 2 mass, 3 half_length, 4 gravity,
+/// 5 [start], 6 angle, 7 angular_velocity, 8 [contact], 9 model, 10 [integrator], 11 method,
+/// 12 tolerance, 13 [end], 14 at, 15 [outputs], 16 want.
+const BASE: &str = "[ladder]
+mass = 1.0
+half_length = 1.0
+gravity = 9.81
+[start]
+angle = 0.3
+angular_velocity = 0.0
+[contact]
+model = \"rigid\"
+[integrator]
+method = \"dop853\"
+tolerance = 1e-12
+[end]
+at = \"separation\"
+[outputs]
+want = [\"separation_angle\", \"trajectory\"]
+";
+
+fn with(old: &str, new: &str) -> String {
+    assert!(BASE.contains(old), "{old} not in the base scene");
+    BASE.replacen(old, new, 1)
+}
+
+const LADDER_RANGE: &str = "a number > 0 (kg) in [1e-30, 1e30]";
+
+/// (kind, scene text, the exact message).
+fn cases() -> Vec<(&'static str, String, String)> {
+    let s = |x: &str| x.to_string();
+    vec![
+        (
+            "missing section",
+            with("[contact]\nmodel = \"rigid\"\n", ""),
+            s("scene.toml:8: [contact]: missing section, expected before [integrator]; allowed: a [contact] section with model, stiffness, damping"),
+        ),
+        (
+            "missing last section",
+            BASE.replace("[outputs]\nwant = [\"separation_angle\", \"trajectory\"]\n", ""),
+            s("scene.toml:15: [outputs]: missing section; allowed: a [outputs] section with want"),
+        ),
+        (
+            "key in the wrong section",
+            with("gravity = 9.81", "gravity = 9.81\ntolerance = 1e-9"),
+            s("scene.toml:5: [ladder] tolerance: belongs in [integrator], not [ladder]; allowed in [ladder]: mass, half_length, gravity"),
+        ),
+        (
+            "missing key",
+            with("at = \"separation\"", "time = 2.0"),
+            s("scene.toml:13: [end] at: missing key; allowed: a [end] section with at, time, scaled_time"),
+        ),
+        (
+            "unknown key",
+            with("gravity = 9.81", "gravity = 9.81\ncolour = 1"),
+            s("scene.toml:5: [ladder] colour: unknown key; allowed in [ladder]: mass, half_length, gravity"),
+        ),
+        (
+            "unknown section",
+            format!("{BASE}[wind]\nspeed = 3\n"),
+            s("scene.toml:17: [wind]: unknown section; allowed: [ladder], [start], [contact], [integrator], [end], [outputs]"),
+        ),
+        (
+            "key outside any section",
+            format!("tolerance = 1e-9\n{BASE}"),
+            s("scene.toml:1: tolerance: outside any section; allowed: under [integrator]"),
+        ),
+        (
+            "wrong type",
+            with("mass = 1.0", "mass = \"heavy\""),
+            s("scene.toml:2: [ladder] mass: wrong type: string \"heavy\"; allowed: a number"),
+        ),
+        (
+            "out of range",
+            with("mass = 1.0", "mass = 0.0"),
+            format!("scene.toml:2: [ladder] mass: 0 is out of range; allowed: {LADDER_RANGE}"),
+        ),
+        (
+            "too large",
+            with("mass = 1.0", "mass = 1e31"),
+            format!("scene.toml:2: [ladder] mass: 1e31 is out of range; allowed: {LADDER_RANGE}"),
+        ),
+        (
+            "nan",
+            with("mass = 1.0", "mass = nan"),
+            format!("scene.toml:2: [ladder] mass: NaN is not a finite number; allowed: {LADDER_RANGE}"),
+        ),
+        (
+            "inf",
+            with("gravity = 9.81", "gravity = inf"),
+            s("scene.toml:4: [ladder] gravity: inf is not a finite number; allowed: a number > 0 (m/s²) in [1e-30, 1e30]"),
+        ),
+        (
+            "unknown output",
+            with("\"trajectory\"]", "\"colour\"]"),
+            format!("scene.toml:16: [outputs] want: unknown output \"colour\"; allowed: {}", Output::names()),
+        ),
+        (
+            "empty want",
+            with("want = [\"separation_angle\", \"trajectory\"]", "want = []"),
+            format!("scene.toml:16: [outputs] want: empty; allowed: {}", Output::names()),
+        ),
+        (
+            "output twice",
+            with("\"trajectory\"]", "\"separation_angle\"]"),
+            s("scene.toml:16: [outputs] want: \"separation_angle\" is listed twice; allowed: each output once"),
+        ),
+        (
+            "unknown method",
+            with("method = \"dop853\"", "method = \"rk45\""),
+            s("scene.toml:11: [integrator] method: unknown method \"rk45\"; allowed: euler, symplectic-euler, verlet, rk4, dopri5, dop853, radau5, taylor, exact"),
+        ),
+        (
+            "duplicate key",
+            with("mass = 1.0", "mass = 1.0\nmass = 2.0"),
+            s("scene.toml:3: [ladder] mass: given twice; allowed: each key and each section once"),
+        ),
+        (
+            "duplicate section",
+            format!("{BASE}[ladder]\nmass = 2.0\n"),
+            s("scene.toml:17: [ladder]: given twice; allowed: each key and each section once"),
+        ),
+        (
+            "empty file",
+            s(" \n\n"),
+            s("scene.toml:1: empty file; allowed: a scene with the sections [ladder], [start], [contact], [integrator], [end], [outputs]"),
+        ),
+        (
+            "tolerance for a fixed-step method",
+            with("method = \"dop853\"", "method = \"rk4\""),
+            s("scene.toml:12: [integrator] tolerance: \"rk4\" has a fixed step and takes no tolerance; allowed: step (s) or scaled_step (units of √(l/g)) in [1e-6, 1] √(l/g)"),
+        ),
+        (
+            "tolerance for the exact method",
+            with("method = \"dop853\"", "method = \"exact\""),
+            s("scene.toml:12: [integrator] tolerance: method \"exact\" takes neither tolerance nor step; allowed: method = \"exact\" alone"),
+        ),
+        (
+            "step for an adaptive method",
+            with("tolerance = 1e-12", "step = 1e-3"),
+            s("scene.toml:12: [integrator] step: \"dop853\" is adaptive and takes no step; allowed: tolerance in [1e-16, 0.1]"),
+        ),
+        (
+            "missing tolerance",
+            with("tolerance = 1e-12\n", ""),
+            s("scene.toml:11: [integrator] tolerance: missing; \"dop853\" needs one; allowed: a tolerance in [1e-16, 0.1]"),
+        ),
+        (
+            "tolerance out of range",
+            with("tolerance = 1e-12", "tolerance = 1e-30"),
+            s("scene.toml:12: [integrator] tolerance: 1e-30 is out of range; allowed: a tolerance in [1e-16, 0.1]"),
+        ),
+        (
+            "step and scaled step",
+            with("method = \"dop853\"\ntolerance = 1e-12", "method = \"rk4\"\nstep = 1e-3\nscaled_step = 1e-3"),
+            s("scene.toml:13: [integrator] scaled_step: given together with step; allowed: one of step (s) or scaled_step (units of √(l/g))"),
+        ),
+        (
+            "end time without at = time",
+            with("at = \"separation\"", "at = \"separation\"\ntime = 2.0"),
+            s("scene.toml:15: [end] time: only for at = \"time\"; allowed: no time with at = \"separation\" or \"flat\""),
+        ),
+        (
+            "unknown end",
+            with("at = \"separation\"", "at = \"never\""),
+            s("scene.toml:14: [end] at: unknown end \"never\"; allowed: \"separation\", \"flat\", \"time\""),
+        ),
+        (
+            "unknown contact model",
+            with("model = \"rigid\"", "model = \"glue\""),
+            s("scene.toml:9: [contact] model: unknown model \"glue\"; allowed: \"rigid\", \"penalty\""),
+        ),
+        (
+            "stiffness for rigid contact",
+            with("model = \"rigid\"", "model = \"rigid\"\nstiffness = 1e8"),
+            s("scene.toml:10: [contact] stiffness: only for model = \"penalty\"; allowed: no stiffness or damping with model = \"rigid\""),
+        ),
+        (
+            "equilibrium",
+            with("angle = 0.3", "angle = 0.0"),
+            s("scene.toml:6: [start]: θ0 = 0 with θ̇0 = 0 is the equilibrium: the ladder never leaves the wall; allowed: angle > 0 or angular_velocity > 0 (or end.at = \"time\")"),
+        ),
+        (
+            "a value where a section belongs",
+            format!("outputs = 3\n{}", BASE.replace("[outputs]\nwant = [\"separation_angle\", \"trajectory\"]\n", "")),
+            s("scene.toml:1: [outputs]: a value where a section is needed; allowed: a [outputs] section with want"),
+        ),
+    ]
+}
+
+#[test]
+fn every_kind_of_bad_scene_has_its_exact_message() {
+    let cases = cases();
+    assert!(cases.len() >= 20, "{} kinds", cases.len());
+    let mut wrong = Vec::new();
+    for (kind, text, expected) in cases {
+        match parse("scene.toml", &text) {
+            Ok(_) => wrong.push(format!("{kind}: accepted")),
+            Err(e) if e.to_string() != expected => {
+                wrong.push(format!("{kind}:\n  got      {e}\n  expected {expected}"))
+            }
+            Err(_) => {}
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+#[test]
+fn file_level_problems_are_named() {
+    let dir = std::env::temp_dir().join(format!("ladder-scene-errors-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let d = dir.display();
+    assert_eq!(
+        load(&dir).unwrap_err().to_string(),
+        format!("{d}: a directory; allowed: a scene file (TOML), e.g. scenes/from-rest.toml")
+    );
+    let bad = dir.join("latin1.toml");
+    let mut bytes = BASE.as_bytes().to_vec();
+    bytes.splice(20..20, [0xff]);
+    std::fs::write(&bad, &bytes).unwrap();
+    assert_eq!(
+        load(&bad).unwrap_err().to_string(),
+        format!("{d}/latin1.toml:3: not UTF-8 text (byte 0xff); allowed: a UTF-8 TOML file")
+    );
+    let missing = dir.join("nowhere.toml");
+    let e = load(&missing).unwrap_err().to_string();
+    assert!(
+        e.starts_with(&format!("{d}/nowhere.toml: cannot read the scene: "))
+            && e.ends_with("; allowed: a readable scene file (TOML)"),
+        "{e}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

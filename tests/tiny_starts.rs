@@ -1,0 +1,103 @@
+//! Starts at subnormal and tiny angles or pushes (issue 17, item 3): every method reaches the
+//! separation with the time of the exact solution, and a run that stops short of the end its
+//! scene asks for says so (`unreached_end`: exit 1, stderr, JSON `incomplete`).
+//!
+//! **Reference, independent of the integrators.** Below |θ| ≈ 1e-9 the wall phase is linear to
+//! f64 precision (sin θ = θ(1 − θ²/6), θ²/6 < 1e-18), so a start a = θ0 + θ̇0/ω reaches any
+//! θ1 ≪ 1 like a start from rest at θ1 = a does, ln(θ1/a)/ω later than it: t_s(a) = t_s(θ1 from
+//! rest) + ln(θ1/a)/ω, the first from the exact closed form (Carlson/Jacobi, src/sim/exact),
+//! to O(θ1²) = 1e-24. The bound is the integrators' error model 10 N τ (N steps, local error τ).
+
+use sliding_ladder::sim::exact::PhaseOne;
+use sliding_ladder::sim::fall::{self, Outcome};
+use sliding_ladder::sim::scene;
+
+const G: f64 = 9.81;
+
+fn omega() -> f64 {
+    (0.75 * G).sqrt()
+}
+
+fn scene_text(method: &str, control: &str, angle: &str, rate: &str, end: &str) -> String {
+    format!(
+        "[ladder]\nmass = 1.0\nhalf_length = 1.0\ngravity = {G}\n[start]\nangle = {angle}\nangular_velocity = {rate}\n[contact]\nmodel = \"rigid\"\n[integrator]\nmethod = \"{method}\"\n{control}\n[end]\nat = \"{end}\"\n[outputs]\nwant = [\"separation_angle\", \"separation_time\"]\n"
+    )
+}
+
+/// t_s for the linear start a (θ0 + θ̇0/ω) from the exact closed form at θ1 = 1e-12 from rest.
+fn reference_time(a_over: f64, scaled_by: f64) -> f64 {
+    // a = a_over / scaled_by, kept apart so that a subnormal a is not formed.
+    let theta1 = 1e-12;
+    let t1 = PhaseOne::new(theta1, 0.0, 0.75 * G)
+        .unwrap()
+        .separation()
+        .unwrap()
+        .time;
+    t1 + ((theta1 * scaled_by).ln() - a_over.ln()) / omega()
+}
+
+fn run(method: &str, control: &str, angle: &str, rate: &str) -> Outcome {
+    let sc = scene::parse(
+        "tiny.toml",
+        &scene_text(method, control, angle, rate, "separation"),
+    )
+    .unwrap();
+    fall::run(&sc, fall::MAX_STEPS).unwrap()
+}
+
+#[test]
+fn subnormal_starts_separate_at_the_exact_time() {
+    let s = 2f64.powi(600);
+    let v = 5e-324;
+    // (angle, rate, a·2^600, the wrong a of a start twice as fast)
+    let starts = [
+        ("0.0", "5e-324", v * s / omega()),
+        ("5e-324", "0.0", v * s),
+        ("1e-300", "0.0", 1e-300 * s),
+    ];
+    let arccos = (2.0f64 / 3.0).acos();
+    for (angle, rate, a) in starts {
+        let want = reference_time(a, s);
+        for (method, control, tau) in [
+            ("dop853", "tolerance = 1e-12", 1e-12),
+            ("radau5", "tolerance = 1e-12", 1e-12),
+            ("dopri5", "tolerance = 1e-12", 1e-12),
+            ("rk4", "step = 1e-2", 1e-10),
+        ] {
+            let o = run(method, control, angle, rate);
+            let sep = o.separation.expect("separates");
+            let n = (o.work.wall.steps.max(1)) as f64;
+            let bound = 10.0 * n * tau * want;
+            assert!(
+                (sep.time - want).abs() <= bound,
+                "{method} {angle} {rate}: t_s = {} against {want} (bound {bound:e})",
+                sep.time
+            );
+            assert!(
+                (sep.angle - arccos).abs() <= 10.0 * n * tau,
+                "{method}: {}",
+                sep.angle
+            );
+            // The check can fail: the reference of a start twice as fast is ln 2/ω ≈ 0.26 s off.
+            let wrong = reference_time(2.0 * a, s);
+            assert!((sep.time - wrong).abs() > bound, "{method}");
+        }
+    }
+}
+
+#[test]
+fn an_unreached_end_is_reported() {
+    let sc = scene::parse(
+        "tiny.toml",
+        &scene_text("dop853", "tolerance = 1e-10", "0.3", "0.0", "flat"),
+    )
+    .unwrap();
+    let mut o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    assert_eq!(sliding_ladder::sim::command::unreached_end(&sc, &o), None);
+    o.flat = None;
+    let why = sliding_ladder::sim::command::unreached_end(&sc, &o).expect("flat missing");
+    assert!(why.contains("flat"), "{why}");
+    o.separation = None;
+    let why = sliding_ladder::sim::command::unreached_end(&sc, &o).expect("separation missing");
+    assert!(why.contains("separation"), "{why}");
+}
