@@ -1,12 +1,14 @@
 //! Reports: the work-precision sweep, output files written all-or-nothing, SVG plots.
 
 pub mod diagram;
+pub mod fall_figures;
 pub mod files;
 pub mod plot;
 pub mod stability;
 pub mod stability_extreme;
 pub mod stability_scale;
 pub mod stability_stiff;
+pub mod svg_chart;
 pub mod work_precision;
 pub mod work_precision_fit;
 pub mod work_precision_report;
