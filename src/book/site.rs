@@ -93,7 +93,12 @@ fn resolve(
     if path.starts_with("figures/") && dir.join(path).is_file() {
         return Some(path.to_string());
     }
-    let file = path.strip_prefix("../")?;
+    // Any other file of the repository (`../src/…`, `symbols.toml`) is shown as a source page.
+    let file = match path.strip_prefix("../") {
+        Some(f) => f.to_string(),
+        None => format!("equations/{path}"),
+    };
+    let file = file.as_str();
     if file.contains("..") || !root.join(file).is_file() {
         return None;
     }

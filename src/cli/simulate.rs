@@ -4,8 +4,7 @@
 
 use crate::report::digits::sig;
 use crate::report::files::{write_all, OutFile};
-use crate::report::plot::{PlotSpec, Series};
-use crate::sim::fall::{self, Outcome, Sample};
+use crate::sim::fall::{self, Outcome};
 use crate::sim::outcome::unreached_end;
 use crate::sim::output::Output;
 use crate::sim::penalty::Contact;
@@ -277,82 +276,7 @@ pub fn summary(scene: &Scene, o: &Outcome) -> String {
     s
 }
 
-fn csv_rows(trace: &[Sample], forces: bool) -> String {
-    let mut s = String::from(if forces {
-        "phase,t,theta,rate,wall_force,floor_force\n"
-    } else {
-        "phase,t,theta,rate\n"
-    });
-    for p in trace {
-        s += &format!("{},{:e},{:e},{:e}", p.phase, p.t, p.theta, p.rate);
-        if let (true, Some((fw, ff))) = (forces, p.forces) {
-            s += &format!(",{fw:e},{ff:e}");
-        }
-        s.push('\n');
-    }
-    s
-}
-
 /// The files `--out` writes for this scene (CSV and SVG for a trajectory and forces).
 pub fn files(scene: &Scene, o: &Outcome) -> Vec<OutFile> {
-    let mut v = Vec::new();
-    let Some(trace) = &o.trace else { return v };
-    let series = |name: &str, f: &dyn Fn(&Sample) -> Option<(f64, f64)>| Series {
-        name: name.into(),
-        points: trace.iter().filter_map(f).collect(),
-    };
-    if scene.outputs.contains(&Output::Trajectory) {
-        v.push(OutFile::text("trajectory.csv", csv_rows(trace, false)));
-        let spec = PlotSpec {
-            title: "θ and θ̇ against t".into(),
-            x_label: "t (s)".into(),
-            y_label: "θ (rad), θ̇ (rad/s)".into(),
-            ..Default::default()
-        };
-        v.push(OutFile::plot(
-            "trajectory.svg",
-            spec,
-            vec![
-                series("θ", &|p| Some((p.t, p.theta))),
-                series("θ̇", &|p| Some((p.t, p.rate))),
-            ],
-        ));
-    }
-    if scene.outputs.contains(&Output::Forces) {
-        v.push(OutFile::text("forces.csv", csv_rows(trace, true)));
-        let fw = |x: fn(&Sample) -> f64| move |p: &Sample| p.forces.map(|f| (x(p), f.0));
-        let ff = |x: fn(&Sample) -> f64| move |p: &Sample| p.forces.map(|f| (x(p), f.1));
-        let t_spec = PlotSpec {
-            title: "contact forces against t".into(),
-            x_label: "t (s)".into(),
-            y_label: "force (N)".into(),
-            hlines: vec![0.0],
-            ..Default::default()
-        };
-        v.push(OutFile::plot(
-            "forces_t.svg",
-            t_spec,
-            vec![
-                series("F_w (wall)", &fw(|p| p.t)),
-                series("F_f (floor)", &ff(|p| p.t)),
-            ],
-        ));
-        let cs = separation_cosine(scene.ladder.omega2(), scene.theta0, scene.rate0);
-        let th_spec = PlotSpec {
-            title: "contact forces against θ (marker: cos θ = (2 cos θ0 + θ̇0²/Ω²)/3)".into(),
-            x_label: "θ (rad)".into(),
-            y_label: "force (N)".into(),
-            vlines: vec![cs.acos()],
-            hlines: vec![0.0],
-        };
-        v.push(OutFile::plot(
-            "forces_theta.svg",
-            th_spec,
-            vec![
-                series("F_w (wall)", &fw(|p| p.theta)),
-                series("F_f (floor)", &ff(|p| p.theta)),
-            ],
-        ));
-    }
-    v
+    crate::report::fall_figures::files(scene, o)
 }

@@ -1,7 +1,7 @@
 //! Output files, written all-or-nothing: each goes to a hidden temporary name in the target
 //! directory first and is renamed into place only when every file has been written.
 
-use super::plot::{line_plot, panel_plot, PlotSpec, Series};
+use super::plot::{chart_plot, line_plot, panel_plot, Chart, PlotSpec, Series};
 use std::path::Path;
 
 /// A file to write.
@@ -12,7 +12,9 @@ pub enum Content {
     /// An SVG line plot.
     Plot(PlotSpec, Vec<Series>),
     /// An SVG figure of several line plots (panels).
-    Panels(Vec<(PlotSpec, Vec<Series>)>),
+    Panels(Vec<(Chart, Vec<Series>)>),
+    /// An SVG chart (log axes, markers, events).
+    Chart(Chart, Vec<Series>),
 }
 
 /// A named output file.
@@ -33,10 +35,17 @@ impl OutFile {
         }
     }
     /// An SVG figure with one panel per entry.
-    pub fn panels(name: &str, panels: Vec<(PlotSpec, Vec<Series>)>) -> Self {
+    pub fn panels<C: Into<Chart>>(name: &str, panels: Vec<(C, Vec<Series>)>) -> Self {
         OutFile {
             name: name.into(),
-            content: Content::Panels(panels),
+            content: Content::Panels(panels.into_iter().map(|(c, s)| (c.into(), s)).collect()),
+        }
+    }
+    /// An SVG chart.
+    pub fn chart(name: &str, chart: Chart, series: Vec<Series>) -> Self {
+        OutFile {
+            name: name.into(),
+            content: Content::Chart(chart, series),
         }
     }
     /// An SVG plot.
@@ -65,6 +74,7 @@ pub fn write_all(dir: &Path, files: &[OutFile]) -> Result<(), String> {
                     .map_err(|e| format!("{}: cannot write: {e}", tmp.display()))?,
                 Content::Plot(spec, series) => line_plot(&tmp, spec, series)?,
                 Content::Panels(panels) => panel_plot(&tmp, panels)?,
+                Content::Chart(chart, series) => chart_plot(&tmp, chart, series)?,
             }
         }
         for (f, tmp) in files.iter().zip(&temps) {

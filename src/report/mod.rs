@@ -2,6 +2,7 @@
 
 pub mod diagram;
 pub mod digits;
+pub mod fall_figures;
 pub mod files;
 pub mod plot;
 pub mod stability;
@@ -9,6 +10,7 @@ pub mod stability_case;
 pub mod stability_extreme;
 pub mod stability_scale;
 pub mod stability_stiff;
+pub mod svg_chart;
 pub mod work_precision;
 pub mod work_precision_fit;
 pub mod work_precision_report;

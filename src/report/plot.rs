@@ -1,8 +1,10 @@
-//! Line plots as SVG with plotters (SVG backend only: text is emitted as SVG `<text>` with a
-//! generic family, no system font is read). Logarithmic axes are drawn by plotting log10 of the
-//! data and saying so in the axis label, which keeps one code path for all plots.
+//! Line charts as SVG: the data types ([`PlotSpec`], [`Series`], [`Chart`]) and the file
+//! writers; the drawing itself is [`super::svg_chart`] (which says why it is not plotters).
+//!
+//! A [`PlotSpec`] alone draws linear axes with plain lines, as before; a [`Chart`] adds real
+//! logarithmic axes, markers on measured points, dashed reference lines and labelled events.
 
-use plotters::prelude::*;
+use super::svg_chart::document;
 use std::path::Path;
 
 /// One named line.
@@ -19,9 +21,9 @@ pub struct Series {
 pub struct PlotSpec {
     /// Caption.
     pub title: String,
-    /// x-axis label.
+    /// x-axis label (with units).
     pub x_label: String,
-    /// y-axis label.
+    /// y-axis label (with units).
     pub y_label: String,
     /// Vertical marker lines at these x values.
     pub vlines: Vec<f64>,
@@ -29,113 +31,130 @@ pub struct PlotSpec {
     pub hlines: Vec<f64>,
 }
 
-const COLORS: [RGBColor; 8] = [
-    RGBColor(31, 119, 180),
-    RGBColor(255, 127, 14),
-    RGBColor(44, 160, 44),
-    RGBColor(214, 39, 40),
-    RGBColor(148, 103, 189),
-    RGBColor(140, 86, 75),
-    RGBColor(227, 119, 194),
-    RGBColor(23, 190, 207),
-];
+/// A labelled vertical event line (separation, flat, a force crossing zero).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mark {
+    /// Where, in data units of x.
+    pub x: f64,
+    /// What happens there.
+    pub label: String,
+}
 
-fn range(vals: impl Iterator<Item = f64>) -> (f64, f64) {
-    let (lo, hi) = vals.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-        (a.min(v), b.max(v))
-    });
-    if !lo.is_finite() {
-        return (0.0, 1.0);
+/// A plot with the options beyond [`PlotSpec`].
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Chart {
+    /// Titles, labels, plain marker lines.
+    pub spec: PlotSpec,
+    /// Logarithmic x axis (data > 0; ticks at decades).
+    pub log_x: bool,
+    /// Logarithmic y axis (data > 0; ticks at decades).
+    pub log_y: bool,
+    /// Labelled event lines.
+    pub marks: Vec<Mark>,
+    /// A marker on every point (measured data rather than a sampled curve).
+    pub markers: bool,
+    /// Names of the series drawn dashed (references, peers, fronts).
+    pub dashed: Vec<String>,
+}
+
+impl From<PlotSpec> for Chart {
+    fn from(spec: PlotSpec) -> Chart {
+        Chart {
+            spec,
+            ..Chart::default()
+        }
     }
-    let pad = if hi > lo {
-        0.05 * (hi - lo)
-    } else {
-        0.5 * lo.abs().max(1.0)
-    };
-    (lo - pad, hi + pad)
+}
+
+/// Where `points` cross y = 0 (linear interpolation between the samples that straddle it).
+pub fn zero_crossings(points: &[(f64, f64)]) -> Vec<f64> {
+    points
+        .windows(2)
+        .filter(|w| (w[0].1 > 0.0 && w[1].1 <= 0.0) || (w[0].1 < 0.0 && w[1].1 >= 0.0))
+        .filter(|w| w[1].1 != 0.0 || w[0].1 != 0.0)
+        .map(|w| {
+            let (a, b) = (w[0], w[1]);
+            a.0 + (b.0 - a.0) * a.1 / (a.1 - b.1)
+        })
+        .collect()
+}
+
+fn write(path: &Path, svg: String) -> Result<(), String> {
+    std::fs::write(path, svg).map_err(|e| format!("cannot draw {}: {e}", path.display()))
 }
 
 /// Draw `series` into the SVG file `path`.
 pub fn line_plot(path: &Path, spec: &PlotSpec, series: &[Series]) -> Result<(), String> {
-    let e = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
-    let root = SVGBackend::new(path, (900, 600)).into_drawing_area();
-    root.fill(&WHITE).map_err(|x| e(&x))?;
-    draw_chart(&root, spec, series, 22).map_err(|x| e(&x))?;
-    root.present().map_err(|x| e(&x))?;
-    Ok(())
+    chart_plot(path, &spec.clone().into(), series)
+}
+
+/// Draw a [`Chart`] into the SVG file `path`.
+pub fn chart_plot(path: &Path, chart: &Chart, series: &[Series]) -> Result<(), String> {
+    write(
+        path,
+        document(&[(chart.clone(), series.to_vec())], 960.0, 600.0),
+    )
 }
 
 /// Draw one chart per panel into the SVG file `path`, in a grid two panels wide.
-pub fn panel_plot(path: &Path, panels: &[(PlotSpec, Vec<Series>)]) -> Result<(), String> {
-    let e = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
-    let cols = panels.len().clamp(1, 2);
-    let rows = panels.len().div_ceil(cols).max(1);
-    let root = SVGBackend::new(path, (700 * cols as u32, 480 * rows as u32)).into_drawing_area();
-    root.fill(&WHITE).map_err(|x| e(&x))?;
-    for (area, (spec, series)) in root.split_evenly((rows, cols)).iter().zip(panels) {
-        draw_chart(area, spec, series, 18).map_err(|x| e(&x))?;
-    }
-    root.present().map_err(|x| e(&x))?;
-    Ok(())
+pub fn panel_plot<C: Clone + Into<Chart>>(
+    path: &Path,
+    panels: &[(C, Vec<Series>)],
+) -> Result<(), String> {
+    let charts: Vec<(Chart, Vec<Series>)> = panels
+        .iter()
+        .map(|(c, s)| (c.clone().into(), s.clone()))
+        .collect();
+    write(path, document(&charts, 760.0, 500.0))
 }
 
-fn draw_chart<DB: DrawingBackend>(
-    area: &DrawingArea<DB, plotters::coord::Shift>,
-    spec: &PlotSpec,
-    series: &[Series],
-    caption_size: u32,
-) -> Result<(), String> {
-    let e = |x: &dyn std::fmt::Display| x.to_string();
-    let clean: Vec<Vec<(f64, f64)>> = series
-        .iter()
-        .map(|s| {
-            s.points
-                .iter()
-                .copied()
-                .filter(|(x, y)| x.is_finite() && y.is_finite())
-                .collect()
-        })
-        .collect();
-    let all = || clean.iter().flatten();
-    let (x0, x1) = range(all().map(|p| p.0).chain(spec.vlines.iter().copied()));
-    let (y0, y1) = range(all().map(|p| p.1).chain(spec.hlines.iter().copied()));
-    let mut chart = ChartBuilder::on(area)
-        .caption(&spec.title, ("sans-serif", caption_size))
-        .margin(15)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d(x0..x1, y0..y1)
-        .map_err(|x| e(&x))?;
-    chart
-        .configure_mesh()
-        .x_desc(&spec.x_label)
-        .y_desc(&spec.y_label)
-        .draw()
-        .map_err(|x| e(&x))?;
-    for &v in &spec.vlines {
-        chart
-            .draw_series(LineSeries::new([(v, y0), (v, y1)], BLACK.mix(0.4)))
-            .map_err(|x| e(&x))?;
+#[cfg(test)]
+mod tests {
+    use super::super::svg_chart::{decade_label, Axis};
+    use super::*;
+
+    #[test]
+    fn decades_are_labelled_as_powers_of_ten() {
+        assert_eq!(decade_label(-12), "10⁻¹²");
+        assert_eq!(decade_label(0), "10⁰");
+        assert_eq!(decade_label(3), "10³");
+        let a = Axis::fit([3e-13, 2e-4, -1.0, 0.0].into_iter(), true);
+        assert_eq!((a.lo, a.hi), (-13.0, -3.0));
+        let labels: Vec<&str> = a.ticks.iter().map(|t| t.1.as_str()).collect();
+        assert_eq!(labels, ["10⁻¹²", "10⁻¹⁰", "10⁻⁸", "10⁻⁶", "10⁻⁴"]);
+        assert_eq!(a.map(-1.0), None);
     }
-    for &h in &spec.hlines {
-        chart
-            .draw_series(LineSeries::new([(x0, h), (x1, h)], BLACK.mix(0.4)))
-            .map_err(|x| e(&x))?;
+
+    #[test]
+    fn linear_ticks_are_round_and_cover_the_data() {
+        let a = Axis::fit([0.13, 2.71].into_iter(), false);
+        assert!(a.lo < 0.13 && a.hi > 2.71);
+        let v: Vec<f64> = a.ticks.iter().map(|t| t.0).collect();
+        assert_eq!(v, [0.5, 1.0, 1.5, 2.0, 2.5]);
+        assert_eq!(a.ticks[0].1, "0.5");
     }
-    for (i, (s, pts)) in series.iter().zip(&clean).enumerate() {
-        let color = COLORS[i % COLORS.len()];
-        chart
-            .draw_series(LineSeries::new(pts.iter().copied(), color.stroke_width(2)))
-            .map_err(|x| e(&x))?
-            .label(s.name.clone())
-            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], color.stroke_width(2)));
+
+    #[test]
+    fn coordinates_are_not_rounded_to_pixels_and_the_legend_sits_outside_the_data() {
+        let s = vec![Series {
+            name: "a".into(),
+            points: vec![(0.0, 0.0), (1.0, 1.0 / 3.0), (2.0, 1.0)],
+        }];
+        let svg = document(&[(PlotSpec::default().into(), s)], 960.0, 600.0);
+        let poly = svg.split("points=\"").nth(1).unwrap();
+        assert!(
+            poly.split(['"', ' ', ','])
+                .take(6)
+                .any(|c| c.contains('.') && !c.ends_with(".00")),
+            "{poly}"
+        );
+        assert_eq!(svg.matches("font-weight=\"bold\"").count(), 1, "one title");
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
-        .map_err(|x| e(&x))?;
-    Ok(())
+
+    #[test]
+    fn a_force_that_changes_sign_is_found_between_its_samples() {
+        let z = zero_crossings(&[(0.0, 2.0), (1.0, 1.0), (2.0, -1.0), (3.0, -2.0)]);
+        assert_eq!(z, vec![1.5]);
+        assert!(zero_crossings(&[(0.0, 1.0), (1.0, 2.0)]).is_empty());
+    }
 }

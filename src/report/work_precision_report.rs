@@ -2,7 +2,7 @@
 //! fitted range and the Pareto front, for JSON, `runs.csv` and one SVG panel per scene (the
 //! table is printed by `ladder work-precision`, in `crate::cli::work_precision`).
 
-use super::plot::{PlotSpec, Series};
+use super::plot::{Chart, PlotSpec, Series};
 use super::work_precision::{measure, Run, Timing};
 use super::work_precision_fit::{observed_order, pareto, OrderFit, Point};
 use crate::sim::integrators::{order, RIGID_METHODS as METHODS};
@@ -75,8 +75,10 @@ pub fn csv(reports: &[SceneReport]) -> String {
 }
 
 /// One scene's panel of `work_precision.svg`: error against run time per method.
-pub fn panel(rep: &SceneReport) -> (PlotSpec, Vec<Series>) {
-    let series = METHODS
+pub fn panel(rep: &SceneReport) -> (Chart, Vec<Series>) {
+    // Real log axes (the chart draws decades); an error below 1e-17 is shown at 1e-17.
+    let point = |r: &Run| (r.seconds, r.error().max(1e-17));
+    let mut series: Vec<Series> = METHODS
         .iter()
         .map(|m| Series {
             name: (*m).into(),
@@ -84,10 +86,16 @@ pub fn panel(rep: &SceneReport) -> (PlotSpec, Vec<Series>) {
                 .runs
                 .iter()
                 .filter(|r| r.method == *m)
-                .map(|r| (r.seconds.log10(), r.error().max(1e-17).log10()))
+                .map(point)
                 .collect(),
         })
         .collect();
+    let mut front: Vec<(f64, f64)> = rep.pareto.iter().map(point).collect();
+    front.sort_by(|a, b| a.0.total_cmp(&b.0));
+    series.push(Series {
+        name: "Pareto front".into(),
+        points: front,
+    });
     let what = if rep.to_flat {
         "separation and flat"
     } else {
@@ -100,9 +108,17 @@ pub fn panel(rep: &SceneReport) -> (PlotSpec, Vec<Series>) {
             rep.start.1,
             if rep.to_flat { ", to flat" } else { "" }
         ),
-        x_label: "log10 median run time per solve (s)".into(),
-        y_label: format!("log10 worse relative error ({what})"),
+        x_label: "median run time per solve (s)".into(),
+        y_label: format!("worse relative error ({what})"),
         ..Default::default()
     };
-    (spec, series)
+    let chart = Chart {
+        spec,
+        log_x: true,
+        log_y: true,
+        markers: true,
+        dashed: vec!["Pareto front".into()],
+        ..Default::default()
+    };
+    (chart, series)
 }

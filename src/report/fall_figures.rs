@@ -1,0 +1,134 @@
+//! The files `ladder simulate --out` writes for a fall: the trajectory and the contact forces,
+//! as CSV and as charts that mark the events: the separation from the wall (where F_w reaches
+//! zero: past it the wall would have to pull), the flat landing, and F_w crossing zero.
+
+use super::files::OutFile;
+use super::plot::{zero_crossings, Chart, Mark, PlotSpec, Series};
+use crate::sim::fall::{Outcome, Sample};
+use crate::sim::output::Output;
+use crate::sim::rigid::separation_cosine;
+use crate::sim::scene::Scene;
+
+fn csv_rows(trace: &[Sample], forces: bool) -> String {
+    let mut s = String::from(if forces {
+        "phase,t,theta,rate,wall_force,floor_force\n"
+    } else {
+        "phase,t,theta,rate\n"
+    });
+    for p in trace {
+        s += &format!("{},{:e},{:e},{:e}", p.phase, p.t, p.theta, p.rate);
+        if let (true, Some((fw, ff))) = (forces, p.forces) {
+            s += &format!(",{fw:e},{ff:e}");
+        }
+        s.push('\n');
+    }
+    s
+}
+
+/// The events of a fall on the time axis: separation and flat, when they happened.
+pub fn time_marks(o: &Outcome) -> Vec<Mark> {
+    let mut m = Vec::new();
+    if let Some(s) = &o.separation {
+        m.push(Mark {
+            x: s.time,
+            label: format!("separation, t = {:.4} s", s.time),
+        });
+    }
+    if let Some(f) = &o.flat {
+        m.push(Mark {
+            x: f.time,
+            label: format!("flat, t = {:.4} s", f.time),
+        });
+    }
+    m
+}
+
+/// Where the wall force of the wall phase crosses zero (None when it stays on one side); the
+/// wall phase ends there, so it lies at the separation within the trace's sampling.
+fn wall_force_zero(points: &[(f64, f64)]) -> Option<Mark> {
+    zero_crossings(points).first().map(|&x| Mark {
+        x,
+        label: "F_w = 0".into(),
+    })
+}
+
+/// The CSV and SVG files of a scene's trace (what its `[outputs]` ask for).
+pub fn files(scene: &Scene, o: &Outcome) -> Vec<OutFile> {
+    let mut v = Vec::new();
+    let Some(trace) = &o.trace else { return v };
+    let series = |name: &str, f: &dyn Fn(&Sample) -> Option<(f64, f64)>| Series {
+        name: name.into(),
+        points: trace.iter().filter_map(f).collect(),
+    };
+    if scene.outputs.contains(&Output::Trajectory) {
+        v.push(OutFile::text("trajectory.csv", csv_rows(trace, false)));
+        let chart = Chart {
+            spec: PlotSpec {
+                title: "The fall: θ and θ̇ against t".into(),
+                x_label: "t (s)".into(),
+                y_label: "θ (rad), θ̇ (rad/s)".into(),
+                ..Default::default()
+            },
+            marks: time_marks(o),
+            ..Default::default()
+        };
+        let lines = vec![
+            series("θ (rad)", &|p| Some((p.t, p.theta))),
+            series("θ̇ (rad/s)", &|p| Some((p.t, p.rate))),
+        ];
+        v.push(OutFile::chart("trajectory.svg", chart, lines));
+    }
+    if scene.outputs.contains(&Output::Forces) {
+        v.push(OutFile::text("forces.csv", csv_rows(trace, true)));
+        let fw = |x: fn(&Sample) -> f64| move |p: &Sample| p.forces.map(|f| (x(p), f.0));
+        let ff = |x: fn(&Sample) -> f64| move |p: &Sample| p.forces.map(|f| (x(p), f.1));
+        let wall_phase = |x: fn(&Sample) -> f64| -> Vec<(f64, f64)> {
+            trace
+                .iter()
+                .filter(|p| p.phase == 1)
+                .filter_map(|p| p.forces.map(|f| (x(p), f.0)))
+                .collect()
+        };
+        let mut t_marks = time_marks(o);
+        t_marks.extend(wall_force_zero(&wall_phase(|p| p.t)));
+        let t_chart = Chart {
+            spec: PlotSpec {
+                title: "Contact forces against t".into(),
+                x_label: "t (s)".into(),
+                y_label: "force (N)".into(),
+                hlines: vec![0.0],
+                ..Default::default()
+            },
+            marks: t_marks,
+            ..Default::default()
+        };
+        let lines = vec![
+            series("F_w, wall (N)", &fw(|p| p.t)),
+            series("F_f, floor (N)", &ff(|p| p.t)),
+        ];
+        v.push(OutFile::chart("forces_t.svg", t_chart, lines));
+        let cs = separation_cosine(scene.ladder.omega2(), scene.theta0, scene.rate0);
+        let mut th_marks = vec![Mark {
+            x: cs.acos(),
+            label: "cos θ = (2 cos θ0 + θ̇0²/Ω²)/3".into(),
+        }];
+        th_marks.extend(wall_force_zero(&wall_phase(|p| p.theta)));
+        let th_chart = Chart {
+            spec: PlotSpec {
+                title: "Contact forces against θ".into(),
+                x_label: "θ (rad)".into(),
+                y_label: "force (N)".into(),
+                hlines: vec![0.0],
+                ..Default::default()
+            },
+            marks: th_marks,
+            ..Default::default()
+        };
+        let lines = vec![
+            series("F_w, wall (N)", &fw(|p| p.theta)),
+            series("F_f, floor (N)", &ff(|p| p.theta)),
+        ];
+        v.push(OutFile::chart("forces_theta.svg", th_chart, lines));
+    }
+    v
+}
