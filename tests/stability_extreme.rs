@@ -216,3 +216,47 @@ fn near_flat_stability_rows_hold_a_bound_that_carrying_theta_fails() {
     assert!(row.error.unwrap() <= bound);
     assert!(bound < 1.5e-8, "{row:?}");
 }
+
+/// Extreme rows are ensembles (the start and ±1, ±2 ulp): each row names its members and the
+/// spread, and its error is the worst member's (so at least every member's).
+#[test]
+fn extreme_rows_are_judged_on_the_worst_of_an_ulp_ensemble() {
+    let cases = sliding_ladder::report::stability_extreme::extreme_cases(&mut |_, _| {});
+    let row = cases
+        .iter()
+        .find(|c| c.case == "rest θ0=0.3: time")
+        .expect("row");
+    assert!(row.value.contains("worst of 5 with θ0 ± 2 ulp"), "{row:?}");
+    let worst = row.error.unwrap();
+    for k in [-2i32, -1, 0, 1, 2] {
+        let th = f64::from_bits((0.3f64.to_bits() as i64 + k as i64) as u64);
+        let (r, _) = wall_release(
+            &UNIT_LADDER,
+            th,
+            0.0,
+            "dop853",
+            Control::Tolerance(1e-13),
+            1_000_000,
+        )
+        .unwrap();
+        let WallRelease::Separated(s) = r else {
+            panic!("{r:?}")
+        };
+        let exact = sliding_ladder::sim::exact::PhaseOne::new(th, 0.0, UNIT_LADDER.omega2())
+            .unwrap()
+            .separation()
+            .unwrap();
+        let e = (s.time - exact.time).abs() / exact.time;
+        // (to the rounding of the error itself)
+        assert!(
+            e <= worst * (1.0 + 1e-9),
+            "member {k}: {e:e} above the row's {worst:e}"
+        );
+    }
+}
+
+const UNIT_LADDER: Ladder = Ladder {
+    mass: 1.0,
+    half_length: 1.0,
+    gravity: 1.0,
+};

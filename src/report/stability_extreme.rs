@@ -37,9 +37,74 @@ fn theory_cosine(ladder: &Ladder, theta0: f64, rate0: f64) -> f64 {
     2.0 / 3.0 * theta0.cos() + 4.0 * ladder.half_length * rate0 * rate0 / (9.0 * ladder.gravity)
 }
 
-/// One start of the unit ladder: an angle row and a time row.
+/// One start of the unit ladder as a small ensemble (issue 17, item 2): the start and its
+/// neighbours 1 and 2 ulps away (θ0, or θ̇0 when θ0 = 0), so that a verdict is not a lucky
+/// sample. Each row is the ensemble's worst member (largest error over its bound) and states the
+/// spread of the errors.
 fn start_rows(name: &str, theta0: f64, rate0: f64, tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
     tick(name, 2);
+    // x ≥ 0 moved by k ulps (k < 0 stops at 0); bit steps, as f64::next_up needs Rust 1.86.
+    let ulps = |x: f64, k: i64| f64::from_bits((x.to_bits() as i64 + k).max(0) as u64);
+    let members: Vec<(f64, f64)> = [-2, -1, 0, 1, 2]
+        .into_iter()
+        .map(|k| match theta0 > 0.0 {
+            true => (ulps(theta0, k), rate0),
+            false => (theta0, ulps(rate0, k).max(0.0)),
+        })
+        .collect();
+    let runs: Vec<Vec<Case>> = members
+        .iter()
+        .map(|&(th, w)| member_rows(name, th, w))
+        .collect();
+    // Row by row (matched by name: "leaves at once" members have no time row), the worst.
+    let mut rows = Vec::new();
+    for row in &runs[2] {
+        let same: Vec<&Case> = runs
+            .iter()
+            .filter_map(|r| r.iter().find(|c| c.case == row.case))
+            .collect();
+        let ratio = |c: &Case| match (c.error, c.bound) {
+            (Some(e), Some(b)) if e.is_finite() && b > 0.0 => e / b,
+            (Some(_), Some(_)) => f64::INFINITY,
+            _ => 0.0,
+        };
+        let fails = same.iter().filter(|c| c.verdict == Verdict::Fail).count();
+        let worst = same
+            .iter()
+            .max_by(|a, b| {
+                (a.verdict == Verdict::Fail, ratio(a))
+                    .partial_cmp(&(b.verdict == Verdict::Fail, ratio(b)))
+                    .unwrap_or(std::cmp::Ordering::Equal)
+            })
+            .copied()
+            .unwrap_or(row);
+        let mut c = worst.clone();
+        let errs: Vec<f64> = same.iter().filter_map(|c| c.error).collect();
+        let (lo, hi) = errs
+            .iter()
+            .fold((f64::INFINITY, 0.0f64), |(l, h), &e| (l.min(e), h.max(e)));
+        let moved = if theta0 > 0.0 { "θ0" } else { "θ̇0" };
+        let spread = match errs.is_empty() {
+            true => "no error to measure".to_string(),
+            false => format!("errors {lo:.1e}..{hi:.1e}"),
+        };
+        c.value = format!(
+            "{} [worst of {} with {moved} ± 2 ulp; {spread}]",
+            c.value,
+            same.len()
+        );
+        if fails > 0 && c.verdict == Verdict::Fail {
+            c.reason = format!("{} ({fails} of {} members fail)", c.reason, same.len());
+        }
+        (c.steps, c.rhs_evals) = (row.steps, row.rhs_evals);
+        c.seconds = same.iter().map(|c| c.seconds).sum();
+        rows.push(c);
+    }
+    rows
+}
+
+/// One member of a start's ensemble: an angle row and a time row.
+fn member_rows(name: &str, theta0: f64, rate0: f64) -> Vec<Case> {
     let control = Control::Tolerance(TOL);
     let cs = theory_cosine(&UNIT, theta0, rate0);
     // θ_s at or behind θ0 (cos θ_s ≥ cos θ0; for θ0 = 0, cos θ_s ≥ 1): the wall would pull.
