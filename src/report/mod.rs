@@ -1,5 +1,6 @@
 //! Reports: the work-precision sweep, output files written all-or-nothing, SVG plots.
 
+pub mod chart;
 pub mod diagram;
 pub mod digits;
 pub mod fall_figures;

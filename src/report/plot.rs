@@ -1,70 +1,13 @@
-//! Line charts as SVG: the data types ([`PlotSpec`], [`Series`], [`Chart`]) and the file
-//! writers; the drawing itself is [`super::svg_chart`] (which says why it is not plotters).
+//! Line charts as SVG: the file writers; the data types ([`PlotSpec`], [`Series`], [`Chart`])
+//! live in [`super::chart`] (re-exported here) so that the drawing, [`super::svg_chart`] (which
+//! says why it is not plotters), can use them without importing this module back.
 //!
 //! A [`PlotSpec`] alone draws linear axes with plain lines, as before; a [`Chart`] adds real
 //! logarithmic axes, markers on measured points, dashed reference lines and labelled events.
 
+pub use super::chart::{Chart, Mark, PlotSpec, Series};
 use super::svg_chart::document;
 use std::path::Path;
-
-/// One named line.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Series {
-    /// Legend text.
-    pub name: String,
-    /// (x, y) points in drawing order; non-finite points are dropped.
-    pub points: Vec<(f64, f64)>,
-}
-
-/// Titles, labels and markers of a plot.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct PlotSpec {
-    /// Caption.
-    pub title: String,
-    /// x-axis label (with units).
-    pub x_label: String,
-    /// y-axis label (with units).
-    pub y_label: String,
-    /// Vertical marker lines at these x values.
-    pub vlines: Vec<f64>,
-    /// Horizontal marker lines at these y values.
-    pub hlines: Vec<f64>,
-}
-
-/// A labelled vertical event line (separation, flat, a force crossing zero).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Mark {
-    /// Where, in data units of x.
-    pub x: f64,
-    /// What happens there.
-    pub label: String,
-}
-
-/// A plot with the options beyond [`PlotSpec`].
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Chart {
-    /// Titles, labels, plain marker lines.
-    pub spec: PlotSpec,
-    /// Logarithmic x axis (data > 0; ticks at decades).
-    pub log_x: bool,
-    /// Logarithmic y axis (data > 0; ticks at decades).
-    pub log_y: bool,
-    /// Labelled event lines.
-    pub marks: Vec<Mark>,
-    /// A marker on every point (measured data rather than a sampled curve).
-    pub markers: bool,
-    /// Names of the series drawn dashed (references, peers, fronts).
-    pub dashed: Vec<String>,
-}
-
-impl From<PlotSpec> for Chart {
-    fn from(spec: PlotSpec) -> Chart {
-        Chart {
-            spec,
-            ..Chart::default()
-        }
-    }
-}
 
 /// Where `points` cross y = 0 (linear interpolation between the samples that straddle it).
 pub fn zero_crossings(points: &[(f64, f64)]) -> Vec<f64> {

@@ -8,7 +8,7 @@
 //! axes label mantissas (1, 2, 5) rather than decades. A chart is a few hundred lines of SVG
 //! text, and owning it keeps the palette and layout the same in every figure.
 
-use super::plot::{Chart, Series};
+use super::chart::{Chart, Series};
 use std::fmt::Write;
 
 /// The palette (Okabe–Ito, distinguishable with any colour vision), in series order.
