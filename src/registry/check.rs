@@ -1,4 +1,4 @@
-//! Running the checks: floats against an error model, exact rationals with zero residual, and the
+//! Running the checks: floats against an error model, exact points with zero residual, and the
 //! Schwartz-Zippel bound of every exact check.
 //!
 //! Float verdict: a chain passes when every side differs from the first by at most
@@ -8,11 +8,27 @@
 //! through num-dual while the bounds go through `Jet<Bound>`, whose operation order differs, so
 //! the two evaluations can each be off by up to their own bound (factor 2), doubled for the
 //! dropped second-order terms.
+//!
+//! Exact verdict: the coordinates of an exact point are random integers below 2⁶⁰ in magnitude.
+//! The first [`RATIONAL_POINTS`] points of a check are evaluated in exact rationals; the others
+//! modulo the prime p = 2⁶¹ − 1 ([`Modp`](crate::scalar::Modp)), a hundred times faster (a rational point spends most
+//! of its time reducing fractions of thousands of bits). A point where a denominator vanishes mod
+//! p is evaluated in rationals instead. A false identity whose residual numerator has degree ≤ d
+//! passes one point with probability at most d/N, N = [`EXACT_SET_SIZE`] (Schwartz-Zippel): at a
+//! rational point always, at a modular point when p does not divide every coefficient of that
+//! numerator (see [`Modp`](crate::scalar::Modp)); the sample sets lie in an interval shorter than p, so their residues
+//! are distinct. [`CheckReport::sz_bound_log10`] is the bound over all points,
+//! [`CheckReport::sz_bound_rational_log10`] over the rational points alone (which holds for any p).
 
+use super::exact_point::{
+    at_point, exact_ladder_ints, exact_particle_ints, floor_point, ladder_point, particle_point,
+    signed,
+};
+pub(crate) use super::exact_point::{exact_ladder_draw, exact_particle_draw};
+use super::sample::LADDER_DRAWS;
 use super::sample::{
     exact_ladder, particle_system, LadderSample, ParticleSample, RawLadder, RawParticles,
 };
-use super::sample::{EXTRA, LADDER_DRAWS, PER_PARTICLE};
 use super::{Chain, Check, Eval, Role};
 use crate::scalar::{Bound, Degree, Rational, Scalar, UNIT_ROUNDOFF};
 use num_traits::Zero;
@@ -22,9 +38,13 @@ use rand_chacha::ChaCha8Rng;
 
 /// A float chain passes when its scaled residual is at most this.
 pub const TOLERANCE_FACTOR: f64 = 4.0;
-/// Exact coordinates are drawn from integers of magnitude below 2^62 (masses, m, l, g positive):
-/// the smallest of those sets has 2^62 − 1 elements.
-pub const EXACT_SET_SIZE: f64 = 4_611_686_018_427_387_903.0;
+/// Exact coordinates are integers of magnitude below this, 2⁶⁰: every sample set then lies in an
+/// interval of at most 2⁶¹ − 1 integers, whose residues modulo p = 2⁶¹ − 1 are distinct.
+pub const EXACT_HEIGHT: i64 = 1 << 60;
+/// The smallest sample set, the positive coordinates (masses, m, l, g) 1..2⁶⁰: 2⁶⁰ − 1 elements.
+pub const EXACT_SET_SIZE: f64 = 1_152_921_504_606_846_975.0;
+/// Exact points per check evaluated in rationals (the first ones); the rest are evaluated mod p.
+pub const RATIONAL_POINTS: usize = 1;
 
 /// How much checking to do.
 #[derive(Clone, Copy, Debug)]
@@ -72,6 +92,8 @@ pub struct CheckReport {
     pub sz_bound: f64,
     /// log10 of `sz_bound` (finite where `sz_bound` underflows to 0).
     pub sz_bound_log10: f64,
+    /// log10 of the bound from the rational points alone, which holds whatever the prime.
+    pub sz_bound_rational_log10: f64,
     /// For on-shell checks: whether every exact off-shell point failed, as it must.
     pub off_shell_fails: Option<bool>,
     /// For on-shell ladder checks: the `=` of the display (counted from 1) at which the chain
@@ -118,8 +140,9 @@ pub fn float_residual(values: &[Chain<f64>], bounds: &[Chain<Bound>]) -> (f64, &
     worst
 }
 
-/// Exact verdict: (every non-misprint side equal to the first, per misprint side whether it differs).
-pub fn exact_residual(chains: &[Chain<Rational>]) -> (bool, Vec<(&'static str, bool)>) {
+/// Exact verdict, in rationals or residues: (every non-misprint side equal to the first, per
+/// misprint side whether it differs).
+pub fn exact_residual<S: Scalar + Zero>(chains: &[Chain<S>]) -> (bool, Vec<(&'static str, bool)>) {
     let mut all_equal = true;
     let mut misprints = Vec::new();
     for c in chains {
@@ -146,38 +169,6 @@ fn residual_degree(chains: &[Chain<Degree>]) -> u32 {
         }
     }
     d
-}
-
-pub(crate) fn exact_ladder_draw(rng: &mut impl Rng) -> [Rational; LADDER_DRAWS] {
-    let big = 1i64 << 62;
-    let mut signed_nonzero = || loop {
-        let v = rng.gen_range(-big..=big);
-        if v != 0 {
-            break v;
-        }
-    };
-    let (t, rate) = (signed_nonzero(), signed_nonzero());
-    let mut positive = || rng.gen_range(1..big);
-    let (m, l, g) = (positive(), positive(), positive());
-    let mut signed = || rng.gen_range(-big..=big);
-    let (accel, jerk) = (signed(), signed());
-    [t, m, l, g, rate, accel, jerk].map(Rational::int)
-}
-
-pub(crate) fn exact_particle_draw(rng: &mut impl Rng) -> (usize, Vec<Rational>) {
-    let big = 1i64 << 62;
-    let n = rng.gen_range(1..=8);
-    let values = (0..n * PER_PARTICLE + EXTRA)
-        .map(|i| {
-            let v = if i < n * PER_PARTICLE && i % PER_PARTICLE == 0 {
-                rng.gen_range(1..big)
-            } else {
-                rng.gen_range(-big..=big)
-            };
-            Rational::int(v)
-        })
-        .collect();
-    (n, values)
 }
 
 /// Run one check.
@@ -213,19 +204,16 @@ pub fn run_check(check: &Check, cfg: &Config) -> CheckReport {
             rep.degree = residual_degree(&degree_chains);
             let mut off_shell_all_fail = true;
             let mut breaks: Option<Option<Vec<u32>>> = None;
-            for _ in 0..cfg.exact_points {
-                let draw = exact_ladder_draw(&mut rng);
-                let (l, s) = exact_ladder(sort, draw.clone());
-                let (ok, mis) = guarded(|| exact_residual(&(f.exact)(&l, &s)));
-                rep.exact_failures += usize::from(!ok);
-                note_misprints(mis);
-                if sort.on_shell() {
-                    let (l, s) = exact_ladder(LadderSample::Kinematic, draw);
-                    let off = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-                        let c = (f.exact)(&l, &s);
-                        (exact_residual(&c).0, super::law::breaks(&c))
-                    }));
-                    let (ok_off, here) = off.map_or((false, None), |(ok, b)| (ok, Some(b)));
+            for k in 0..cfg.exact_points {
+                let ints = exact_ladder_ints(&mut rng);
+                let pt = at_point(
+                    k,
+                    || ladder_point(sort, f.modular, ints),
+                    || ladder_point(sort, f.exact, ints),
+                );
+                rep.exact_failures += usize::from(!pt.ok);
+                note_misprints(pt.misprints);
+                if let Some((ok_off, here)) = pt.off {
                     off_shell_all_fail &= !ok_off;
                     // Keep the breaks only while every point agrees.
                     breaks = Some(match breaks {
@@ -259,19 +247,17 @@ pub fn run_check(check: &Check, cfg: &Config) -> CheckReport {
             let (sd, xd) = super::sample::floor_state(sort, &ld, sd, vars);
             rep.degree = residual_degree(&(f.degree)(&ld, &sd, &xd));
             let mut off_shell_all_fail = true;
-            let big = 1i64 << 62;
-            for _ in 0..cfg.exact_points {
-                let draw = exact_ladder_draw(&mut rng);
-                let v: [Rational; 4] =
-                    std::array::from_fn(|_| Rational::int(rng.gen_range(-big..=big)));
-                let (l, s0) = exact_ladder(LadderSample::Kinematic, draw);
-                let (s, x) = super::sample::floor_state(sort, &l, s0.clone(), v.clone());
-                let (ok, mis) = guarded(|| exact_residual(&(f.exact)(&l, &s, &x)));
-                rep.exact_failures += usize::from(!ok);
-                note_misprints(mis);
-                if sort.on_shell() {
-                    let (s, x) = super::sample::floor_state(LadderSample::Kinematic, &l, s0, v);
-                    let (ok_off, _) = guarded(|| exact_residual(&(f.exact)(&l, &s, &x)));
+            for k in 0..cfg.exact_points {
+                let ints = exact_ladder_ints(&mut rng);
+                let motion: [i64; 4] = std::array::from_fn(|_| signed(&mut rng));
+                let pt = at_point(
+                    k,
+                    || floor_point(sort, f.modular, ints, motion),
+                    || floor_point(sort, f.exact, ints, motion),
+                );
+                rep.exact_failures += usize::from(!pt.ok);
+                note_misprints(pt.misprints);
+                if let Some((ok_off, _)) = pt.off {
                     off_shell_all_fail &= !ok_off;
                 }
             }
@@ -285,23 +271,32 @@ pub fn run_check(check: &Check, cfg: &Config) -> CheckReport {
                 let ((sys, p), (sysb, pb)) = super::sample::float_particles(sort, &raw);
                 record_float(&mut rep, (f.float)(&sys, &p), (f.bound)(&sysb, &pb));
             }
-            for _ in 0..cfg.exact_points {
-                let (n, values) = exact_particle_draw(&mut rng);
-                let (sys, p) = particle_system(sort, n, &values);
-                let (ok, mis) = guarded(|| exact_residual(&(f.exact)(&sys, &p)));
-                rep.exact_failures += usize::from(!ok);
-                note_misprints(mis);
-                let vars = vec![Degree::variable(); values.len()];
-                let (sd, pd) = particle_system(sort, n, &vars);
-                rep.degree = rep.degree.max(residual_degree(&(f.degree)(&sd, &pd)));
+            // The degree depends on the number of particles only.
+            let mut degree_of = [None; 9];
+            for k in 0..cfg.exact_points {
+                let (n, ints) = exact_particle_ints(&mut rng);
+                let pt = at_point(
+                    k,
+                    || particle_point(sort, f.modular, n, &ints),
+                    || particle_point(sort, f.exact, n, &ints),
+                );
+                rep.exact_failures += usize::from(!pt.ok);
+                note_misprints(pt.misprints);
+                let d = *degree_of[n].get_or_insert_with(|| {
+                    let vars = vec![Degree::variable(); ints.len()];
+                    let (sd, pd) = particle_system(sort, n, &vars);
+                    residual_degree(&(f.degree)(&sd, &pd))
+                });
+                rep.degree = rep.degree.max(d);
             }
         }
     }
     rep.exact_points = cfg.exact_points;
     rep.misprints = misprint_ok;
     rep.sz_bound = (f64::from(rep.degree.max(1)) / EXACT_SET_SIZE).powi(cfg.exact_points as i32);
-    rep.sz_bound_log10 =
-        cfg.exact_points as f64 * (f64::from(rep.degree.max(1)) / EXACT_SET_SIZE).log10();
+    let per_point = (f64::from(rep.degree.max(1)) / EXACT_SET_SIZE).log10();
+    rep.sz_bound_log10 = cfg.exact_points as f64 * per_point;
+    rep.sz_bound_rational_log10 = cfg.exact_points.min(RATIONAL_POINTS) as f64 * per_point;
     rep
 }
 
@@ -362,12 +357,4 @@ pub fn particle_exact_chains(
     let values: Vec<Rational> = ints.iter().map(|&v| Rational::int(v)).collect();
     let (sys, p) = particle_system(sort, n, &values);
     (f.exact)(&sys, &p)
-}
-
-/// Evaluate an exact check, turning a panic inside it (a division by an exact zero, say, in a
-/// user's method) into a failed check instead of a crash.
-fn guarded(
-    f: impl FnOnce() -> (bool, Vec<(&'static str, bool)>),
-) -> (bool, Vec<(&'static str, bool)>) {
-    std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).unwrap_or((false, Vec::new()))
 }

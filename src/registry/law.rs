@@ -11,7 +11,7 @@
 //! a claim that the computation confirms or refutes.
 
 use super::{Chain, Role};
-use crate::scalar::Rational;
+use crate::scalar::Scalar;
 use num_traits::Zero;
 use serde::Serialize;
 
@@ -29,7 +29,7 @@ pub struct Law {
 /// misprints left out. A reference before that point stands for a form of the display that the
 /// code computes independently (the left side dL/dt of (11), (53), (59), by automatic
 /// differentiation); references after it (the particle model's torque) are not forms.
-fn forms(chain: &Chain<Rational>) -> Vec<&Rational> {
+fn forms<S>(chain: &Chain<S>) -> Vec<&S> {
     let last = chain
         .iter()
         .rposition(|s| matches!(s.role, Role::Printed | Role::Corrected))
@@ -43,7 +43,7 @@ fn forms(chain: &Chain<Rational>) -> Vec<&Rational> {
 
 /// The `=` (counted from 1) between consecutive display forms whose values differ, over every
 /// chain of a check (a chain of vector components is one display, so the breaks are merged).
-pub fn breaks(chains: &[Chain<Rational>]) -> Vec<u32> {
+pub fn breaks<S: Scalar + Zero>(chains: &[Chain<S>]) -> Vec<u32> {
     let mut out: Vec<u32> = Vec::new();
     for c in chains {
         let f = forms(c);

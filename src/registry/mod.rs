@@ -8,6 +8,7 @@
 //! degree-counting mode. [`check`] runs the checks; [`sample`] draws the states.
 
 pub mod check;
+mod exact_point;
 mod floor_eqs;
 mod general_eqs;
 mod jensen_eqs;
@@ -28,7 +29,7 @@ pub use side::{corrected, misprint, printed, reference, vector_chains, Chain, Ro
 
 use crate::ladder::floor_phase::Slide;
 use crate::ladder::{Ladder, State};
-use crate::scalar::{Bound, Degree, Dim, Rational, Sym};
+use crate::scalar::{Bound, Degree, Dim, Modp, Rational, Sym};
 use crate::system::{Point, System};
 use serde::Serialize;
 
@@ -85,6 +86,8 @@ pub struct FloorFns {
     pub bound: FloorChains<Bound>,
     /// In exact rationals.
     pub exact: FloorChains<Rational>,
+    /// In residues modulo a prime (the fast path of the exact points).
+    pub modular: FloorChains<Modp>,
     /// In degree-counting mode (Schwartz-Zippel).
     pub degree: FloorChains<Degree>,
     /// In symbolic rational functions (proofs).
@@ -101,6 +104,7 @@ macro_rules! floor_fns {
             float: $f,
             bound: $f,
             exact: $f,
+            modular: $f,
             degree: $f,
             symbolic: $f,
             units: $f,
@@ -117,6 +121,8 @@ pub struct LadderFns {
     pub bound: LadderChains<Bound>,
     /// In exact rationals.
     pub exact: LadderChains<Rational>,
+    /// In residues modulo a prime (the fast path of the exact points).
+    pub modular: LadderChains<Modp>,
     /// In degree-counting mode (Schwartz-Zippel).
     pub degree: LadderChains<Degree>,
     /// In symbolic rational functions (proofs).
@@ -134,6 +140,8 @@ pub struct ParticleFns {
     pub bound: ParticleChains<Bound>,
     /// In exact rationals.
     pub exact: ParticleChains<Rational>,
+    /// In residues modulo a prime (the fast path of the exact points).
+    pub modular: ParticleChains<Modp>,
     /// In degree-counting mode (Schwartz-Zippel).
     pub degree: ParticleChains<Degree>,
     /// In symbolic rational functions (proofs).
@@ -150,6 +158,7 @@ macro_rules! ladder_fns {
             float: $f,
             bound: $f,
             exact: $f,
+            modular: $f,
             degree: $f,
             symbolic: $f,
             units: $f,
@@ -165,6 +174,7 @@ macro_rules! particle_fns {
             float: $f,
             bound: $f,
             exact: $f,
+            modular: $f,
             degree: $f,
             symbolic: $f,
             units: $f,

@@ -8,6 +8,7 @@
 //!   Algorithms*, sec. 3.3) that gives every float check its tolerance,
 //! * in [`Rational`] (exact, zero residual) with time derivatives by [`Jet`], a first-order dual
 //!   number over any scalar,
+//! * in [`Modp`], exact residues modulo the prime 2⁶¹ − 1 (the fast path of the exact checks),
 //! * in [`Degree`], which carries no value at all but the degree of the rational function being
 //!   built, so the Schwartz-Zippel bound of every exact check is computed, not guessed, and
 //! * in [`Sym`], exact rational functions of the variables themselves (normal form modulo
@@ -25,6 +26,7 @@ mod bound;
 mod degree;
 mod dimension;
 mod jet;
+mod modp;
 pub mod poly;
 mod sym_print;
 mod symbolic;
@@ -33,6 +35,7 @@ pub use bound::{Bound, UNIT_ROUNDOFF};
 pub use degree::Degree;
 pub use dimension::{Clash, Dim, Dimension, Exponent, Inconsistency};
 pub use jet::Jet;
+pub use modp::{Modp, MODULUS};
 pub use sym_print::{latex, text};
 pub use symbolic::{Den, Sym};
 

@@ -57,6 +57,9 @@ pub struct EquationResult {
     pub sz_bound: f64,
     /// log10 of `sz_bound`, which does not underflow when the bound is below 1e-308.
     pub sz_bound_log10: f64,
+    /// log10 of the bound from the exact rational points alone, which holds whatever the prime of
+    /// the modular points ([`crate::registry::check`]).
+    pub sz_bound_rational_log10: f64,
     /// For on-shell equations: shown to fail off the equation of motion.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fails_off_shell: Option<bool>,
@@ -190,6 +193,10 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
         sz_bound_log10: reports
             .iter()
             .map(|r| r.sz_bound_log10)
+            .fold(f64::NEG_INFINITY, f64::max),
+        sz_bound_rational_log10: reports
+            .iter()
+            .map(|r| r.sz_bound_rational_log10)
             .fold(f64::NEG_INFINITY, f64::max),
         fails_off_shell: if on_shell.is_empty() {
             None

@@ -13,12 +13,17 @@ pub fn summary_line(results: &[EquationResult], cfg: &Config, seconds: f64) -> S
         .iter()
         .map(|r| r.sz_bound_log10)
         .fold(f64::NEG_INFINITY, f64::max);
+    let worst_rational = results
+        .iter()
+        .map(|r| r.sz_bound_rational_log10)
+        .fold(f64::NEG_INFINITY, f64::max);
     let (proved, sampled_only, proof_seconds) = proof_counts(results);
     format!(
-        "{} equations: {v} verified, {e} erratum, {d} definition, {f} failed; {checks} checks, {} float cases each, {exact} exact (Schwartz-Zippel bound ≤ 1e{}); {proved} proved symbolically, {sampled_only} sampled only ({proof_seconds:.2} s of proofs); {seconds:.2} s",
+        "{} equations: {v} verified, {e} erratum, {d} definition, {f} failed; {checks} checks, {} float cases each, {exact} exact (Schwartz-Zippel bound ≤ 1e{}; ≤ 1e{} from the rational points alone); {proved} proved symbolically, {sampled_only} sampled only ({proof_seconds:.2} s of proofs); {seconds:.2} s",
         results.len(),
         cfg.float_cases,
-        worst_sz.ceil()
+        worst_sz.ceil(),
+        worst_rational.ceil()
     )
 }
 
