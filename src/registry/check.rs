@@ -31,21 +31,16 @@ use super::sample::{
 };
 use super::{Chain, Check, Eval, Role};
 use crate::scalar::{Bound, Degree, Rational, Scalar, UNIT_ROUNDOFF};
-use num_traits::Zero;
 use rand::Rng;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
+// The exact points' constants and verdict live with the points (`exact_point`), which this
+// module drives; re-exported here, where the rest of the crate looks for them.
+pub use super::exact_point::{exact_residual, EXACT_HEIGHT, EXACT_SET_SIZE, RATIONAL_POINTS};
+
 /// A float chain passes when its scaled residual is at most this.
 pub const TOLERANCE_FACTOR: f64 = 4.0;
-/// Exact coordinates are integers of magnitude below this, 2⁶⁰: every sample set then lies in an
-/// interval of at most 2⁶¹ − 1 integers, whose residues modulo p = 2⁶¹ − 1 are distinct.
-pub const EXACT_HEIGHT: i64 = 1 << 60;
-/// The smallest sample set, the positive coordinates (masses, m, l, g) 1..2⁶⁰: 2⁶⁰ − 1 elements.
-pub const EXACT_SET_SIZE: f64 = 1_152_921_504_606_846_975.0;
-/// Exact points per check evaluated in rationals (the first ones); the rest are evaluated mod p.
-pub const RATIONAL_POINTS: usize = 1;
-
 /// How much checking to do.
 #[derive(Clone, Copy, Debug)]
 pub struct Config {
@@ -138,27 +133,6 @@ pub fn float_residual(values: &[Chain<f64>], bounds: &[Chain<Bound>]) -> (f64, &
         }
     }
     worst
-}
-
-/// Exact verdict, in rationals or residues: (every non-misprint side equal to the first, per
-/// misprint side whether it differs).
-pub fn exact_residual<S: Scalar + Zero>(chains: &[Chain<S>]) -> (bool, Vec<(&'static str, bool)>) {
-    let mut all_equal = true;
-    let mut misprints = Vec::new();
-    for c in chains {
-        let Some(base) = c.iter().position(|s| s.role != Role::Misprint) else {
-            continue;
-        };
-        for s in c {
-            let differs = !(s.value.clone() - c[base].value.clone()).is_zero();
-            if s.role == Role::Misprint {
-                misprints.push((s.label, differs));
-            } else if differs {
-                all_equal = false;
-            }
-        }
-    }
-    (all_equal, misprints)
 }
 
 fn residual_degree(chains: &[Chain<Degree>]) -> u32 {

@@ -1,19 +1,47 @@
 //! The exact points of a check: random integers, evaluated in rationals or modulo a prime.
 //!
 //! A point is a set of random integers below 2⁶⁰ in magnitude (see
-//! [`super::check::EXACT_HEIGHT`]), turned into a state by the generic builders of
+//! [`EXACT_HEIGHT`]), turned into a state by the generic builders of
 //! [`super::sample`] in the number type it is evaluated in: [`Rational`] (exact), or [`Modp`]
 //! (exact modulo p = 2⁶¹ − 1, the fast path; a point where a denominator vanishes mod p gives an
 //! undefined residue, and is then redone in rationals). [`super::check`] says which points are
 //! which and what the bound is.
 
-use super::check::{exact_residual, EXACT_HEIGHT, RATIONAL_POINTS};
 use super::sample::{exact_ladder, floor_state, particle_system, LadderSample, ParticleSample};
 use super::sample::{EXTRA, LADDER_DRAWS, PER_PARTICLE};
-use super::{Chain, FloorChains, LadderChains, ParticleChains};
+use super::{Chain, FloorChains, LadderChains, ParticleChains, Role};
 use crate::scalar::{Modp, Rational, Scalar};
 use num_traits::Zero;
 use rand::Rng;
+
+/// Exact coordinates are integers of magnitude below this, 2⁶⁰: every sample set then lies in an
+/// interval of at most 2⁶¹ − 1 integers, whose residues modulo p = 2⁶¹ − 1 are distinct.
+pub const EXACT_HEIGHT: i64 = 1 << 60;
+/// The smallest sample set, the positive coordinates (masses, m, l, g) 1..2⁶⁰: 2⁶⁰ − 1 elements.
+pub const EXACT_SET_SIZE: f64 = 1_152_921_504_606_846_975.0;
+/// Exact points per check evaluated in rationals (the first ones); the rest are evaluated mod p.
+pub const RATIONAL_POINTS: usize = 1;
+
+/// Exact verdict, in rationals or residues: (every non-misprint side equal to the first, per
+/// misprint side whether it differs).
+pub fn exact_residual<S: Scalar + Zero>(chains: &[Chain<S>]) -> (bool, Vec<(&'static str, bool)>) {
+    let mut all_equal = true;
+    let mut misprints = Vec::new();
+    for c in chains {
+        let Some(base) = c.iter().position(|s| s.role != Role::Misprint) else {
+            continue;
+        };
+        for s in c {
+            let differs = !(s.value.clone() - c[base].value.clone()).is_zero();
+            if s.role == Role::Misprint {
+                misprints.push((s.label, differs));
+            } else if differs {
+                all_equal = false;
+            }
+        }
+    }
+    (all_equal, misprints)
+}
 
 /// A signed coordinate, |v| < 2⁶⁰.
 pub(crate) fn signed(rng: &mut impl Rng) -> i64 {
