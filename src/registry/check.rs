@@ -11,14 +11,16 @@
 //!
 //! Exact verdict: the coordinates of an exact point are random integers below 2⁶⁰ in magnitude.
 //! The first [`RATIONAL_POINTS`] points of a check are evaluated in exact rationals; the others
-//! modulo the prime p = 2⁶¹ − 1 ([`Modp`](crate::scalar::Modp)), a hundred times faster (a rational point spends most
-//! of its time reducing fractions of thousands of bits). A point where a denominator vanishes mod
-//! p is evaluated in rationals instead. A false identity whose residual numerator has degree ≤ d
-//! passes one point with probability at most d/N, N = [`EXACT_SET_SIZE`] (Schwartz-Zippel): at a
-//! rational point always, at a modular point when p does not divide every coefficient of that
-//! numerator (see [`Modp`](crate::scalar::Modp)); the sample sets lie in an interval shorter than p, so their residues
-//! are distinct. [`CheckReport::sz_bound_log10`] is the bound over all points,
-//! [`CheckReport::sz_bound_rational_log10`] over the rational points alone (which holds for any p).
+//! modulo the prime p = 2⁶¹ − 1 ([`Modp`](crate::scalar::Modp)): a rational point spends most of
+//! its time reducing fractions of thousands of bits (`ladder verify --cases 10000
+//! --exact-points 100` took 153 s of CPU with rational points only, 12.6 s with modular ones). A
+//! point where a denominator vanishes mod p is evaluated in rationals instead. A false identity
+//! whose residual numerator has degree ≤ d passes one point with probability at most d/N,
+//! N = [`EXACT_SET_SIZE`] (Schwartz-Zippel): at a rational point always, at a modular point when
+//! p does not divide every coefficient of that numerator (see [`Modp`](crate::scalar::Modp)); the
+//! sample sets lie in an interval shorter than p, so their residues are distinct.
+//! [`CheckReport::sz_bound_log10`] is the bound over all points,
+//! [`CheckReport::sz_bound_rational_log10`] over the rational points alone (any p).
 
 use super::exact_point::{
     at_point, exact_ladder_ints, exact_particle_ints, floor_point, ladder_point, particle_point,
