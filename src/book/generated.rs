@@ -42,7 +42,7 @@ pub fn index_page(data: &BookData, home: &BTreeMap<u32, String>, readme: &str) -
 {}</p>\n<p>See also: <a href=\"errata.html\">the errata</a>, <a href=\"methods.html\">the derivations</a>, \
 <a href=\"figures.html\">the figures</a>.</p>\n\
 <h2 id=\"summary\">Every display</h2>\n<p>res/bound: the worst float residual in units of its running error bound \
-(pass ≤ 4); exact: the residual at random rational points.</p>\n\
+(pass ≤ 4); exact: the residual at random exact points (the first in rationals, the rest modulo p = 2^61 − 1).</p>\n\
 <table><thead><tr><th>eq</th><th>sec</th><th>title</th><th>kind</th><th>status</th><th>proved</th><th>units</th>\
 <th>res/bound</th><th>exact</th></tr></thead>\n<tbody>\n{rows}</tbody></table>\n{readme}",
         data.results.len(),

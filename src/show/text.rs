@@ -278,8 +278,11 @@ pub fn render(s: &Shown) -> String {
         );
         let _ = writeln!(
             o,
-            "    exact: {} random rational points, {} with a nonzero residual (chance a false identity passes ≤ 1e{:.0})",
-            c.exact_points, c.exact_failures, c.sz_bound_log10.ceil()
+            "    exact: {} random points ({} in rationals, the rest modulo p = 2^61 − 1), {} with a nonzero residual (chance a false identity passes ≤ 1e{:.0})",
+            c.exact_points,
+            c.exact_points.min(crate::registry::check::RATIONAL_POINTS),
+            c.exact_failures,
+            c.sz_bound_log10.ceil()
         );
         for (label, failed) in &c.misprints {
             let _ = writeln!(
