@@ -88,7 +88,7 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
 /// The misprints as a teacher reads them: each formula in Unicode (the LaTeX is in `--json`),
 /// which form of the display is misprinted, and the exact point its residual is taken at.
 pub fn misprint_text(list: &[ErratumReport]) -> String {
-    use crate::show::unicode::unicode;
+    use crate::print::unicode::unicode;
     let mut out = String::from(
         "misprinted equations (the printed form fails exactly; the corrected form holds; LaTeX in --json):\n",
     );
