@@ -3,12 +3,18 @@
 //! the Rust forms' verdict (`units_code`); a dimensional slip planted in the printed LaTeX is
 //! reported naming the printed form.
 
+use sliding_ladder::print::quantity::{resolve, Model};
+use sliding_ladder::print::symbols::{table, Entry};
 use sliding_ladder::print::unicode::unicode;
 use sliding_ladder::registry::check::Config;
 use sliding_ladder::registry::print_check::units::print_units;
 use sliding_ladder::registry::print_check::{injections, print_chains, Typo};
-use sliding_ladder::registry::units::{equation_units, Units};
+use sliding_ladder::registry::sample::{LadderSample, ParticleSample};
+use sliding_ladder::registry::units::{
+    dimensioned_ladder, dimensioned_particles, equation_units, Units,
+};
 use sliding_ladder::registry::{equations, Equation};
+use sliding_ladder::scalar::{Dim, Dimension};
 use sliding_ladder::verify::{judge, judge_print, Status};
 
 fn quick() -> Config {
@@ -190,4 +196,98 @@ fn every_display_reads_in_unicode() {
         let u = unicode(sliding_ladder::registry::printed_latex(n));
         assert!(!u.contains('\\') && !u.contains('{'), "({n}): {u}");
     }
+}
+
+/// The dimension of a symbol table entry's quantity, from the models: the ladder first, else a
+/// system of particles (at particle 0 when the quantity is per particle). `Some(None)` when it
+/// is an exact zero there (of any dimension), `None` when it resolves nowhere.
+fn quantity_dimension(entry: &Entry) -> Option<Option<Dimension>> {
+    let (l, s) = dimensioned_ladder(LadderSample::Kinematic);
+    let (sys, p) = dimensioned_particles(ParticleSample::General, 3);
+    let models = [Model::ladder(l, s), Model::particles(sys, p)];
+    let mut zero = false;
+    for m in &models {
+        for i in [None, Some(0)] {
+            let Ok(v) = resolve(&entry.quantity, i, m) else {
+                continue;
+            };
+            let c = v.components();
+            assert!(
+                c.iter().all(|d| d.inconsistency().is_none()),
+                "{}",
+                entry.latex
+            );
+            match c.iter().find_map(Dim::dimension) {
+                Some(d) => return Some(Some(d)),
+                None => zero = true,
+            }
+        }
+    }
+    zero.then_some(None)
+}
+
+/// The symbol table (`equations/symbols.toml`, which `ladder show` prints and the print's
+/// check reads): every entry's stated dimension is the dimension of the model quantity it
+/// denotes, and its SI unit spells that dimension. A wrong dimension or unit is caught. Two
+/// sorts cannot be compared, and are counted: θ, which the model never holds (it carries sin θ
+/// and cos θ; the angle is a pure number, `1`), and quantities that are an exact zero in the
+/// models (a contact force component the ladder's point does not feel, a moved origin at rest
+/// at the old one), which have any dimension.
+#[test]
+fn every_symbol_of_the_table_has_the_dimension_and_unit_it_states() {
+    let (mut compared, mut zeros) = (0, Vec::new());
+    for entry in table() {
+        let stated =
+            Dimension::parse(&entry.dimension).unwrap_or_else(|e| panic!("{}: {e}", entry.latex));
+        assert_eq!(
+            Dimension::from_si(&entry.unit),
+            Ok(stated),
+            "{}: the unit {} is not {}",
+            entry.latex,
+            entry.unit,
+            entry.dimension
+        );
+        match quantity_dimension(entry) {
+            Some(Some(found)) => {
+                assert_eq!(
+                    found, stated,
+                    "{} ({}): the model gives {found}",
+                    entry.latex, entry.quantity
+                );
+                compared += 1;
+            }
+            Some(None) => zeros.push(entry.quantity.clone()),
+            None => {
+                assert_eq!(
+                    entry.quantity, "theta",
+                    "{} resolves in no model",
+                    entry.latex
+                );
+                assert!(stated.is_dimensionless());
+            }
+        }
+    }
+    eprintln!(
+        "symbol table: {compared} of {} entries compared, exact zeros {zeros:?}",
+        table().len()
+    );
+    assert!(
+        zeros.len() <= 4 && compared + zeros.len() + 1 == table().len(),
+        "{zeros:?}"
+    );
+    // Failable: an entry claiming the wall force is a momentum is caught.
+    let mut wrong = table()
+        .iter()
+        .find(|e| e.quantity == "wall_force")
+        .expect("F_w in the table")
+        .clone();
+    assert_eq!(
+        quantity_dimension(&wrong),
+        Some(Some(Dimension::new(1, 1, -2)))
+    );
+    wrong.dimension = "M L T^-1".into();
+    assert_ne!(
+        quantity_dimension(&wrong).flatten(),
+        Dimension::parse(&wrong.dimension).ok()
+    );
 }
