@@ -349,8 +349,18 @@ fn legend(out: &mut String, d: &Diagram, left: f64) {
         &format!("m = {} kg, l = {} m", d.mass_length.0, d.mass_length.1),
         "black",
         15,
-        30.0,
+        if d.description.is_some() { 20.0 } else { 30.0 },
     );
+    if let Some(what) = &d.description {
+        put(out, what, "#D00", 15, 20.0);
+        put(
+            out,
+            &format!("at ({}, {}) m", n3(d.p.0), n3(d.p.1)),
+            "#D00",
+            15,
+            30.0,
+        );
+    }
     for (i, a) in d.arrows.iter().enumerate() {
         let colour = COLOURS[i % COLOURS.len()];
         put(
