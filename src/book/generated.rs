@@ -216,9 +216,14 @@ pub fn fall_figures(root: &Path, problems: &mut Vec<String>) -> Vec<(String, Vec
 
 fn caption(name: &str) -> String {
     if let Some(what) = name.strip_prefix("fall-") {
+        let what = match what.trim_end_matches(".svg") {
+            "trajectory" => "θ and θ̇ against t; the separation from the wall and the flat landing are marked",
+            "forces-t" => "the contact forces against t; the separation, the flat landing and the wall force reaching zero are marked",
+            "forces-theta" => "the contact forces against θ; the separation angle of footnote 4 and the wall force reaching zero are marked (they coincide)",
+            other => other,
+        };
         return format!(
-            "The full fall of scenes/full-fall.toml, simulated when this book was built ({}): the separation from the wall, the flat landing and the wall force reaching zero are marked.",
-            what.trim_end_matches(".svg").replace('-', " ")
+            "The full fall of scenes/full-fall.toml, simulated when this book was built: {what}."
         );
     }
     match name.strip_prefix("forces-").and_then(|n| n.strip_suffix(".svg")) {
