@@ -35,4 +35,5 @@ mod scene_checks;
 mod scene_errors;
 pub mod scene_parts;
 mod scene_shape;
+pub mod scene_work;
 pub mod units;
