@@ -26,16 +26,19 @@ const OMEGA: f64 = 0.866_025_403_784_438_6;
 /// Largest h ω of a fixed step with penalty springs.
 const MAX_STEP_FREQUENCY: f64 = 0.2;
 
-/// t_s in units of T from (θ0, θ̇0 T): the exact wall phase, and for a start below 1e-100 the
-/// time its linear growth e^{Ω t} takes to reach 1e-100 (within a few percent: an estimate).
-fn separation_time(theta0: f64, rate: f64) -> f64 {
+/// t_s in units of T from θ0 and θ̇0 (in SI, with T = `unit` seconds): the exact wall phase, and
+/// for a start below 1e-100 the time its linear growth e^{Ω t} takes to reach 1e-100 (within a
+/// few percent: an estimate). The size of the start is formed scaled by 2^600, so a subnormal
+/// θ0 or θ̇0 T does not round to zero (which would give an infinite estimate).
+fn separation_time(theta0: f64, rate0: f64, unit: f64) -> f64 {
     const FLOOR: f64 = 1e-100;
-    let size = theta0.max(rate / OMEGA);
-    let (lead, theta, rate) = if size < FLOOR {
-        let grow = FLOOR / size;
-        ((grow.ln() / OMEGA), theta0 * grow, rate * grow)
+    let big = 2f64.powi(600);
+    let size_big = (theta0 * big).max(rate0 * big * unit / OMEGA);
+    let (lead, theta, rate) = if size_big < FLOOR * big {
+        let grow = FLOOR * big / size_big;
+        (grow.ln() / OMEGA, theta0 * grow, rate0 * grow * unit)
     } else {
-        (0.0, theta0, rate)
+        (0.0, theta0, rate0 * unit)
     };
     lead + PhaseOne::new(theta, rate, OMEGA * OMEGA)
         .ok()
@@ -69,7 +72,7 @@ pub fn phase_steps(
         End::Time(t) => t / unit,
         _ => f64::INFINITY,
     };
-    let t_s = separation_time(theta0, rate);
+    let t_s = separation_time(theta0, rate0, unit);
     let Control::Fixed(h) = control else {
         return match vibration(ladder, contact) {
             Some((omega, _, _)) if method != "radau5" => [omega * t_s.min(t_end) / 3.0, 0.0],
@@ -102,7 +105,7 @@ pub(super) fn check_work(
         return Ok(());
     };
     let unit = Units::of(ladder).time;
-    let t_s = separation_time(start.0, start.1 * unit);
+    let t_s = separation_time(start.0, start.1, unit);
     let step_span = i.step.as_ref().or(i.scaled_step.as_ref()).map(|s| s.span());
     let steps = phase_steps(ladder, start, method, control, end, contact);
     if let Some((omega, kappa, gamma)) = vibration(ladder, contact) {
