@@ -2,7 +2,6 @@
 //! claims of its prose and the units it states; exit 1 when one of them does not hold as recorded.
 
 use crate::registry::check::Config;
-use crate::registry::units::Units;
 use crate::verify::errata::{errata, ErratumReport};
 use clap::Args;
 use serde_json::json;
@@ -28,9 +27,7 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
     let all_good = prose
         .iter()
         .all(|c| c.holds && c.printed_fails != Some(false))
-        && list
-            .iter()
-            .all(|r| r.units.corrected != Units::Inconsistent);
+        && list.iter().all(|r| r.units.holds());
     if json_out {
         let prose_errata: Vec<_> = prose.iter().filter(|c| c.erratum.is_some()).collect();
         let out = json!({"errata": list, "prose": prose_errata, "claims": prose,
@@ -88,7 +85,7 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
 /// The misprints as a teacher reads them: each formula in Unicode (the LaTeX is in `--json`),
 /// which form of the display is misprinted, and the exact point its residual is taken at.
 pub fn misprint_text(list: &[ErratumReport]) -> String {
-    use crate::show::unicode::unicode;
+    use crate::print::unicode::unicode;
     let mut out = String::from(
         "misprinted equations (the printed form fails exactly; the corrected form holds; LaTeX in --json):\n",
     );
@@ -144,6 +141,13 @@ pub fn misprint_text(list: &[ErratumReport]) -> String {
             minus(&r.corrected_residual)
         );
         out += &format!("     {}\n", r.units.doc_line().trim_start_matches("- "));
+        if r.units.printed != r.units.printed_code {
+            out += &format!(
+                "     ! units: the print's form is {}, its Rust encoding {}\n",
+                r.units.printed.name(),
+                r.units.printed_code.name()
+            );
+        }
     }
     out
 }

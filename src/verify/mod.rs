@@ -103,11 +103,19 @@ pub struct EquationResult {
     pub proof: String,
     /// Seconds spent on the symbolic proofs of this equation.
     pub proof_seconds: f64,
-    /// Dimensional analysis of every form ([`crate::registry::units`]).
+    /// Dimensional analysis of every printed form ([`crate::registry::print_check::units`]);
+    /// for an extension beyond the note (no print), of its Rust forms.
     pub units: Units,
-    /// Why `inconsistent` (the clash and where) or `not applicable`.
+    /// Why `inconsistent` (the offending sum and the printed form's index, as `ladder show N`
+    /// numbers the forms) or `not applicable`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub units_detail: Option<String>,
+    /// Dimensional analysis of the Rust forms ([`crate::registry::units`]); it must agree with
+    /// `units` (a disagreement is a problem).
+    pub units_code: Units,
+    /// Why the Rust forms are `inconsistent` or `not applicable`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub units_code_detail: Option<String>,
     /// Forms in the display's print (issue 9; 0 for an extension beyond the note).
     pub print_forms: usize,
     /// Forms of the print parsed and evaluated.
@@ -238,7 +246,9 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
         proof: "not attempted".into(),
         proof_seconds: 0.0,
         units,
-        units_detail,
+        units_detail: units_detail.clone(),
+        units_code: units,
+        units_code_detail: units_detail,
         print_forms: 0,
         print_parsed: 0,
         print_checked: 0,
@@ -320,12 +330,51 @@ pub fn judge_print(
         .code_mismatches
         .iter()
         .map(|c| format!("print vs code: {c}"));
-    let problems: Vec<String> = p.problems.into_iter().chain(unparsed).chain(code).collect();
+    let units = print_units_problems(&mut r, e, latex);
+    let problems: Vec<String> = p
+        .problems
+        .into_iter()
+        .chain(unparsed)
+        .chain(code)
+        .chain(units)
+        .collect();
     if !problems.is_empty() {
         r.problems.extend(problems);
         r.status = Status::Failed;
     }
     r
+}
+
+/// The print's units verdict becomes the display's `units` (the Rust forms' stays as
+/// `units_code`); returns the problems: a form that must hold and is inconsistent, or a verdict
+/// that differs from the Rust forms'.
+fn print_units_problems(r: &mut EquationResult, e: &Equation, latex: &str) -> Vec<String> {
+    let found = match crate::registry::print_check::units::print_units(e, latex) {
+        Ok(f) => f,
+        // The print check reports a display that does not parse; units have nothing to judge.
+        Err(err) => {
+            r.units = Units::NotApplicable;
+            r.units_detail = Some(format!("print not parsed: {err}"));
+            return Vec::new();
+        }
+    };
+    let mut problems: Vec<String> = found
+        .problems
+        .iter()
+        .map(|p| format!("units (print): {p}"))
+        .collect();
+    (r.units, r.units_detail) = found.verdict();
+    if r.units != r.units_code {
+        problems.push(format!(
+            "units: the print is {}, the Rust forms are {}{}",
+            r.units.name(),
+            r.units_code.name(),
+            r.units_code_detail
+                .as_deref()
+                .map_or(String::new(), |d| format!(" ({d})"))
+        ));
+    }
+    problems
 }
 
 /// Run every check of every equation (on two threads) and judge each equation.
