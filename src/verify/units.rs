@@ -145,17 +145,17 @@ pub fn prose_units() -> Vec<ProseUnits> {
         reference("x_cm × m v_cm of the particles", orbital),
         printed("−m l² θ̇", -(m.clone() * sq(&len) * w.clone())),
     ]]);
-    // Footnote 4: F_w = m l sin θ ω² (3 cos θ − 2 cos θ0), ω² = 3g/4l; cos θ0 a pure number.
+    // Footnote 4: F_w = m l sin θ Ω² (3 cos θ − 2 cos θ0), Ω² = 3g/4l; cos θ0 a pure number.
     let cos0 = Dim::int(1).require_dimensionless("cos θ0");
     let f_w = m.clone()
         * len.clone()
         * s.sin.clone()
-        * l.omega_squared()
+        * l.capital_omega_squared()
         * (Dim::int(3) * s.cos.clone() - Dim::int(2) * cos0.clone());
     let footnote = judge_chains(&[
         vec![
             reference("F_w, eq. (14)", wall_force(&l, &s)),
-            printed("m l sin θ ω² (3 cos θ − 2 cos θ0)", f_w),
+            printed("m l sin θ Ω² (3 cos θ − 2 cos θ0)", f_w),
         ],
         vec![
             reference("cos θ", s.cos.clone()),
@@ -203,7 +203,7 @@ pub fn prose_units() -> Vec<ProseUnits> {
     vec![
         row(
             "sec. 2.1, footnote 4",
-            "F_w = m l sin θ ω² (3 cos θ − 2 cos θ0), zero at cos θ = (2/3) cos θ0",
+            "F_w = m l sin θ Ω² (3 cos θ − 2 cos θ0), zero at cos θ = (2/3) cos θ0",
             footnote,
             false,
         ),
