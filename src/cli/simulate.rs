@@ -238,7 +238,7 @@ pub fn summary(scene: &Scene, o: &Outcome) -> String {
             sig(p.angle.to_degrees(), 7),
             sig(p.rate, 13),
             sig(p.angle.cos(), 16),
-            sig(separation_cosine(scene.ladder.omega2(), scene.theta0, scene.rate0), 16)
+            sig(separation_cosine(scene.ladder.big_omega2(), scene.theta0, scene.rate0), 16)
         ),
         None => s += "  separation   not reached\n",
     }

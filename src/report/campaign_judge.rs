@@ -112,10 +112,11 @@ fn local_error(scene: &Scene, unit: f64) -> f64 {
 /// a subnormal θ̇0 keeps its digits) and Carlson's closed form from there.
 pub fn reference_separation_time(scene: &Scene) -> Option<f64> {
     let unit = Units::of(&scene.ladder).time;
-    let (t0, theta, rate) = match linear_lead_in(scene.ladder.omega2(), scene.theta0, scene.rate0) {
-        Some((t, th, w)) => (t / unit, th, w * unit),
-        None => (0.0, scene.theta0, scene.rate0 * unit),
-    };
+    let (t0, theta, rate) =
+        match linear_lead_in(scene.ladder.big_omega2(), scene.theta0, scene.rate0) {
+            Some((t, th, w)) => (t / unit, th, w * unit),
+            None => (0.0, scene.theta0, scene.rate0 * unit),
+        };
     let p = PhaseOne::new(theta, rate, OMEGA2).ok()?;
     Some(t0 + p.separation()?.time)
 }

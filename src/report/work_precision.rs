@@ -203,7 +203,7 @@ pub fn measure(
     timing: Timing,
     mut tick: impl FnMut(&str),
 ) -> Result<Vec<Run>, String> {
-    let exact = PhaseOne::new(base.theta0, base.rate0, base.ladder.omega2())?
+    let exact = PhaseOne::new(base.theta0, base.rate0, base.ladder.big_omega2())?
         .separation()
         .ok_or("the start is the equilibrium: no separation")?;
     let flat_ref = match base.end {

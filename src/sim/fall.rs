@@ -182,7 +182,7 @@ impl Event<2> for SeparationEvent {
     fn direction(&self) -> Direction {
         Direction::Falling
     }
-    /// d/dt (ω² cos θ − θ̇²) = −ω² sin θ θ̇ − 2 θ̇ θ̈.
+    /// d/dt (Ω² cos θ − θ̇²) = −Ω² sin θ θ̇ − 2 θ̇ θ̈.
     fn rate(&self, _t: f64, y: &[f64; 2], dy: &[f64; 2]) -> Option<f64> {
         Some(-self.0 * y[0].sin() * dy[0] - 2.0 * y[1] * dy[1])
     }
@@ -217,7 +217,7 @@ pub fn run(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
     // Tiny starts take their linear lead-in in SI, before scaling: θ̇0 T underflows (5e-324 T
     // = 0 for T < 1), and a subnormal product keeps only part of θ̇0's digits. The lead-in ends
     // at an amplitude (~1e-9) where the conversion is exact to rounding.
-    let lead = super::extreme::linear_lead_in(scene.ladder.omega2(), scene.theta0, scene.rate0)
+    let lead = super::extreme::linear_lead_in(scene.ladder.big_omega2(), scene.theta0, scene.rate0)
         .map(|(t, theta, rate)| (t / units.time, theta, rate * units.time));
     let mut out = run_rigid(&units.scale_scene(scene), lead, max_steps)
         .map(|o| units.outcome_to_si(o))
@@ -257,7 +257,8 @@ fn run_rigid(
         });
     let Some(control) = scene.control else {
         // The exact reference (wall phase only; the scene validation guarantees end = separation).
-        let p = PhaseOne::new(y_lead[0], y_lead[1], ladder.omega2()).map_err(RunError::Start)?;
+        let p =
+            PhaseOne::new(y_lead[0], y_lead[1], ladder.big_omega2()).map_err(RunError::Start)?;
         let s = p
             .separation()
             .ok_or_else(|| RunError::Start("the ladder never leaves the wall".into()))?;
@@ -311,7 +312,7 @@ fn run_rigid(
     let mut phi_s = None;
     let mut end1 = if in_complement {
         let sys = complement::ComplementWall::new(&ladder);
-        let sep_event = complement::ComplementSeparation(sys.omega2);
+        let sep_event = complement::ComplementSeparation(sys.big_omega2);
         let mut e = integrate_phase(
             &sys,
             &mut stepper,
@@ -324,7 +325,7 @@ fn run_rigid(
         e.y = complement::to_theta(&e.y);
         e
     } else {
-        let sep_event = SeparationEvent(wall.omega2);
+        let sep_event = SeparationEvent(wall.big_omega2);
         integrate_phase(
             &wall,
             &mut stepper,

@@ -118,9 +118,9 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
         |x| x >= 0.0,
         "a number >= 0 (rad/s)",
     )?;
-    let omega2 = ladder.omega2();
-    if rate0 * rate0 >= omega2 * theta0.cos() {
-        let max = (omega2 * theta0.cos()).sqrt();
+    let big_omega2 = ladder.big_omega2();
+    if rate0 * rate0 >= big_omega2 * theta0.cos() {
+        let max = (big_omega2 * theta0.cos()).sqrt();
         return Err(cx.err(Some(s.angular_velocity.span()), "start.angular_velocity", format!(
             "{rate0} rad/s is too fast: the wall would have to pull at the start; allowed: below sqrt(3g cos θ0 / 4l) = {max}"
         )));

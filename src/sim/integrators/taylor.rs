@@ -95,7 +95,7 @@ pub fn sin_cos_coefficient<S: Scalar>(inv_k: &S, d: &[S], sin: &[S], cos: &[S]) 
 /// On entry `theta[0]`, `rate[0]`, `sin[0] = sin θ0`, `cos[0] = cos θ0` hold the start; on return
 /// every slice holds its series to order p. `inv[k] = 1/k` for k ≤ p.
 pub fn wall_series<S: Scalar>(
-    omega2: &S,
+    big_omega2: &S,
     inv: &[S],
     theta: &mut [S],
     rate: &mut [S],
@@ -111,7 +111,7 @@ pub fn wall_series<S: Scalar>(
         }
         if k < p {
             theta[k + 1] = rate[k].clone() * inv[k + 1].clone();
-            rate[k + 1] = omega2.clone() * sin[k].clone() * inv[k + 1].clone();
+            rate[k + 1] = big_omega2.clone() * sin[k].clone() * inv[k + 1].clone();
         }
     }
 }
@@ -254,12 +254,12 @@ fn horner(c: &[f64], tau: f64) -> f64 {
 }
 
 /// The wall phase's series in f64, for `WallPhase::taylor_series`.
-pub fn wall_series_f64(omega2: f64, s: &mut Series<2>) {
+pub fn wall_series_f64(big_omega2: f64, s: &mut Series<2>) {
     let p = s.order;
     let inv = &INV[..p + 2];
     let [theta, rate] = &mut s.y;
     wall_series(
-        &omega2,
+        &big_omega2,
         inv,
         &mut theta[..=p],
         &mut rate[..=p],
@@ -272,7 +272,7 @@ pub fn wall_series_f64(omega2: f64, s: &mut Series<2>) {
 /// with sin θ = cos φ), to order p = `phi.len() − 1`; `sin`, `cos` are those of φ. Same entry
 /// and return conventions as [`wall_series`].
 pub fn complement_series<S: Scalar>(
-    omega2: &S,
+    big_omega2: &S,
     inv: &[S],
     phi: &mut [S],
     rate: &mut [S],
@@ -288,18 +288,18 @@ pub fn complement_series<S: Scalar>(
         }
         if k < p {
             phi[k + 1] = rate[k].clone() * inv[k + 1].clone();
-            rate[k + 1] = -(omega2.clone() * cos[k].clone() * inv[k + 1].clone());
+            rate[k + 1] = -(big_omega2.clone() * cos[k].clone() * inv[k + 1].clone());
         }
     }
 }
 
 /// The complement wall phase's series in f64, for `ComplementWall::taylor_series`.
-pub fn complement_series_f64(omega2: f64, s: &mut Series<2>) {
+pub fn complement_series_f64(big_omega2: f64, s: &mut Series<2>) {
     let p = s.order;
     let inv = &INV[..p + 2];
     let [phi, rate] = &mut s.y;
     complement_series(
-        &omega2,
+        &big_omega2,
         inv,
         &mut phi[..=p],
         &mut rate[..=p],
