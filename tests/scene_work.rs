@@ -162,3 +162,37 @@ fn the_step_estimate_matches_the_run() {
         );
     }
 }
+
+/// The campaign's finding F1: penalty contact from θ0 = 1e-12 with dop853 at tolerance 1e-10
+/// reported a separation at θ = 1.4e-12 (exit 0). Such a start is refused up front; from a start
+/// of 100 tolerances on, the separation is the rigid one within the model error.
+#[test]
+fn an_explicit_method_from_a_start_below_its_force_error_is_refused() {
+    let springs = "model = \"penalty\"\nstiffness = 1e6\ndamping = 0.0";
+    let scene = |angle: &str, method: &str| {
+        text(
+            springs,
+            &format!("method = \"{method}\"\ntolerance = 1e-10"),
+            "separation",
+        )
+        .replace("angle = 0.3", &format!("angle = {angle}"))
+    };
+    let e = parse("s.toml", &scene("1e-12", "dop853"))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with(
+            "s.toml:13: [integrator] method: penalty contact from a start of size 1.0e-12 rad"
+        ) && e.contains("a start ≥ 1e-8 rad"),
+        "{e}"
+    );
+    // radau5 is accepted there; dop853 from the least start it allows separates where the
+    // rigid ladder does, cos θ_s = (2/3) cos θ0, within the κ = 1e6 model error (~1e-6).
+    assert!(parse("s.toml", &scene("1e-12", "radau5")).is_ok());
+    let least = number_after(&e, "a start ≥ ");
+    let sc = parse("s.toml", &scene(&format!("{least:e}"), "dop853")).unwrap();
+    let out = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    let theta = out.separation.expect("separates").angle;
+    let rigid = (2.0 / 3.0 * least.cos()).acos();
+    assert!((theta - rigid).abs() < 1e-5, "θ_s = {theta}, rigid {rigid}");
+}

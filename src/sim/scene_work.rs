@@ -23,6 +23,8 @@ use super::units::Units;
 
 /// Ω in the scene's units (Ω² = 3/4).
 const OMEGA: f64 = 0.866_025_403_784_438_6;
+/// How many tolerances the start of a penalty run with an explicit method must measure.
+const SPURIOUS_MARGIN: f64 = 100.0;
 /// Largest h ω of a fixed step with penalty springs.
 const MAX_STEP_FREQUENCY: f64 = 0.2;
 
@@ -142,6 +144,27 @@ pub(super) fn check_work(
                         steps[0]
                     ),
                 ));
+            }
+            Control::Tolerance(tol) if method != "radau5" => {
+                // An explicit method's force components carry an absolute error of about the
+                // tolerance (in m g), while the wall force near the start is about (3/4) θ m g:
+                // from a start below 100 × tolerance a spurious zero of the integrated force can
+                // pass for the separation (the campaign's finding F1: θ0 = 1e-12, dop853, tol
+                // 1e-10 reported θ_s = 1.4e-12). The size is formed scaled, as above.
+                let big = 2f64.powi(600);
+                let size_big = (start.0 * big).max(start.1 * big * unit / OMEGA);
+                let least = SPURIOUS_MARGIN * tol;
+                if size_big < least * big {
+                    return Err(cx.err(
+                        Some(i.method.span()),
+                        "integrator.method",
+                        format!(
+                            "penalty contact from a start of size {:.1e} rad (θ0 or θ̇0 √(l/g)/Ω) with \"{method}\" at tolerance {tol:e}: its force error (~ tolerance × m g) would swamp the wall force (~ θ m g) and fake a separation; allowed: method = \"radau5\", a start ≥ {least:e} rad, or a tolerance ≤ {:.1e}",
+                            size_big / big,
+                            size_big / big / SPURIOUS_MARGIN
+                        ),
+                    ));
+                }
             }
             Control::Tolerance(_) => {}
         }
