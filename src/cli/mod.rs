@@ -57,7 +57,7 @@ pub fn run() -> ExitCode {
     };
     match cli.command {
         None => {
-            let verified = verify::verify(false, &Config::default(), None);
+            let verified = verify::verify(false, &Config::default(), None, false);
             println!();
             let simulated = simulate::simulate_builtin_classic();
             if verified == ExitCode::SUCCESS {

@@ -2,6 +2,7 @@
 
 pub mod chart;
 pub mod diagram;
+pub mod diagram_svg;
 pub mod digits;
 pub mod fall_figures;
 pub mod files;
