@@ -35,4 +35,5 @@ mod scene_checks;
 mod scene_errors;
 pub mod scene_parts;
 mod scene_shape;
+mod start;
 pub mod units;
