@@ -250,3 +250,59 @@ fn the_committed_figures_are_what_the_code_draws_and_each_section_embeds_its_own
         );
     }
 }
+
+#[test]
+fn ladder_diagram_draws_the_books_figures_and_any_point() {
+    let run = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+            .arg("diagram")
+            .args(args)
+            .output()
+            .expect("runs")
+    };
+    // At the default state (the worked example) the command draws the book's figure.
+    let a = run(&["--about", "A"]);
+    assert_eq!(a.status.code(), Some(0));
+    let committed = std::fs::read_to_string(default_dir().join("figures/forces-a.svg")).unwrap();
+    assert_eq!(String::from_utf8_lossy(&a.stdout), committed);
+    // A point of the ladder a quarter of the way from C: its coordinate force is −m a_P with
+    // a_P = (3/4) a_C + (1/4) a_D, from the corners' own motions.
+    let p = run(&["--about", "ladder:1/4", "--at", "m=2, theta=40deg"]);
+    assert_eq!(p.status.code(), Some(0));
+    let svg = String::from_utf8_lossy(&p.stdout);
+    let (ladder, st) = {
+        let at = sliding_ladder::show::at::parse_at("m=2, theta=40deg").unwrap();
+        sliding_ladder::show::state::build(&at).float
+    };
+    let acc = |k| Reference::Corner(k).motion(&ladder, &st).a;
+    let (ac, ad) = (acc(Corner::C), acc(Corner::D));
+    let f = (
+        -ladder.m * (0.75 * ac.x + 0.25 * ad.x),
+        -ladder.m * (0.75 * ac.y + 0.25 * ad.y),
+    );
+    let row = format!("F_P = ({}, {}) N", n3(f.0), n3(f.1));
+    assert!(
+        svg.contains(&row),
+        "no '{row}' in the diagram about ladder:1/4"
+    );
+    assert!(svg.contains("the point of the ladder 1/4 of the way from C to D"));
+    // A point fixed in the lab has no coordinate force.
+    let lab = run(&["--about", "lab:1/2,1"]);
+    assert_eq!(lab.status.code(), Some(0));
+    assert!(!String::from_utf8_lossy(&lab.stdout).contains("F_P"));
+    // Bad input: exit 2 and one line on stderr, nothing on stdout.
+    for bad in [
+        &["--about", "Z"][..],
+        &["--about", "ladder:3/2"],
+        &["--at", "m=-1"],
+    ] {
+        let out = run(bad);
+        assert_eq!(out.status.code(), Some(2), "{bad:?}");
+        assert_eq!(
+            String::from_utf8_lossy(&out.stderr).lines().count(),
+            1,
+            "{bad:?}"
+        );
+        assert!(out.stdout.is_empty(), "{bad:?}");
+    }
+}

@@ -210,3 +210,35 @@ fn the_schwartz_zippel_sentence_states_the_worst_bound() {
     rows[1].sz_bound_log10 = -3.5;
     assert!(schwartz_zippel_sentence(&rows).contains("at most 1e-3 "));
 }
+
+#[test]
+fn verify_only_runs_the_chosen_displays_and_exits_0_when_they_pass() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args([
+            "verify",
+            "--only",
+            "25,1",
+            "--cases",
+            "5",
+            "--exact-points",
+            "1",
+        ])
+        .output()
+        .expect("runs");
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    // The table (above the summary line) has the two rows asked for.
+    let table = text.split(" equations: ").next().unwrap();
+    assert_eq!(row_lines(table).len(), 2, "{text}");
+    assert!(
+        text.contains("2 equations: 1 verified, 0 erratum, 1 definition, 0 failed"),
+        "{text}"
+    );
+    // An unknown item is bad input: exit 2, one line on stderr.
+    let bad = std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(["verify", "--only", "25,999"])
+        .output()
+        .expect("runs");
+    assert_eq!(bad.status.code(), Some(2));
+    assert_eq!(String::from_utf8_lossy(&bad.stderr).lines().count(), 1);
+}

@@ -44,6 +44,8 @@ pub struct Diagram {
     pub state: (f64, f64, f64),
     /// m (kg) and l (m), for the caption.
     pub mass_length: (f64, f64),
+    /// What P is, when it is not one of A-E (for the legend).
+    pub description: Option<String>,
 }
 
 fn xy(v: &crate::vector::Vec3<f64>) -> (f64, f64) {
@@ -90,6 +92,7 @@ pub fn diagram(
         arrows,
         state: (st.sin.atan2(st.cos), st.rate, st.accel),
         mass_length: (ladder.m, ladder.l),
+        description: None,
     }
 }
 

@@ -50,8 +50,23 @@ fn label(out: &mut String, at: (f64, f64), anchor: &str, colour: &str, size: u32
 stroke=\"white\" stroke-width=\"4\" stroke-linejoin=\"round\" paint-order=\"stroke\">{}</text>",
         at.0,
         at.1,
-        esc(text)
+        subscript(text, size)
     );
+}
+
+/// A symbol as typeset: `F_w` is F with a lowered, smaller w (an SVG `tspan`); text without
+/// `_` is only escaped.
+pub fn subscript(text: &str, size: u32) -> String {
+    match text.split_once('_') {
+        Some((base, sub)) => format!(
+            "{}<tspan dy=\"{:.1}\" font-size=\"{}\">{}</tspan>",
+            esc(base),
+            0.3 * f64::from(size),
+            size * 3 / 4,
+            esc(sub)
+        ),
+        None => esc(text),
+    }
 }
 
 /// The arrow of one force: a shaft from where it acts to its tip (the force times the scale),
@@ -349,8 +364,18 @@ fn legend(out: &mut String, d: &Diagram, left: f64) {
         &format!("m = {} kg, l = {} m", d.mass_length.0, d.mass_length.1),
         "black",
         15,
-        30.0,
+        if d.description.is_some() { 20.0 } else { 30.0 },
     );
+    if let Some(what) = &d.description {
+        put(out, what, "#D00", 15, 20.0);
+        put(
+            out,
+            &format!("at ({}, {}) m", n3(d.p.0), n3(d.p.1)),
+            "#D00",
+            15,
+            30.0,
+        );
+    }
     for (i, a) in d.arrows.iter().enumerate() {
         let colour = COLOURS[i % COLOURS.len()];
         put(

@@ -1,5 +1,7 @@
 //! Reports: the work-precision sweep, output files written all-or-nothing, SVG plots.
 
+pub mod campaign;
+pub mod campaign_judge;
 pub mod chart;
 pub mod diagram;
 pub mod diagram_svg;

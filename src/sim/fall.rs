@@ -16,8 +16,8 @@ use super::scene::{ContactModel, End, Scene, MAX_END_TIME};
 use super::units::Units;
 use std::cell::Cell;
 
-/// Default hard limit on steps per phase.
-pub const MAX_STEPS: u64 = 10_000_000;
+/// Default hard limit on steps per phase (the scene checks refuse a scene that needs more).
+pub use super::scene_parts::MAX_STEPS;
 /// Dense samples per step kept for plots and monitors.
 const SAMPLES_PER_STEP: usize = 4;
 

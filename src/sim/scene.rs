@@ -16,6 +16,7 @@ pub use super::scene_errors::SceneError;
 use super::scene_parts::Raw;
 pub use super::scene_parts::{ContactModel, End, MAX_END_TIME, MAX_STEP, MIN_STEP, MIN_TOLERANCE};
 use super::scene_shape::{check_shape, value_error};
+use super::scene_work::check_work;
 use super::start::{check_theta_only, start_angle};
 use super::units::Units;
 use std::path::Path;
@@ -140,6 +141,17 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
     if control.is_none() {
         check_theta_only(&cx, &start, "the exact closed form")?;
     }
+    let i = raw.integrator.get_ref();
+    check_work(
+        &cx,
+        i,
+        &ladder,
+        (theta0, rate0),
+        &method,
+        control,
+        end,
+        contact,
+    )?;
     Ok(Scene {
         file: file.to_string(),
         ladder,

@@ -92,3 +92,6 @@ pub const MIN_STEP: f64 = 1e-6;
 pub const MAX_STEP: f64 = 1.0;
 /// Longest end time accepted, in units of √(l/g).
 pub const MAX_END_TIME: f64 = 1e4;
+/// Hard limit on the steps of one phase; a scene that would need more is refused up front
+/// (`scene_work`).
+pub const MAX_STEPS: u64 = 10_000_000;

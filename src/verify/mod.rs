@@ -382,6 +382,11 @@ pub fn verify_all(cfg: &Config) -> Vec<EquationResult> {
     verify_list(equations(), cfg)
 }
 
+/// Run every check of the given equations only (`ladder verify --only`).
+pub fn verify_equations(eqs: Vec<Equation>, cfg: &Config) -> Vec<EquationResult> {
+    verify_list(eqs, cfg)
+}
+
 /// Run the checks of the extension beyond the note, (P1)-(P5).
 pub fn verify_extensions(cfg: &Config) -> Vec<EquationResult> {
     verify_list(crate::registry::extensions(), cfg)
