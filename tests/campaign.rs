@@ -72,6 +72,7 @@ fn scene(theta0: f64, tol: f64, end: End, outputs: Vec<Output>) -> Scene {
             gravity: 9.81,
         },
         theta0,
+        phi0: None,
         rate0: 0.0,
         method: "dop853".into(),
         control: Some(Control::Tolerance(tol)),

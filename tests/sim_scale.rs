@@ -29,6 +29,7 @@ fn scene(ladder: Ladder, theta0: f64, rate0: f64, method: &str, tol: f64) -> Sce
         file: "(scale sweep)".into(),
         ladder,
         theta0,
+        phi0: None,
         rate0,
         method: method.into(),
         control: Some(Control::Tolerance(tol)),

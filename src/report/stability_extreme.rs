@@ -264,6 +264,7 @@ fn scene(ladder: Ladder, theta0: f64, rate0: f64, end: End, outputs: Vec<Output>
         file: "(built in: stability)".into(),
         ladder,
         theta0,
+        phi0: None,
         rate0,
         method: "dop853".into(),
         control: Some(Control::Tolerance(TOL)),

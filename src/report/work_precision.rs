@@ -97,6 +97,7 @@ pub fn scene_at(theta0: f64, rate0: f64) -> Scene {
             gravity: 9.81,
         },
         theta0,
+        phi0: None,
         rate0,
         method: "dop853".into(),
         control: Some(Control::Tolerance(1e-12)),

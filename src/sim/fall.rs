@@ -283,8 +283,13 @@ fn run_rigid(
     let y0 = [scene.theta0, scene.rate0];
     // Near the floor the wall phase runs in φ = π/2 − θ (see `super::complement`).
     let in_complement = complement::applies(y_lead[0]);
+    // A start given as its complement φ0 (`angle_from_floor`) enters exactly (θ0 cannot hold it).
+    let phi0 = scene.phi0.filter(|_| t0 == 0.0);
     let start = match in_complement {
-        true => [complement::complement(y_lead[0]), -y_lead[1]],
+        true => [
+            phi0.unwrap_or_else(|| complement::complement(y_lead[0])),
+            -y_lead[1],
+        ],
         false => y_lead,
     };
     // The stepper runs in time since the lead-in (its step floor is relative to |t|).

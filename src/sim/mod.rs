@@ -36,4 +36,5 @@ mod scene_errors;
 pub mod scene_parts;
 mod scene_shape;
 pub mod scene_work;
+mod start;
 pub mod units;

@@ -50,7 +50,9 @@ pub(super) struct RawLadder {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawStart {
-    pub(super) angle: Spanned<f64>,
+    pub(super) angle: Option<Spanned<f64>>,
+    /// The start as its complement π/2 − θ0 (exclusive with `angle`; see `scene::start_angle`).
+    pub(super) angle_from_floor: Option<Spanned<f64>>,
     pub(super) angular_velocity: Spanned<f64>,
 }
 #[derive(Deserialize)]
