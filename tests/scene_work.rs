@@ -195,4 +195,14 @@ fn an_explicit_method_from_a_start_below_its_force_error_is_refused() {
     let theta = out.separation.expect("separates").angle;
     let rigid = (2.0 / 3.0 * least.cos()).acos();
     assert!((theta - rigid).abs() < 1e-5, "θ_s = {theta}, rigid {rigid}");
+    // Run the refused start anyway (the check bypassed): the separation it reports is the
+    // spurious one at θ ≈ θ0, nowhere near the rigid arccos(2/3).
+    let mut sc = sc;
+    sc.theta0 = 1e-12;
+    let wrong = fall::run(&sc, fall::MAX_STEPS)
+        .unwrap()
+        .separation
+        .expect("a (spurious) separation")
+        .angle;
+    assert!(wrong < 1e-6, "bypassed run gave θ_s = {wrong}");
 }
