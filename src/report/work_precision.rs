@@ -100,6 +100,7 @@ pub fn scene_at(theta0: f64, rate0: f64) -> Scene {
         rate0,
         method: "dop853".into(),
         control: Some(Control::Tolerance(1e-12)),
+        order: None,
         end: End::Separation,
         outputs: vec![
             Output::SeparationAngle,
