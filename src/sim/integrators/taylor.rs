@@ -307,7 +307,7 @@ pub fn separation_factor_series(omega2: f64, trig: &[f64], rate: &[f64], out: &m
 #[inline(always)]
 fn square(k: usize, r: &[f64]) -> f64 {
     let mut acc = 0.0;
-    for j in 0..(k + 1) / 2 {
+    for j in 0..k.div_ceil(2) {
         acc += r[j] * r[k - j];
     }
     acc *= 2.0;
