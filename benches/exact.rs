@@ -22,21 +22,21 @@ const STARTS: [(&str, f64, f64, f64); 6] = [
 ];
 
 /// Textbook form for a start from rest: m = k² = 1 − sin²(θ₀/2), sin²ψ = (s² − k'²)/(k²s²).
-fn textbook_separation_time(theta0: f64, omega2: f64) -> f64 {
+fn textbook_separation_time(theta0: f64, big_omega2: f64) -> f64 {
     let kp2 = (0.5 * theta0).sin().powi(2);
     let m = 1.0 - kp2;
     let cos_s = 2.0 / 3.0 * theta0.cos();
     let s2 = 0.5 * (1.0 - cos_s);
     let psi = ((s2 - kp2) / (m * s2)).sqrt().asin();
-    ellip::ellipf(psi, m).unwrap_or(f64::NAN) / omega2.sqrt()
+    ellip::ellipf(psi, m).unwrap_or(f64::NAN) / big_omega2.sqrt()
 }
 
 fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("new_and_separation");
-    for (label, theta0, rate0, omega2) in STARTS {
+    for (label, theta0, rate0, big_omega2) in STARTS {
         g.bench_function(label, |b| {
             b.iter(|| {
-                let p = PhaseOne::new(black_box(theta0), black_box(rate0), black_box(omega2));
+                let p = PhaseOne::new(black_box(theta0), black_box(rate0), black_box(big_omega2));
                 p.unwrap().separation()
             })
         });
@@ -44,15 +44,15 @@ fn bench(c: &mut Criterion) {
     g.finish();
 
     let mut g = c.benchmark_group("separation_only");
-    for (label, theta0, rate0, omega2) in STARTS {
-        let p = PhaseOne::new(theta0, rate0, omega2).unwrap();
+    for (label, theta0, rate0, big_omega2) in STARTS {
+        let p = PhaseOne::new(theta0, rate0, big_omega2).unwrap();
         g.bench_function(label, |b| b.iter(|| black_box(&p).separation()));
     }
     g.finish();
 
     let mut g = c.benchmark_group("trajectory");
-    for (label, theta0, rate0, omega2) in STARTS {
-        let p = PhaseOne::new(theta0, rate0, omega2).unwrap();
+    for (label, theta0, rate0, big_omega2) in STARTS {
+        let p = PhaseOne::new(theta0, rate0, big_omega2).unwrap();
         let s = p.separation().unwrap();
         let (t, theta) = (0.5 * s.time, 0.5 * (theta0 + s.angle));
         g.bench_function(format!("theta_rate/{label}"), |b| {

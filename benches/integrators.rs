@@ -47,7 +47,7 @@ impl System<f64, Vector2<f64>> for Peer {
 
 fn peer_theta(dop853: bool, tol: f64, theta0: f64, rate0: f64, t: f64) -> f64 {
     let y0 = Vector2::new(theta0, rate0);
-    let sys = Peer(LADDER.omega2());
+    let sys = Peer(LADDER.big_omega2());
     let last = if dop853 {
         let mut s = ode_solvers::Dop853::new(sys, 0.0, t, t, y0, tol, tol);
         s.set_output(OutputType::Sparse);
@@ -99,7 +99,7 @@ fn configure() -> Criterion {
 
 fn bench_peers(c: &mut Criterion) {
     for (name, theta0, rate0) in SCENES {
-        let sep = PhaseOne::new(theta0, rate0, LADDER.omega2())
+        let sep = PhaseOne::new(theta0, rate0, LADDER.big_omega2())
             .unwrap()
             .separation()
             .unwrap();
@@ -146,14 +146,14 @@ fn bench_at_1e12(c: &mut Criterion) {
     let target = 1e-12;
     for (name, theta0, rate0) in &SCENES[..2] {
         let (theta0, rate0) = (*theta0, *rate0);
-        let exact = PhaseOne::new(theta0, rate0, LADDER.omega2())
+        let exact = PhaseOne::new(theta0, rate0, LADDER.big_omega2())
             .unwrap()
             .separation()
             .unwrap();
         let mut g = c.benchmark_group(format!("{name}/separation-at-1e-12"));
         g.bench_function("closed-form", |b| {
             b.iter(|| {
-                PhaseOne::new(black_box(theta0), black_box(rate0), LADDER.omega2())
+                PhaseOne::new(black_box(theta0), black_box(rate0), LADDER.big_omega2())
                     .ok()
                     .and_then(|p| p.separation())
             })
@@ -242,7 +242,7 @@ fn bench_methods(c: &mut Criterion) {
     ];
     for (name, theta0, rate0) in SCENES {
         let mut g = c.benchmark_group(format!("{name}/separation-with-event"));
-        let exact = PhaseOne::new(theta0, rate0, LADDER.omega2())
+        let exact = PhaseOne::new(theta0, rate0, LADDER.big_omega2())
             .unwrap()
             .separation()
             .unwrap();

@@ -1,8 +1,8 @@
 //! `ladder book`: every display (1)-(90) and (P1)-(P5) is in the book as block MathML with the
-//! status and proof verdict that `ladder verify --json` gives, no raw LaTeX is left, every link
-//! and image resolves inside the book, and the errata page lists exactly the errata. The
-//! checker (tests/book_check) is shown to catch a planted wrong status, broken link, raw LaTeX,
-//! missing formula and missing erratum. Both commands run with 100 float cases per check (the
+//! status, proof verdict and units verdict (of the print) that `ladder verify --json` gives, no
+//! raw LaTeX is left, every link and image resolves inside the book, and the errata page lists
+//! exactly the errata. The checker (tests/book_check) is shown to catch a planted wrong status,
+//! wrong units verdict, broken link, raw LaTeX, missing formula and missing erratum. Both commands run with 100 float cases per check (the
 //! statuses do not depend on the count), which keeps this test to a few seconds.
 
 mod book_check;
@@ -71,6 +71,43 @@ fn every_display_is_mathml_with_the_status_of_ladder_verify_and_every_link_resol
     );
 }
 
+/// The figures page carries the full fall simulated at build time: trajectory and forces, as
+/// files of the book (offline: no reference outside it), with the events marked on them.
+#[test]
+fn the_figures_page_shows_the_full_fall_with_its_events() {
+    let (dir, _) = book();
+    let page = std::fs::read_to_string(dir.join("figures.html")).unwrap();
+    for (name, marks) in [
+        (
+            "fall-trajectory.svg",
+            &["separation, t = ", "flat, t = "][..],
+        ),
+        (
+            "fall-forces-t.svg",
+            &["separation, t = ", "flat, t = ", "F_w = 0"][..],
+        ),
+        ("fall-forces-theta.svg", &["F_w = 0"][..]),
+    ] {
+        assert!(
+            page.contains(&format!("src=\"figures/{name}\"")),
+            "{name} not on the page"
+        );
+        let svg = std::fs::read_to_string(dir.join("figures").join(name)).unwrap();
+        for m in marks {
+            assert!(svg.contains(m), "{name} lacks the mark '{m}'");
+        }
+        assert!(
+            !svg.contains("href=\"http"),
+            "{name} fetches from the network"
+        );
+        // A smooth curve: the polylines have float coordinates.
+        assert!(
+            svg.contains("<polyline") || svg.contains("<path"),
+            "{name} has no curve"
+        );
+    }
+}
+
 /// Copy the book, apply `edit` to `file`, and return what the checker says.
 fn planted(tag: &str, file: &str, edit: impl Fn(&str) -> String) -> Vec<String> {
     let (dir, json) = book();
@@ -119,6 +156,15 @@ fn planted_defects_are_caught() {
         )
     });
     caught(&p, "display 11 says erratum");
+    let p = planted("units", "b-milne.html", |s| {
+        // (68) is Appendix B's one display whose print is dimensionally inconsistent.
+        s.replacen(
+            "data-units=\"inconsistent\"",
+            "data-units=\"consistent\"",
+            1,
+        )
+    });
+    caught(&p, "display 68 says units");
     let p = planted("proof", "index.html", |s| {
         s.replacen(
             "data-number=\"12\" data-status=\"verified\" data-proved=\"true\"",

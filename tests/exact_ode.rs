@@ -13,22 +13,22 @@ use sliding_ladder::sim::exact::PhaseOne;
 const C: f64 = 38.0;
 
 /// Largest residual/tolerance over the checks of one motion at times t = frac·t_s.
-/// `omega2` is the Ω² the checks believe in (the motion may have been built with another).
-fn worst_ratio(p: &PhaseOne, omega2: f64, t_end: f64) -> f64 {
+/// `big_omega2` is the Ω² the checks believe in (the motion may have been built with another).
+fn worst_ratio(p: &PhaseOne, big_omega2: f64, t_end: f64) -> f64 {
     let (theta0, rate0) = (p.theta0(), p.rate0());
     // Initial conditions: with eq. (5) they fix the solution. The start phase is an R_F value
     // of relative error ≤ C·u, i.e. a time shift ≤ C·u·2K/Ω (none on the separatrix, where
     // the formula has no phase), plus the start's own condition κu/Ω.
-    let omega = omega2.sqrt();
+    let omega = big_omega2.sqrt();
     let k = p.quarter_period();
     let shift = if k.is_finite() {
         C * U * 2.0 * k / omega
     } else {
         0.0
-    } + input_condition(theta0, rate0, omega2) * U / omega;
+    } + input_condition(theta0, rate0, big_omega2) * U / omega;
     let (theta_start, rate_start) = p.theta_rate(0.0);
     let r0 = (theta_start - theta0).abs() / (C * U * theta0 + rate0 * shift + f64::MIN_POSITIVE);
-    let accel0 = omega2 * theta0.sin();
+    let accel0 = big_omega2 * theta0.sin();
     let r00 = (rate_start - rate0).abs() / (C * U * rate0 + accel0 * shift + f64::MIN_POSITIVE);
     let mut worst = r0.max(r00);
     for frac in [0.0, 0.1, 0.3, 0.6, 0.9, 1.0] {
@@ -36,20 +36,21 @@ fn worst_ratio(p: &PhaseOne, omega2: f64, t_end: f64) -> f64 {
         // First order: (θ, θ̇) with their t-derivatives.
         let (th, rt) = p.theta_rate_dual(Dual64::new(t, 1.0));
         let (theta, rate) = (th.re, rt.re);
-        let accel = omega2 * theta.sin();
+        let accel = big_omega2 * theta.sin();
         // dθ/dt from the angle formula against the separate rate formula.
         let r1 = (th.eps - rate).abs() / (C * U * rate.max(f64::MIN_POSITIVE));
         // Eq. (5) on the rate formula: dθ̇/dt = Ω² sin θ; δθ moves sin θ by cos θ δθ.
-        let scale = C * U * (accel + omega2 * theta * theta.cos());
+        let scale = C * U * (accel + big_omega2 * theta * theta.cos());
         let r2 = (rt.eps - accel).abs() / scale;
         // Eq. (5) on the angle formula alone, by nested duals: d²θ/dt².
         let t2 = Dual::new(Dual64::new(t, 1.0), Dual64::new(1.0, 0.0));
         let (th2, _) = p.theta_rate_dual(t2);
         let r3 = (th2.eps.eps - accel).abs() / scale;
         // Energy: θ̇² = θ̇₀² + 2Ω²(cos θ₀ − cos θ), the difference of cosines as a product.
-        let drop = 4.0 * omega2 * (0.5 * (theta - theta0)).sin() * (0.5 * (theta + theta0)).sin();
+        let drop =
+            4.0 * big_omega2 * (0.5 * (theta - theta0)).sin() * (0.5 * (theta + theta0)).sin();
         let residual = rate * rate - rate0 * rate0 - drop;
-        let tol = C * U * (2.0 * rate * rate + 2.0 * omega2 * theta * theta.sin())
+        let tol = C * U * (2.0 * rate * rate + 2.0 * big_omega2 * theta * theta.sin())
             + 4.0 * U * (rate * rate + rate0 * rate0 + drop.abs());
         let r4 = residual.abs() / tol;
         worst = worst.max(r1).max(r2).max(r3).max(r4);
@@ -84,8 +85,8 @@ fn closed_form_obeys_equation_of_motion_and_energy() {
 #[test]
 fn equation_of_motion_check_fails_for_wrong_omega() {
     for row in moving_rows() {
-        let omega2 = row[2] * (1.0 + 1e-9) * (1.0 + 1e-9);
-        let p = PhaseOne::new(row[0], row[1], omega2).unwrap();
+        let big_omega2 = row[2] * (1.0 + 1e-9) * (1.0 + 1e-9);
+        let p = PhaseOne::new(row[0], row[1], big_omega2).unwrap();
         assert!(
             worst_ratio(&p, row[2], row[4]) > 1.0,
             "Ω(1 + 1e-9) passed for {row:?}"

@@ -10,8 +10,8 @@ use sliding_ladder::sim::exact::PhaseOne;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// θ̇(θ₀ + d), with cos θ₀ − cos θ = 2 sin(d/2) sin(θ₀ + d/2) to keep small offsets exact.
-fn rate_at_offset(theta0: f64, rate0: f64, omega2: f64, d: f64) -> f64 {
-    (rate0 * rate0 + 4.0 * omega2 * (0.5 * d).sin() * (theta0 + 0.5 * d).sin()).sqrt()
+fn rate_at_offset(theta0: f64, rate0: f64, big_omega2: f64, d: f64) -> f64 {
+    (rate0 * rate0 + 4.0 * big_omega2 * (0.5 * d).sin() * (theta0 + 0.5 * d).sin()).sqrt()
 }
 
 /// Neumaier's compensated sum.
@@ -81,9 +81,9 @@ fn tanh_sinh(g: impl Fn(f64) -> f64, len: f64) -> (f64, f64) {
     }
 }
 
-fn quadrature_time(theta0: f64, rate0: f64, omega2: f64, theta: f64) -> (f64, f64) {
+fn quadrature_time(theta0: f64, rate0: f64, big_omega2: f64, theta: f64) -> (f64, f64) {
     tanh_sinh(
-        |d| 1.0 / rate_at_offset(theta0, rate0, omega2, d),
+        |d| 1.0 / rate_at_offset(theta0, rate0, big_omega2, d),
         theta - theta0,
     )
 }
@@ -92,12 +92,12 @@ fn quadrature_time(theta0: f64, rate0: f64, omega2: f64, theta: f64) -> (f64, f6
 /// integrand (two sines, products, a sum of positives, a root and a reciprocal) and 6u of the
 /// nodes and weights, 2u of the compensated sum, 4u of the closed form: 16u·t; the rounding of
 /// the upper end θ₀ + (θ − θ₀), worth u·θ/θ̇(θ); and the start's own condition κu/Ω.
-fn tolerance(theta0: f64, rate0: f64, omega2: f64, theta: f64, t: f64, estimate: f64) -> f64 {
-    let end_rate = rate_at_offset(theta0, rate0, omega2, theta - theta0);
+fn tolerance(theta0: f64, rate0: f64, big_omega2: f64, theta: f64, t: f64, estimate: f64) -> f64 {
+    let end_rate = rate_at_offset(theta0, rate0, big_omega2, theta - theta0);
     estimate
         + 16.0 * U * t
         + U * theta / end_rate
-        + input_condition(theta0, rate0, omega2) * U / omega2.sqrt()
+        + input_condition(theta0, rate0, big_omega2) * U / big_omega2.sqrt()
 }
 
 /// Largest |closed − quadrature| / tolerance over the table, for separation times and for
@@ -105,8 +105,8 @@ fn tolerance(theta0: f64, rate0: f64, omega2: f64, theta: f64, t: f64, estimate:
 fn worst_ratio(make: impl Fn(f64, f64, f64) -> PhaseOne) -> f64 {
     let mut worst = 0.0f64;
     for row in SEPARATION.iter().filter(|row| row[4] > 0.0) {
-        let (theta0, rate0, omega2) = (row[0], row[1], row[2]);
-        let p = make(theta0, rate0, omega2);
+        let (theta0, rate0, big_omega2) = (row[0], row[1], row[2]);
+        let p = make(theta0, rate0, big_omega2);
         let s = p.separation().unwrap();
         for frac in [0.25, 0.5, 1.0] {
             let theta = theta0 + frac * (s.angle - theta0);
@@ -115,8 +115,8 @@ fn worst_ratio(make: impl Fn(f64, f64, f64) -> PhaseOne) -> f64 {
             } else {
                 p.time_to_angle(theta)
             };
-            let (quad, est) = quadrature_time(theta0, rate0, omega2, theta);
-            let tol = tolerance(theta0, rate0, omega2, theta, quad, est);
+            let (quad, est) = quadrature_time(theta0, rate0, big_omega2, theta);
+            let tol = tolerance(theta0, rate0, big_omega2, theta, quad, est);
             worst = worst.max((closed - quad).abs() / tol);
         }
     }
@@ -152,26 +152,26 @@ fn random_starts_match_quadrature() {
         } else {
             10f64.powf(rng.gen_range(-12.0..0.19))
         };
-        let omega2 = 10f64.powf(rng.gen_range(-2.0..2.0));
+        let big_omega2 = 10f64.powf(rng.gen_range(-2.0..2.0));
         let rate0 = if rng.gen_bool(0.3) {
             0.0
         } else {
-            omega2.sqrt() * 10f64.powf(rng.gen_range(-15.0..0.0))
+            big_omega2.sqrt() * 10f64.powf(rng.gen_range(-15.0..0.0))
         };
         if theta0 >= FRAC_PI_2 || (theta0 == 0.0 && rate0 == 0.0) {
             continue;
         }
-        let p = PhaseOne::new(theta0, rate0, omega2).unwrap();
+        let p = PhaseOne::new(theta0, rate0, big_omega2).unwrap();
         let s = p.separation().unwrap();
         if s.time == 0.0 {
             continue;
         }
         let closed = p.time_to_angle(s.angle);
-        let (quad, est) = quadrature_time(theta0, rate0, omega2, s.angle);
-        let tol = tolerance(theta0, rate0, omega2, s.angle, quad, est);
+        let (quad, est) = quadrature_time(theta0, rate0, big_omega2, s.angle);
+        let tol = tolerance(theta0, rate0, big_omega2, s.angle, quad, est);
         assert!(
             (closed - quad).abs() <= tol,
-            "start ({theta0}, {rate0}, {omega2}): {closed} vs {quad} ± {tol}"
+            "start ({theta0}, {rate0}, {big_omega2}): {closed} vs {quad} ± {tol}"
         );
         // The separation time from δ must agree with t(θ_s) up to the error of θ_s (within 4
         // ulps, tests/exact_reference.rs), which t(θ) turns into 4 ulp(θ_s)/θ̇_s.
@@ -179,7 +179,7 @@ fn random_starts_match_quadrature() {
         let tol2 = 8.0 * U * s.time + 4.0 * ulp / s.rate;
         assert!(
             (s.time - closed).abs() <= tol2,
-            "({theta0}, {rate0}, {omega2}): {} vs {closed} ± {tol2}",
+            "({theta0}, {rate0}, {big_omega2}): {} vs {closed} ± {tol2}",
             s.time
         );
         worst = worst.max((closed - quad).abs() / tol);

@@ -53,8 +53,8 @@ fn separation_within_four_ulps_of_mpmath() {
 fn separation_check_fails_for_wrong_omega() {
     // Ω·(1 + 1e-9): times scale by 1/Ω, so the check must see some 4e6 ulps.
     let worst = worst_separation_ulps(|row| {
-        let omega2 = row[2] * (1.0 + 1e-9) * (1.0 + 1e-9);
-        PhaseOne::new(row[0], row[1], omega2)
+        let big_omega2 = row[2] * (1.0 + 1e-9) * (1.0 + 1e-9);
+        PhaseOne::new(row[0], row[1], big_omega2)
             .unwrap()
             .separation()
             .unwrap()
@@ -261,8 +261,8 @@ fn bad_starts_are_rejected_with_a_message() {
         (0.3, 0.0, f64::NAN),
         (1e-150, 1e-150, 1.0),
     ];
-    for (theta0, rate0, omega2) in bad {
-        let err = PhaseOne::new(theta0, rate0, omega2).expect_err("must be rejected");
+    for (theta0, rate0, big_omega2) in bad {
+        let err = PhaseOne::new(theta0, rate0, big_omega2).expect_err("must be rejected");
         assert!(!err.is_empty() && !err.contains('\n'), "{err}");
     }
     assert!(PhaseOne::new(1e-130, 0.0, 1.0).is_ok());

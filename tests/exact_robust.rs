@@ -14,10 +14,10 @@ proptest! {
     fn finite_or_refused(
         theta0 in prop_oneof![Just(0.0), log_uniform(1e-300, 1.0), 0.0..FRAC_PI_2],
         rate0 in prop_oneof![Just(0.0), log_uniform(1e-300, 1e300)],
-        omega2 in log_uniform(1e-100, 1e100),
+        big_omega2 in log_uniform(1e-100, 1e100),
         frac in 0.0..=1.0f64,
     ) {
-        let Ok(p) = PhaseOne::new(theta0, rate0, omega2) else { return Ok(()); };
+        let Ok(p) = PhaseOne::new(theta0, rate0, big_omega2) else { return Ok(()); };
         let Some(s) = p.separation() else {
             prop_assert!(theta0 == 0.0 && rate0 == 0.0);
             return Ok(());

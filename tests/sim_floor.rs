@@ -48,7 +48,7 @@ fn phase2_equation_conserves_energy_and_a_perturbed_one_does_not() {
 /// equals the wall phase's (mg/4 there); F_w is zero.
 #[test]
 fn phase2_continues_phase1_at_separation() {
-    let w2 = LADDER.omega2();
+    let w2 = LADDER.big_omega2();
     for theta in [0.5, 0.84, 1.2] {
         let rate = (w2 * f64::cos(theta)).sqrt();
         let a2 = floor::angular_acceleration(LADDER.gravity / LADDER.half_length, theta, rate);

@@ -51,6 +51,9 @@ impl Ode<6> for FiniteDifference {
     fn scale(&self, y: &[f64; 6]) -> [f64; 6] {
         self.0.scale(y)
     }
+    fn index2(&self) -> [bool; 6] {
+        self.0.index2()
+    }
 }
 
 #[test]

@@ -59,14 +59,14 @@ fn sin_cos_by_composition(theta: &[Q], s0: &Q, c0: &Q) -> (Vec<Q>, Vec<Q>) {
 
 /// The wall phase's series by Picard iteration on θ̈ = ω² sin θ with sin by composition:
 /// each pass fixes at least one more order.
-fn wall_by_picard(omega2: &Q, theta0: &Q, rate0: &Q, s0: &Q, c0: &Q, p: usize) -> Vec<Q> {
+fn wall_by_picard(big_omega2: &Q, theta0: &Q, rate0: &Q, s0: &Q, c0: &Q, p: usize) -> Vec<Q> {
     let mut theta = vec![Q::zero(); p + 1];
     theta[0] = theta0.clone();
     theta[1] = rate0.clone();
     for _ in 0..=p {
         let (s, _) = sin_cos_by_composition(&theta, s0, c0);
         for k in 0..p - 1 {
-            theta[k + 2] = omega2.clone() * s[k].clone() / Q::int(((k + 1) * (k + 2)) as i64);
+            theta[k + 2] = big_omega2.clone() * s[k].clone() / Q::int(((k + 1) * (k + 2)) as i64);
         }
     }
     theta
@@ -78,19 +78,19 @@ fn start() -> (Q, Q, Q, Q, Q) {
 }
 
 fn wall_exact(inv: &[Q], p: usize) -> (Vec<Q>, Vec<Q>, Vec<Q>, Vec<Q>) {
-    let (omega2, theta0, rate0, s0, c0) = start();
+    let (big_omega2, theta0, rate0, s0, c0) = start();
     let (mut th, mut v) = (vec![Q::zero(); p + 1], vec![Q::zero(); p + 1]);
     let (mut s, mut c) = (vec![Q::zero(); p + 1], vec![Q::zero(); p + 1]);
     (th[0], v[0], s[0], c[0]) = (theta0, rate0, s0, c0);
-    wall_series(&omega2, inv, &mut th, &mut v, &mut s, &mut c);
+    wall_series(&big_omega2, inv, &mut th, &mut v, &mut s, &mut c);
     (th, v, s, c)
 }
 
 #[test]
 fn wall_coefficients_are_exact_against_picard_iteration() {
     let p = 12;
-    let (omega2, theta0, rate0, s0, c0) = start();
-    let want = wall_by_picard(&omega2, &theta0, &rate0, &s0, &c0, p);
+    let (big_omega2, theta0, rate0, s0, c0) = start();
+    let want = wall_by_picard(&big_omega2, &theta0, &rate0, &s0, &c0, p);
     let (th, v, s, c) = wall_exact(&reciprocals(p + 2), p);
     assert_eq!(th, want, "θ series");
     for k in 0..p {
@@ -105,8 +105,8 @@ fn wall_coefficients_are_exact_against_picard_iteration() {
 #[test]
 fn a_wrong_recursion_coefficient_is_caught() {
     let p = 12;
-    let (omega2, theta0, rate0, s0, c0) = start();
-    let want = wall_by_picard(&omega2, &theta0, &rate0, &s0, &c0, p);
+    let (big_omega2, theta0, rate0, s0, c0) = start();
+    let want = wall_by_picard(&big_omega2, &theta0, &rate0, &s0, &c0, p);
     for wrong in [2usize, 5, 11] {
         let mut inv = reciprocals::<Q>(p + 2);
         inv[wrong] = q(1, wrong as i64 + 1);
@@ -203,7 +203,7 @@ const LADDER: Ladder = Ladder {
 /// |θ(h) − exact| after one step of order p from θ0 = 0.3 at rest.
 fn one_step_error(p: usize, h: f64) -> f64 {
     let sys = WallPhase::new(&LADDER);
-    let exact = PhaseOne::new(0.3, 0.0, LADDER.omega2()).unwrap();
+    let exact = PhaseOne::new(0.3, 0.0, LADDER.big_omega2()).unwrap();
     // A tolerance of 1 with the step limited by t_stop: the step is exactly h.
     let mut st = Taylor::with_order(0.0, [0.3, 0.0], 1.0, p);
     st.step(&sys, h).unwrap();
@@ -233,7 +233,7 @@ fn error_falls_as_the_order_predicts() {
 #[test]
 fn separation_matches_the_exact_reference() {
     for (theta0, rate0) in [(0.1, 0.0), (0.3, 0.0), (1.0, 0.0), (0.0, 1e-6)] {
-        let exact = PhaseOne::new(theta0, rate0, LADDER.omega2())
+        let exact = PhaseOne::new(theta0, rate0, LADDER.big_omega2())
             .unwrap()
             .separation()
             .unwrap();

@@ -184,6 +184,9 @@ fn errata_md_carries_the_units_witness_of_every_erratum() {
             e.number,
             u.corrected_detail
         );
+        // The printed form as parsed from the print and as encoded in Rust: one verdict.
+        assert_eq!(u.printed, u.printed_code, "({})", e.number);
+        assert!(u.holds());
         assert!(
             page.contains(&format!("{}\n", u.doc_line())),
             "({}) ERRATA.md lacks the line\n{}",
@@ -217,4 +220,20 @@ fn prose_quantities_have_consistent_units_except_the_a5_slip() {
             );
         }
     }
+}
+
+/// The errata witness fails when the print and its Rust encoding disagree, or the corrected form
+/// is inconsistent (`ladder errata` exits 1 then).
+#[test]
+fn an_errata_witness_that_disagrees_does_not_hold() {
+    use sliding_ladder::verify::units::erratum_units;
+    let e = equations().into_iter().find(|e| e.number == 49).unwrap();
+    let good = erratum_units(&e);
+    assert!(good.holds());
+    let mut split = good.clone();
+    split.printed_code = Units::Consistent;
+    assert!(!split.holds());
+    let mut bad = good;
+    bad.corrected = Units::Inconsistent;
+    assert!(!bad.holds());
 }

@@ -43,29 +43,9 @@ fn tables() -> Vec<(String, Vec<String>)> {
     rows
 }
 
-/// The dimension an SI unit spells: kg, m, s, N, J, rad (= 1), with ^n and one / per factor.
+/// The dimension an SI unit spells ([`Dimension::from_si`]).
 fn si_dimension(unit: &str) -> Dimension {
-    let base = |u: &str| match u {
-        "kg" => Dimension::MASS,
-        "m" => Dimension::LENGTH,
-        "s" => Dimension::TIME,
-        "N" => Dimension::new(1, 1, -2),
-        "J" => Dimension::new(1, 2, -2),
-        "rad" | "1" => Dimension::NONE,
-        _ => panic!("unknown SI unit '{u}'"),
-    };
-    let power = |f: &str| {
-        let (u, e) = f.split_once('^').unwrap_or((f, "1"));
-        base(u).pow(num_rational::Ratio::from_integer(
-            e.parse().expect("exponent"),
-        ))
-    };
-    let mut d = Dimension::NONE;
-    for factor in unit.split_whitespace() {
-        let (num, den) = factor.split_once('/').unwrap_or((factor, "1"));
-        d = d * power(num) / power(den);
-    }
-    d
+    Dimension::from_si(unit).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// Each symbol of the table in dimensions, from the code.
@@ -80,7 +60,7 @@ fn symbol_dimensions() -> BTreeMap<&'static str, Dim> {
         ("m", l.m.clone()),
         ("l", l.l.clone()),
         ("g", l.g.clone()),
-        ("ω²", l.omega_squared()),
+        ("Ω²", l.capital_omega_squared()),
         ("x_cm, y_cm", cm_position(&l, &s).x + cm_position(&l, &s).y),
         ("v_cm", cm_velocity(&l, &s).x),
         ("a_cm", cm_acceleration(&l, &s).y),

@@ -90,7 +90,7 @@ fn the_flat_reference_runs_in_the_complement_near_the_floor() {
     let mut sc = scene_at(FRAC_PI_2 - 1e-9, 0.0);
     sc.end = End::Flat;
     let ladder = sc.ladder;
-    let sep = PhaseOne::new(sc.theta0, sc.rate0, ladder.omega2())
+    let sep = PhaseOne::new(sc.theta0, sc.rate0, ladder.big_omega2())
         .unwrap()
         .separation()
         .unwrap();

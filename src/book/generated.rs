@@ -184,7 +184,48 @@ pub fn figure_files(dir: &Path) -> Vec<(String, Vec<u8>)> {
     files
 }
 
+/// The figures of the full fall (`scenes/full-fall.toml`, simulated now): trajectory and
+/// contact forces with the separation, the flat landing and F_w reaching zero marked.
+pub fn fall_figures(root: &Path, problems: &mut Vec<String>) -> Vec<(String, Vec<u8>)> {
+    use crate::report::files::Content;
+    let path = root.join("scenes/full-fall.toml");
+    let outcome = crate::sim::scene::load(&path)
+        .map_err(|e| e.to_string())
+        .and_then(|sc| {
+            let o = crate::sim::fall::run(&sc, crate::sim::fall::MAX_STEPS)
+                .map_err(|e| e.to_string())?;
+            Ok(crate::report::fall_figures::files(&sc, &o))
+        });
+    match outcome {
+        Ok(files) => files
+            .into_iter()
+            .filter_map(|f| match f.content {
+                Content::Chart(c, s) => Some((
+                    format!("fall-{}", f.name.replace('_', "-")),
+                    crate::report::svg_chart::document(&[(c, s)], 960.0, 600.0).into_bytes(),
+                )),
+                _ => None,
+            })
+            .collect(),
+        Err(e) => {
+            problems.push(format!("{}: {e}", path.display()));
+            Vec::new()
+        }
+    }
+}
+
 fn caption(name: &str) -> String {
+    if let Some(what) = name.strip_prefix("fall-") {
+        let what = match what.trim_end_matches(".svg") {
+            "trajectory" => "θ and θ̇ against t; the separation from the wall and the flat landing are marked",
+            "forces-t" => "the contact forces against t; the separation, the flat landing and the wall force reaching zero are marked",
+            "forces-theta" => "the contact forces against θ; the separation angle of footnote 4 and the wall force reaching zero are marked (they coincide)",
+            other => other,
+        };
+        return format!(
+            "The full fall of scenes/full-fall.toml, simulated when this book was built: {what}."
+        );
+    }
     match name.strip_prefix("forces-").and_then(|n| n.strip_suffix(".svg")) {
         Some(p) => format!(
             "The forces of the torque analysis about {}: F_w at C, F_f at D, m g at B, each lever arm dashed (drawn by report::diagram).",

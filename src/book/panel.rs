@@ -41,11 +41,12 @@ pub fn numbered_display(
     let m = mathml(latex, true).map_err(|e| format!("{}: {e}", r.label))?;
     let status = status_name(r.status);
     Ok(format!(
-        "<div class=\"eq\" id=\"display-{a}\" data-number=\"{n}\" data-status=\"{status}\" data-proved=\"{p}\">\n\
+        "<div class=\"eq\" id=\"display-{a}\" data-number=\"{n}\" data-status=\"{status}\" data-proved=\"{p}\" data-units=\"{u}\">\n\
 <div class=\"display\">{m}<span class=\"eqno\">{label}</span></div>\n{panel}</div>\n",
         a = anchor(&r.label),
         n = r.number,
         p = r.proved,
+        u = r.units.name(),
         label = esc(&r.label),
         panel = panel(r, functions, erratum)?
     ))
@@ -134,6 +135,37 @@ fn erratum_forms(e: &ErratumReport) -> Result<String, String> {
     ))
 }
 
+/// The units verdict: the print's (every printed form in dimensions, the offending sum and form
+/// named), and whether the Rust forms' verdict agrees.
+fn units(r: &EquationResult) -> String {
+    let detail = |d: &Option<String>| {
+        d.as_deref()
+            .map(|d| format!(": {}", esc(d)))
+            .unwrap_or_default()
+    };
+    let whose = if r.print_forms > 0 {
+        " (every printed form in dimensions)"
+    } else {
+        " (the Rust forms; beyond the note there is no print)"
+    };
+    let code = if r.print_forms == 0 {
+        String::new()
+    } else if r.units_code == r.units {
+        "; the Rust forms agree".into()
+    } else {
+        format!(
+            "; the Rust forms disagree: {}{}",
+            r.units_code.name(),
+            detail(&r.units_code_detail)
+        )
+    };
+    format!(
+        "{}{}{whose}{code}",
+        esc(r.units.name()),
+        detail(&r.units_detail)
+    )
+}
+
 fn panel(
     r: &EquationResult,
     functions: &[Function],
@@ -147,17 +179,7 @@ fn panel(
             "Proof",
             format!("{} ({:.3} s)", esc(&r.proof), r.proof_seconds),
         ),
-        (
-            "Units",
-            format!(
-                "{}{}",
-                esc(r.units.name()),
-                r.units_detail
-                    .as_deref()
-                    .map(|d| format!(": {}", esc(d)))
-                    .unwrap_or_default()
-            ),
-        ),
+        ("Units", units(r)),
     ];
     if let (Some(step), Some(law)) = (r.law_step, r.law) {
         rows.push(("Law", format!("at <code>=</code> no. {step}: {}", esc(law))));

@@ -228,7 +228,8 @@ pub fn build(root: &Path, data: &BookData) -> Built {
         )
         .into_bytes(),
     ));
-    let figures = generated::figure_files(&dir);
+    let mut figures = generated::figure_files(&dir);
+    figures.extend(generated::fall_figures(root, &mut problems));
     out.push((
         "figures.html".into(),
         page(

@@ -2,8 +2,7 @@
 //! claims of its prose and the units it states; exit 1 when one of them does not hold as recorded.
 
 use crate::registry::check::Config;
-use crate::registry::units::Units;
-use crate::verify::errata::errata;
+use crate::verify::errata::{errata, ErratumReport};
 use clap::Args;
 use serde_json::json;
 use std::process::ExitCode;
@@ -28,9 +27,7 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
     let all_good = prose
         .iter()
         .all(|c| c.holds && c.printed_fails != Some(false))
-        && list
-            .iter()
-            .all(|r| r.units.corrected != Units::Inconsistent);
+        && list.iter().all(|r| r.units.holds());
     if json_out {
         let prose_errata: Vec<_> = prose.iter().filter(|c| c.erratum.is_some()).collect();
         let out = json!({"errata": list, "prose": prose_errata, "claims": prose,
@@ -40,20 +37,7 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
             serde_json::to_string_pretty(&out).expect("JSON of plain data")
         );
     } else {
-        println!(
-            "misprinted equations (the printed form fails exactly; the corrected form holds):"
-        );
-        for r in &list {
-            println!("({}) printed:   {}", r.number, r.printed);
-            println!("     corrected: {}", r.corrected);
-            println!("     why: {}", r.why);
-            println!("     printed − corrected: {}", r.difference_text);
-            println!(
-                "     residual at an exact point: printed {} (= {:.6e}), corrected {}",
-                r.printed_residual_exact, r.printed_residual, r.corrected_residual
-            );
-            println!("     {}", r.units.doc_line().trim_start_matches("- "));
-        }
+        print!("{}", misprint_text(&list));
         println!("\nclaims made in the prose, checked exactly at three random states:");
         for c in &prose {
             let verdict = match (c.holds, c.printed_fails) {
@@ -96,4 +80,80 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
     } else {
         ExitCode::from(1)
     }
+}
+
+/// The misprints as a teacher reads them: each formula in Unicode (the LaTeX is in `--json`),
+/// which form of the display is misprinted, and the exact point its residual is taken at.
+pub fn misprint_text(list: &[ErratumReport]) -> String {
+    use crate::print::unicode::unicode;
+    let mut out = String::from(
+        "misprinted equations (the printed form fails exactly; the corrected form holds; LaTeX in --json):\n",
+    );
+    let eqs = crate::registry::equations();
+    for r in list {
+        let e = eqs.iter().find(|e| e.number == r.number);
+        let page = crate::show::source::docs_page(r.number)
+            .and_then(|p| p.line.map(|l| format!(" · {}:{l}", p.file)))
+            .unwrap_or_default();
+        out += &format!(
+            "({}) {} · sec. {}{page}\n",
+            r.number,
+            e.map_or("", |e| e.title),
+            e.map_or("", |e| e.section)
+        );
+        let which = match r.misprinted_form {
+            Some(k) => format!("form {k} of the display"),
+            None => "a form of the display".into(),
+        };
+        out += &format!(
+            "     printed:   {}   ({which}, as printed)\n",
+            unicode(r.printed)
+        );
+        out += &format!("     corrected: {}\n", unicode(r.corrected));
+        out += &format!("     why: {}\n", r.why);
+        let ladder = r.point.iter().any(|(n, _)| n == "sin θ");
+        out += &format!(
+            "     printed − corrected = {}   ({}; for any state)\n",
+            unicode(&r.difference_latex),
+            if ladder {
+                "s = sin θ, c = cos θ"
+            } else {
+                "per particle: the term of particle 1 of the sum"
+            }
+        );
+        let minus = |s: &str| s.replace('-', "−");
+        let point: Vec<String> = r
+            .point
+            .iter()
+            .map(|(n, v)| format!("{n} = {}", minus(v)))
+            .collect();
+        out += &format!("     at the exact point {}:\n", point.join(", "));
+        let of = r
+            .residual_component
+            .map(|c| format!(" ({c} component)"))
+            .unwrap_or_default();
+        out += &format!(
+            "       residual{of}: {which} as printed − '{}' = {} (≈ {}); corrected − '{}' = {}\n",
+            r.residual_against,
+            minus(&r.printed_residual_exact),
+            minus(&approx(r.printed_residual)),
+            r.residual_against,
+            minus(&r.corrected_residual)
+        );
+        out += &format!("     {}\n", r.units.doc_line().trim_start_matches("- "));
+        if r.units.printed != r.units.printed_code {
+            out += &format!(
+                "     ! units: the print's form is {}, its Rust encoding {}\n",
+                r.units.printed.name(),
+                r.units.printed_code.name()
+            );
+        }
+    }
+    out
+}
+
+/// Six decimals without trailing zeros: 331.776, −242.64, −1204.
+fn approx(x: f64) -> String {
+    let s = format!("{x:.6}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
 }

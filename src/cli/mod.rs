@@ -3,6 +3,7 @@
 //! their results into printed output and an exit code. Nothing below this module imports it.
 
 pub mod book;
+pub mod diagram;
 pub mod errata;
 pub mod show;
 pub mod simulate;
@@ -42,6 +43,8 @@ enum Command {
     Stability(stability::StabilityArgs),
     /// Write the note as verified as a static HTML book (MathML, no script, offline).
     Book(book::BookArgs),
+    /// The force diagram of a torque analysis about a point (A-E or any point) at a state, SVG.
+    Diagram(diagram::DiagramArgs),
 }
 
 /// Parse the process arguments and run the subcommand; with none, verify every equation and
@@ -57,7 +60,7 @@ pub fn run() -> ExitCode {
     };
     match cli.command {
         None => {
-            let verified = verify::verify(false, &Config::default(), None);
+            let verified = verify::verify(false, &Config::default(), None, false);
             println!();
             let simulated = simulate::simulate_builtin_classic();
             if verified == ExitCode::SUCCESS {
@@ -67,6 +70,7 @@ pub fn run() -> ExitCode {
             }
         }
         Some(Command::Verify(a)) => verify::run(a),
+        Some(Command::Diagram(a)) => diagram::run(a),
         Some(Command::Errata(a)) => errata::run(a),
         Some(Command::Simulate(a)) => simulate::run(a),
         Some(Command::WorkPrecision(a)) => work_precision::run(a),

@@ -5,7 +5,7 @@
 use crate::report::digits::sig;
 use crate::report::files::{write_all, OutFile};
 use crate::sim::fall::{self, Outcome};
-use crate::sim::outcome::unreached_end;
+use crate::sim::outcome::{top_inside_wall, unreached_end};
 use crate::sim::output::Output;
 use crate::sim::penalty::Contact;
 use crate::sim::rigid::separation_cosine;
@@ -58,6 +58,13 @@ pub fn simulate(scene_path: &Path, json: bool, out: Option<&Path>) -> ExitCode {
     if let Some(why) = &short {
         eprintln!("error: {}: {why}", scene.file);
     }
+    // A floor phase whose top went through the wall is not the model's motion (exit 1).
+    let inside = outcome
+        .floor_report
+        .and_then(|r| top_inside_wall(&r, scene.ladder.half_length));
+    if let Some(why) = &inside {
+        eprintln!("error: {}: {why}", scene.file);
+    }
     if let Some(dir) = out {
         if let Err(e) = write_all(dir, &files(&scene, &outcome)) {
             eprintln!("error: {e}");
@@ -69,11 +76,14 @@ pub fn simulate(scene_path: &Path, json: bool, out: Option<&Path>) -> ExitCode {
         if let (Some(why), Value::Object(m)) = (&short, &mut v) {
             m.insert("incomplete".into(), json!(why));
         }
+        if let (Some(why), Value::Object(m)) = (&inside, &mut v) {
+            m.insert("failed".into(), json!(why));
+        }
         println!("{}", serde_json::to_string_pretty(&v).unwrap_or_default());
     } else {
         print!("{}", summary(&scene, &outcome));
     }
-    if short.is_some() {
+    if short.is_some() || inside.is_some() {
         return ExitCode::from(1);
     }
     ExitCode::SUCCESS
@@ -228,7 +238,7 @@ pub fn summary(scene: &Scene, o: &Outcome) -> String {
             sig(p.angle.to_degrees(), 7),
             sig(p.rate, 13),
             sig(p.angle.cos(), 16),
-            sig(separation_cosine(scene.ladder.omega2(), scene.theta0, scene.rate0), 16)
+            sig(separation_cosine(scene.ladder.big_omega2(), scene.theta0, scene.rate0), 16)
         ),
         None => s += "  separation   not reached\n",
     }
@@ -247,7 +257,7 @@ pub fn summary(scene: &Scene, o: &Outcome) -> String {
             "  floor phase  min F_f = {} N (> 0: no lift-off)   min top clearance = {:.3e} m ({})\n",
             sig(r.floor_force_min, 10),
             r.top_clearance_min,
-            if r.top_clearance_min >= 0.0 { "the top never returns to the wall" } else { "TOP BACK AT THE WALL" }
+            if top_inside_wall(&r, scene.ladder.half_length).is_none() { "the top never returns to the wall" } else { "TOP INSIDE THE WALL: not the model's motion" }
         );
     }
     if let Some(e) = o.momentum_error {

@@ -2,8 +2,20 @@
 //! describes and must appear verbatim in its file, so a change of the code that leaves the prose
 //! behind is reported as a problem of the book (`file: ...`), not discovered by a reader.
 
-use crate::registry::check::{Config, TOLERANCE_FACTOR};
+use crate::registry::check::{Config, EXACT_HEIGHT, RATIONAL_POINTS, TOLERANCE_FACTOR};
+use crate::scalar::MODULUS;
 use std::path::Path;
+
+/// 2 to the power `k` in Unicode: 2⁶⁰.
+fn power_of_two(k: u32) -> String {
+    const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let digits: String = k
+        .to_string()
+        .bytes()
+        .map(|d| SUP[(d - b'0') as usize])
+        .collect();
+    format!("2{digits}")
+}
 
 /// One stated figure: the file (relative to `equations/`) and the exact phrase it must contain.
 #[derive(Clone, Debug)]
@@ -34,6 +46,26 @@ pub fn facts() -> Vec<Fact> {
             file: "README.md",
             phrase: format!("at {} random points per check", cfg.exact_points),
             what: "exact points per check (Config::default().exact_points)",
+        },
+        Fact {
+            file: "README.md",
+            phrase: format!(
+                "{} in rational arithmetic, the others modulo the prime p = {} − 1",
+                match RATIONAL_POINTS {
+                    1 => "the first".to_string(),
+                    k => format!("the first {k}"),
+                },
+                power_of_two((MODULUS + 1).trailing_zeros())
+            ),
+            what: "which exact points are rational (registry::exact_point::RATIONAL_POINTS = 1) and the prime (scalar::modp::MODULUS)",
+        },
+        Fact {
+            file: "README.md",
+            phrase: format!(
+                "random integer of magnitude below {}",
+                power_of_two(EXACT_HEIGHT.trailing_zeros())
+            ),
+            what: "the size of the exact coordinates (registry::exact_point::EXACT_HEIGHT)",
         },
         Fact {
             file: "README.md",

@@ -15,6 +15,7 @@
 
 pub mod examples;
 pub mod facts;
+pub mod pages;
 pub mod worked;
 
 use crate::registry::{equations, extensions};

@@ -47,7 +47,7 @@ impl<T: Scalar> Ladder<T> {
         }
     }
     /// Ω² = 3g/(4l), the rate constant of the equation of motion (5).
-    pub fn omega_squared(&self) -> T {
+    pub fn capital_omega_squared(&self) -> T {
         T::ratio(3, 4) * self.g.clone() / self.l.clone()
     }
 }

@@ -42,8 +42,11 @@
 //! chain from its last form τ_P (`CONTINUATIONS` in `registry::print_check`). Misprints are never
 //! repaired here: they are recorded as errata and must fail (`MISPRINTS`).
 pub mod ast;
+pub mod clash;
 pub mod eval;
 pub mod lexer;
 pub mod parser;
 pub mod quantity;
+pub mod render;
 pub mod symbols;
+pub mod unicode;

@@ -107,7 +107,7 @@ pub fn files(scene: &Scene, o: &Outcome) -> Vec<OutFile> {
             series("F_f, floor (N)", &ff(|p| p.t)),
         ];
         v.push(OutFile::chart("forces_t.svg", t_chart, lines));
-        let cs = separation_cosine(scene.ladder.omega2(), scene.theta0, scene.rate0);
+        let cs = separation_cosine(scene.ladder.big_omega2(), scene.theta0, scene.rate0);
         let mut th_marks = vec![Mark {
             x: cs.acos(),
             label: "cos θ = (2 cos θ0 + θ̇0²/Ω²)/3".into(),

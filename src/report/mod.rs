@@ -1,7 +1,10 @@
 //! Reports: the work-precision sweep, output files written all-or-nothing, SVG plots.
 
+pub mod campaign;
+pub mod campaign_judge;
 pub mod chart;
 pub mod diagram;
+pub mod diagram_svg;
 pub mod digits;
 pub mod fall_figures;
 pub mod files;

@@ -153,7 +153,7 @@ fn member_rows(name: &str, theta0: f64, rate0: f64) -> Vec<Case> {
                     "t_s of the exact reference".into(),
                 );
                 (t.steps, t.rhs_evals, t.seconds) = (a.steps, a.rhs_evals, a.seconds);
-                match PhaseOne::new(theta0, rate0, UNIT.omega2()).map(|p| p.separation()) {
+                match PhaseOne::new(theta0, rate0, UNIT.big_omega2()).map(|p| p.separation()) {
                     Ok(Some(x)) => {
                         t.value = format!("t_s = {:.15e} (reference {:.15e})", s.time, x.time);
                         let travel = (s.angle - theta0).abs().max(f64::MIN_POSITIVE);
@@ -191,7 +191,7 @@ pub fn extreme_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
     ] {
         cases.extend(start_rows(&format!("rest θ0={label}"), theta0, 0.0, tick));
     }
-    let omega = UNIT.omega2().sqrt();
+    let omega = UNIT.big_omega2().sqrt();
     for r in [1e-15, 1e-8, 1e-3, 0.5, 0.999, 1.0, 1.001, 2.0] {
         let name = format!("θ0=0 θ̇0={r:e}·Ω");
         cases.extend(start_rows(&name, 0.0, r * omega, tick));
@@ -264,6 +264,7 @@ fn scene(ladder: Ladder, theta0: f64, rate0: f64, end: End, outputs: Vec<Output>
         file: "(built in: stability)".into(),
         ladder,
         theta0,
+        phi0: None,
         rate0,
         method: "dop853".into(),
         control: Some(Control::Tolerance(TOL)),
@@ -296,7 +297,7 @@ pub fn scale_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
     let unit_scene = scene(
         UNIT,
         theta0,
-        push * UNIT.omega2().sqrt(),
+        push * UNIT.big_omega2().sqrt(),
         End::Separation,
         outputs.clone(),
     );
@@ -344,7 +345,7 @@ pub fn scale_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
             "dop853 tol 1e-13".into(),
             "unit-scale θ_s, t_s·√(l/g), θ̇_s/√(l/g), F_f·m g".into(),
         );
-        let rate0 = push * ladder.omega2().sqrt();
+        let rate0 = push * ladder.big_omega2().sqrt();
         let mut sc = scene(ladder, theta0, rate0, End::Separation, outputs.clone());
         let mut reference = &reference;
         if with_penalty {
@@ -426,7 +427,7 @@ pub fn long_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
             let sc = memory_scene(10.0);
             c.steps = o.work.wall.steps;
             c.rhs_evals = o.work.wall.rhs_evals;
-            let reference = PhaseOne::new(0.3, 0.0, sc.ladder.omega2()).map(|p| p.theta(10.0));
+            let reference = PhaseOne::new(0.3, 0.0, sc.ladder.big_omega2()).map(|p| p.theta(10.0));
             let growth = before.zip(after).map(|(b, a)| a.saturating_sub(b));
             c.value = format!(
                 "θ = {:.15}, samples kept {}, peak RSS growth {} kB (from {} kB)",

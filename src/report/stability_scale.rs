@@ -29,6 +29,7 @@ fn flat_scene(ladder: Ladder, theta0: f64, method: &str, tol: f64) -> Scene {
         file: "(built in: stability sweep)".into(),
         ladder,
         theta0,
+        phi0: None,
         rate0: 0.0,
         method: method.into(),
         control: Some(Control::Tolerance(tol)),

@@ -102,6 +102,7 @@ pub fn scene_at(theta0: f64, rate0: f64) -> Scene {
             gravity: 9.81,
         },
         theta0,
+        phi0: None,
         rate0,
         method: "dop853".into(),
         control: Some(Control::Tolerance(1e-12)),
@@ -182,7 +183,7 @@ pub fn median_seconds(f: impl FnMut()) -> f64 {
 pub fn flat_reference(base: &Scene, sep: &Separation) -> Result<f64, String> {
     let ladder = base.ladder;
     let sys = ComplementFloor::new(&ladder);
-    let phi_s = separation_cos(base.theta0, base.rate0, ladder.omega2()).asin();
+    let phi_s = separation_cos(base.theta0, base.rate0, ladder.big_omega2()).asin();
     let y = complement::floor_state_at_separation(&ladder, phi_s, sep.rate);
     let mut st = Taylor::with_order(sep.time, y, 1e-16, MAX_ORDER);
     let t_end = sep.time + 1e3 * (ladder.half_length / ladder.gravity).sqrt();
@@ -208,7 +209,7 @@ pub fn measure(
     timing: Timing,
     mut tick: impl FnMut(&str),
 ) -> Result<Vec<Run>, String> {
-    let exact = PhaseOne::new(base.theta0, base.rate0, base.ladder.omega2())?
+    let exact = PhaseOne::new(base.theta0, base.rate0, base.ladder.big_omega2())?
         .separation()
         .ok_or("the start is the equilibrium: no separation")?;
     let flat_ref = match base.end {

@@ -32,7 +32,7 @@ impl System<f64, Vector2<f64>> for Wall {
 /// when the peer fails.
 pub fn theta_at(name: &str, tol: f64, scene: &Scene, t: f64) -> Option<(f64, u64)> {
     let y0 = Vector2::new(scene.theta0, scene.rate0);
-    let sys = Wall(scene.ladder.omega2());
+    let sys = Wall(scene.ladder.big_omega2());
     let (stats, last) = if name == PEERS_OF[0].0 {
         let mut s = ode_solvers::Dop853::new(sys, 0.0, t, t, y0, tol, tol);
         s.set_output(OutputType::Sparse);
@@ -52,7 +52,7 @@ pub fn measure_peers(scene: &Scene, timing: Timing) -> Result<Vec<Run>, String> 
     if scene.end == End::Flat {
         return Ok(Vec::new());
     }
-    let exact = PhaseOne::new(scene.theta0, scene.rate0, scene.ladder.omega2())?
+    let exact = PhaseOne::new(scene.theta0, scene.rate0, scene.ladder.big_omega2())?
         .separation()
         .ok_or("the start is the equilibrium: no separation")?;
     let mut runs = Vec::new();

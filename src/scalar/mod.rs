@@ -28,6 +28,7 @@ mod dimension;
 mod jet;
 mod modp;
 pub mod poly;
+mod si_unit;
 mod sym_print;
 mod symbolic;
 

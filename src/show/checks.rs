@@ -244,7 +244,7 @@ pub fn encodings(e: &Equation) -> Vec<Vec<String>> {
                     .iter()
                     .copied()
                     .filter(|&k| {
-                        squash(&super::unicode::unicode(&forms[k].text)) == squash(s.label)
+                        squash(&crate::print::unicode::unicode(&forms[k].text)) == squash(s.label)
                     })
                     .collect();
                 let name = format!("{}: {}", c.name, s.label);

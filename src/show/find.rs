@@ -137,7 +137,7 @@ pub fn search(text: &str) -> Vec<Hit> {
         Some(Expr::Sym(k)) => Some(k),
         _ => None,
     };
-    let plain = |s: &str| super::unicode::unicode(s).replace(' ', "");
+    let plain = |s: &str| crate::print::unicode::unicode(s).replace(' ', "");
     let query_plain: String = text.split_whitespace().collect();
     let mut hits = Vec::new();
     for e in equations() {
@@ -150,7 +150,7 @@ pub fn search(text: &str) -> Vec<Hit> {
             let same_key = key.as_deref() == Some(k.as_str());
             let same_reading = !query_plain.is_empty() && plain(&k) == query_plain;
             if same_key || same_reading {
-                why.push(format!("uses {}", super::unicode::unicode(&k)));
+                why.push(format!("uses {}", crate::print::unicode::unicode(&k)));
             } else if let Some(en) = entry {
                 if words.len() > 1 && has_words(&en.meaning, &words)
                     || words.len() == 1
@@ -159,7 +159,7 @@ pub fn search(text: &str) -> Vec<Hit> {
                 {
                     why.push(format!(
                         "{} is the {}",
-                        super::unicode::unicode(&k),
+                        crate::print::unicode::unicode(&k),
                         en.meaning
                     ));
                 }

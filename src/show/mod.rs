@@ -20,9 +20,9 @@ pub mod find;
 pub mod source;
 pub mod state;
 mod text;
-pub mod unicode;
 pub mod values;
 
+use crate::print::unicode;
 use crate::registry::check::Config;
 use crate::registry::{equations, Equation, Eval, LadderSample};
 use crate::verify::errata::ErratumReport;

@@ -73,33 +73,16 @@ pub fn function(path: &str) -> Location {
     }
 }
 
-/// The book page of display `number`: the heading `### (N) …` in `equations/*.md`.
+/// The book page of display `number`: the heading `### (N) …` in `equations/*.md`
+/// ([`crate::docs::pages`]).
 pub fn docs_page(number: u32) -> Option<Location> {
-    let dir = root().join("equations");
-    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .ok()?
-        .flatten()
-        .map(|f| f.path())
-        .filter(|p| p.extension().is_some_and(|x| x == "md"))
-        .collect();
-    files.sort();
-    let want = format!("({number})");
-    for f in files {
-        let Ok(text) = std::fs::read_to_string(&f) else {
-            continue;
-        };
-        for (i, l) in text.lines().enumerate() {
-            let t = l.trim_start();
-            if t.starts_with('#') && t.trim_start_matches('#').trim_start().starts_with(&want) {
-                return Some(Location {
-                    name: t.trim_start_matches('#').trim().to_string(),
-                    file: format!("equations/{}", f.file_name()?.to_string_lossy()),
-                    line: Some(i + 1),
-                });
-            }
-        }
-    }
-    None
+    let p =
+        crate::docs::pages::headings(&root().join("equations")).remove(&format!("({number})"))?;
+    Some(Location {
+        name: p.heading,
+        file: p.file,
+        line: Some(p.line),
+    })
 }
 
 #[cfg(test)]

@@ -251,7 +251,7 @@ fn complete<S: Scalar>(
         }
         None => {
             st.accel = angular_acceleration(&ladder, &st);
-            st.jerk = jerk.unwrap_or_else(|| ladder.omega_squared() * cos * rate);
+            st.jerk = jerk.unwrap_or_else(|| ladder.capital_omega_squared() * cos * rate);
         }
     }
     (ladder, st)

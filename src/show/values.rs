@@ -1,6 +1,6 @@
 //! Every printed form of a display evaluated at one state: in f64, with running error bounds
 //! (the tolerance of each agreement), exactly when the state is exact, and in dimensions (its SI
-//! unit). The forms are the print's own ([`crate::registry::print_check::print_chains`]), the
+//! unit, from [`crate::registry::print_check::units`], as `ladder verify` judges it). The forms are the print's own ([`crate::registry::print_check::print_chains`]), the
 //! symbols resolve in the independent models ([`crate::print::quantity`]), and each form is held
 //! against the first form of its chain with the registry's own verdicts
 //! ([`crate::registry::check::float_residual`], [`crate::registry::check::exact_residual`]).
@@ -17,10 +17,10 @@ use crate::print::eval::{evaluate, Ctx};
 use crate::print::quantity::{Model, Value};
 use crate::print::symbols::table;
 use crate::registry::check::{exact_residual, float_residual, TOLERANCE_FACTOR};
+use crate::registry::print_check::units::print_form_units;
 use crate::registry::print_check::{print_chains, sample_check, Form};
-use crate::registry::units::{dimensioned_ladder, dimensioned_particles};
 use crate::registry::{Equation, Eval, ParticleSample, Role, Side};
-use crate::scalar::{Bound, Dim, Rational, Scalar};
+use crate::scalar::{Bound, Rational, Scalar};
 use crate::system::{Point as PPoint, Spin, System};
 use serde::Serialize;
 
@@ -211,33 +211,6 @@ fn side<S>(value: S) -> Side<S> {
     }
 }
 
-/// The SI unit of a form from the dimensions of its symbols.
-fn unit_of(e: &Equation, f: &Form) -> String {
-    let m = match sample_check(e).map(|c| c.eval) {
-        Some(Eval::Ladder(sort, _)) => {
-            let (l, s) = dimensioned_ladder(sort);
-            Model::ladder(l, s)
-        }
-        Some(Eval::Particles(sort, _)) => {
-            let (sys, p) = dimensioned_particles(sort, 3);
-            Model::particles(sys, p)
-        }
-        _ => return "?".into(),
-    };
-    match eval_form::<Dim>(e, f, &std::rc::Rc::new(m)) {
-        Ok(v) => {
-            let c = v.components();
-            if let Some(i) = c.iter().find_map(|d| d.inconsistency().cloned()) {
-                return format!("inconsistent: {i}");
-            }
-            c.iter()
-                .find_map(Dim::dimension)
-                .map_or_else(|| "any (zero)".into(), |d| d.si_unit())
-        }
-        Err(err) => format!("? ({err})"),
-    }
-}
-
 /// Every printed form of `e` at `point`, in print order.
 pub fn form_values(e: &Equation, point: &Point) -> Result<Vec<FormValue>, String> {
     form_values_of(e, e.latex(), point)
@@ -251,6 +224,11 @@ pub fn form_values_of(e: &Equation, latex: &str, point: &Point) -> Result<Vec<Fo
     let mq = match &point.exact {
         Some((l, s)) => Some(std::rc::Rc::new(model(e, l, s)?)),
         None => None,
+    };
+    // Each form's unit, as `ladder verify` judges it (the same forms in the same order).
+    let units: Vec<String> = match print_form_units(e, latex) {
+        Ok(u) => u.iter().flatten().map(|f| f.unit()).collect(),
+        Err(err) => vec![format!("? ({err})"); chains.iter().map(Vec::len).sum()],
     };
     let mut out = Vec::new();
     for (ci, chain) in chains.iter().enumerate() {
@@ -284,13 +262,13 @@ pub fn form_values_of(e: &Equation, latex: &str, point: &Point) -> Result<Vec<Fo
                 index: out.len() + 1,
                 chain: ci + 1,
                 latex: f.text.clone(),
-                unicode: super::unicode::unicode(&f.text),
+                unicode: crate::print::unicode::unicode(&f.text),
                 role,
                 milne: f.milne,
                 value: Vec::new(),
                 bound: Vec::new(),
                 exact: None,
-                unit: unit_of(e, f),
+                unit: units[out.len()].clone(),
                 residual: None,
                 agrees: None,
                 exact_agrees: None,

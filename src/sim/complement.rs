@@ -43,24 +43,24 @@ pub fn complement(angle: f64) -> f64 {
 #[derive(Clone, Copy, Debug)]
 pub struct ComplementWall {
     /// Ω² = 3g/(4l).
-    pub omega2: f64,
+    pub big_omega2: f64,
     omega: f64,
 }
 
 impl ComplementWall {
     /// The complement wall phase of `ladder`.
     pub fn new(ladder: &Ladder) -> Self {
-        let omega2 = ladder.omega2();
+        let big_omega2 = ladder.big_omega2();
         ComplementWall {
-            omega2,
-            omega: omega2.sqrt(),
+            big_omega2,
+            omega: big_omega2.sqrt(),
         }
     }
 }
 
 impl Ode<2> for ComplementWall {
     fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 2]) -> [D; 2] {
-        [y[1], -(y[0].cos() * self.omega2)]
+        [y[1], -(y[0].cos() * self.big_omega2)]
     }
     /// |Δφ| = |Δθ|: the same event-safe limit as the wall phase in θ.
     fn max_step(&self, y: &[f64; 2]) -> f64 {
@@ -75,7 +75,7 @@ impl Ode<2> for ComplementWall {
         false
     }
     fn taylor_series(&self, series: &mut super::integrators::taylor::Series<2>) -> bool {
-        super::integrators::taylor::complement_series_f64(self.omega2, series);
+        super::integrators::taylor::complement_series_f64(self.big_omega2, series);
         true
     }
 }
@@ -157,7 +157,7 @@ impl ComplementFloor {
     pub fn new(ladder: &Ladder) -> Self {
         ComplementFloor {
             g_over_l: ladder.gravity / ladder.half_length,
-            omega: ladder.omega2().sqrt(),
+            omega: ladder.big_omega2().sqrt(),
             half_length: ladder.half_length,
         }
     }
@@ -256,15 +256,15 @@ mod tests {
         let y = [complement(theta), -rate];
         let dy: [f64; 2] = sys.rhs(0.0, &y);
         // φ̈ = −θ̈ and the separation factors agree to rounding of cos/sin at 1.2 rad.
-        let acc = angular_acceleration(sys.omega2, theta);
+        let acc = angular_acceleration(sys.big_omega2, theta);
         assert!(
             (dy[1] + acc).abs() <= 4.0 * f64::EPSILON * acc.abs(),
             "{dy:?}"
         );
-        let g = ComplementSeparation(sys.omega2).value(0.0, &y);
-        let want = separation_factor(sys.omega2, theta, rate);
+        let g = ComplementSeparation(sys.big_omega2).value(0.0, &y);
+        let want = separation_factor(sys.big_omega2, theta, rate);
         assert!(
-            (g - want).abs() <= 8.0 * f64::EPSILON * sys.omega2,
+            (g - want).abs() <= 8.0 * f64::EPSILON * sys.big_omega2,
             "{g} {want}"
         );
         // A sign slip in the acceleration is seen.

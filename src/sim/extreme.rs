@@ -53,20 +53,20 @@ pub fn wall_release(
     control: Control,
     max_steps: u64,
 ) -> Result<(WallRelease, Stats), RunError> {
-    let omega2 = ladder.omega2();
-    if !(omega2.is_finite() && omega2 > 0.0 && theta0.is_finite() && rate0.is_finite()) {
+    let big_omega2 = ladder.big_omega2();
+    if !(big_omega2.is_finite() && big_omega2 > 0.0 && theta0.is_finite() && rate0.is_finite()) {
         return Err(RunError::Start(format!(
-            "no wall phase for Ω² = {omega2}, θ0 = {theta0}, θ̇0 = {rate0}"
+            "no wall phase for Ω² = {big_omega2}, θ0 = {theta0}, θ̇0 = {rate0}"
         )));
     }
     if theta0 == 0.0 && rate0 == 0.0 {
         return Ok((WallRelease::Equilibrium, Stats::default()));
     }
-    if separation_factor(omega2, theta0, rate0) <= 0.0 {
+    if separation_factor(big_omega2, theta0, rate0) <= 0.0 {
         return Ok((WallRelease::AtOnce, Stats::default()));
     }
     let wall = WallPhase::new(ladder);
-    let (t0, y0) = linear_lead_in(omega2, theta0, rate0)
+    let (t0, y0) = linear_lead_in(big_omega2, theta0, rate0)
         .map_or((0.0, [theta0, rate0]), |(t, th, w)| (t, [th, w]));
     // Near the floor, in φ = π/2 − θ (see `super::complement`).
     let in_complement = complement::applies(y0[0]);
@@ -81,7 +81,7 @@ pub fn wall_release(
     // In time since the lead-in (the steppers' step floor is relative to |t|).
     let end = if in_complement {
         let sys = complement::ComplementWall::new(ladder);
-        let event = complement::ComplementSeparation(omega2);
+        let event = complement::ComplementSeparation(big_omega2);
         integrate_phase(
             &sys,
             &mut stepper,
@@ -98,7 +98,7 @@ pub fn wall_release(
         integrate_phase(
             &wall,
             &mut stepper,
-            &[&Factor(omega2)],
+            &[&Factor(big_omega2)],
             t_end - t0,
             max_steps,
             &mut (),
@@ -126,7 +126,7 @@ pub fn wall_release(
 }
 
 /// Amplitude below which the wall phase is linear to f64 precision: sin θ = θ (1 − θ²/6 + …)
-/// and θ²/6 ≤ 1.5e-19 < u/700 for |θ| ≤ 2⁻³⁰, so (5) is θ̈ = ω² θ there.
+/// and θ²/6 ≤ 1.5e-19 < u/700 for |θ| ≤ 2⁻³⁰, so (5) is θ̈ = Ω² θ there.
 pub const LINEAR_AMPLITUDE: f64 = 9.313_225_746_154_785e-10;
 
 /// For a start (θ0, θ̇0) smaller than [`LINEAR_AMPLITUDE`] (in θ and θ̇/ω), the state where the
@@ -135,8 +135,8 @@ pub const LINEAR_AMPLITUDE: f64 = 9.313_225_746_154_785e-10;
 /// subnormal or tiny θ themselves: a relative tolerance there measures nothing (5e-324 has one
 /// significant bit) and a fixed step needs ~ln(1/θ0) growth before anything happens.
 /// Returns (t, θ, θ̇), or None when the start is not tiny or does not move away from 0.
-pub fn linear_lead_in(omega2: f64, theta0: f64, rate0: f64) -> Option<(f64, f64, f64)> {
-    let omega = omega2.sqrt();
+pub fn linear_lead_in(big_omega2: f64, theta0: f64, rate0: f64) -> Option<(f64, f64, f64)> {
+    let omega = big_omega2.sqrt();
     // a and b scaled by 2^600 (exact), so that θ̇0/ω cannot underflow for a subnormal θ̇0.
     let scale = 2f64.powi(600);
     let (p, q) = (theta0 * scale, rate0 * scale / omega);

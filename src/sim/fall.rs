@@ -17,8 +17,8 @@ use super::scene::{ContactModel, End, Scene, MAX_END_TIME};
 use super::units::Units;
 use std::cell::Cell;
 
-/// Default hard limit on steps per phase.
-pub const MAX_STEPS: u64 = 10_000_000;
+/// Default hard limit on steps per phase (the scene checks refuse a scene that needs more).
+pub use super::scene_parts::MAX_STEPS;
 /// Dense samples per step kept for plots and monitors.
 const SAMPLES_PER_STEP: usize = 4;
 
@@ -183,7 +183,7 @@ impl Event<2> for SeparationEvent {
     fn direction(&self) -> Direction {
         Direction::Falling
     }
-    /// d/dt (ω² cos θ − θ̇²) = −ω² sin θ θ̇ − 2 θ̇ θ̈.
+    /// d/dt (Ω² cos θ − θ̇²) = −Ω² sin θ θ̇ − 2 θ̇ θ̈.
     fn rate(&self, _t: f64, y: &[f64; 2], dy: &[f64; 2]) -> Option<f64> {
         Some(-self.0 * y[0].sin() * dy[0] - 2.0 * y[1] * dy[1])
     }
@@ -223,7 +223,7 @@ pub fn run(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
     // Tiny starts take their linear lead-in in SI, before scaling: θ̇0 T underflows (5e-324 T
     // = 0 for T < 1), and a subnormal product keeps only part of θ̇0's digits. The lead-in ends
     // at an amplitude (~1e-9) where the conversion is exact to rounding.
-    let lead = super::extreme::linear_lead_in(scene.ladder.omega2(), scene.theta0, scene.rate0)
+    let lead = super::extreme::linear_lead_in(scene.ladder.big_omega2(), scene.theta0, scene.rate0)
         .map(|(t, theta, rate)| (t / units.time, theta, rate * units.time));
     let mut out = run_rigid(&units.scale_scene(scene), lead, max_steps)
         .map(|o| units.outcome_to_si(o))
@@ -263,7 +263,8 @@ fn run_rigid(
         });
     let Some(control) = scene.control else {
         // The exact reference (wall phase only; the scene validation guarantees end = separation).
-        let p = PhaseOne::new(y_lead[0], y_lead[1], ladder.omega2()).map_err(RunError::Start)?;
+        let p =
+            PhaseOne::new(y_lead[0], y_lead[1], ladder.big_omega2()).map_err(RunError::Start)?;
         let s = p
             .separation()
             .ok_or_else(|| RunError::Start("the ladder never leaves the wall".into()))?;
@@ -288,8 +289,13 @@ fn run_rigid(
     let y0 = [scene.theta0, scene.rate0];
     // Near the floor the wall phase runs in φ = π/2 − θ (see `super::complement`).
     let in_complement = complement::applies(y_lead[0]);
+    // A start given as its complement φ0 (`angle_from_floor`) enters exactly (θ0 cannot hold it).
+    let phi0 = scene.phi0.filter(|_| t0 == 0.0);
     let start = match in_complement {
-        true => [complement::complement(y_lead[0]), -y_lead[1]],
+        true => [
+            phi0.unwrap_or_else(|| complement::complement(y_lead[0])),
+            -y_lead[1],
+        ],
         false => y_lead,
     };
     // The stepper runs in time since the lead-in (its step floor is relative to |t|).
@@ -318,7 +324,7 @@ fn run_rigid(
     let mut phi_s = None;
     let mut end1 = if in_complement {
         let sys = complement::ComplementWall::new(&ladder);
-        let sep_event = complement::ComplementSeparation(sys.omega2);
+        let sep_event = complement::ComplementSeparation(sys.big_omega2);
         let mut e = integrate_phase(
             &sys,
             &mut stepper,
@@ -331,7 +337,7 @@ fn run_rigid(
         e.y = complement::to_theta(&e.y);
         e
     } else {
-        let sep_event = SeparationEvent(wall.omega2);
+        let sep_event = SeparationEvent(wall.big_omega2);
         integrate_phase(
             &wall,
             &mut stepper,

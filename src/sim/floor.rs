@@ -76,7 +76,7 @@ impl FloorPhase {
     pub fn new(ladder: &Ladder) -> Self {
         FloorPhase {
             g_over_l: ladder.gravity / ladder.half_length,
-            omega: ladder.omega2().sqrt(),
+            omega: ladder.big_omega2().sqrt(),
             half_length: ladder.half_length,
         }
     }

@@ -35,4 +35,6 @@ mod scene_checks;
 mod scene_errors;
 pub mod scene_parts;
 mod scene_shape;
+pub mod scene_work;
+mod start;
 pub mod units;

@@ -137,3 +137,50 @@ pub fn unreached_end(scene: &Scene, o: &Outcome) -> Option<String> {
         o.last.0, o.last.1
     ))
 }
+
+/// The rounding of the top's computed abscissa X − l sin θ, in units of l: both terms are at
+/// most about l where the top is near the wall, each is rounded once (u = 2^-53) and so is
+/// their difference, so a clearance down to −4 u l is zero within rounding.
+pub const TOP_CLEARANCE_ROUNDING: f64 = 4.0 * f64::EPSILON / 2.0;
+
+/// Why the floor phase is not the model's motion, if its monitor saw the top of the ladder
+/// inside the wall: the rigid floor phase has no wall (it is left for good at separation,
+/// footnote 4), so the exact motion keeps the top clear, x_C = X − l sin θ ≥ 0, and a computed
+/// minimum below −[`TOP_CLEARANCE_ROUNDING`]·l is integration error large enough to move the top
+/// through the wall (e.g. symplectic Euler at h = 1e-4 s: −3.6e-7 m). The run's numbers are then
+/// those of a motion the model forbids: a failed check, never a silent exit 0.
+pub fn top_inside_wall(report: &FloorReport, half_length: f64) -> Option<String> {
+    let c = report.top_clearance_min;
+    (c < -TOP_CLEARANCE_ROUNDING * half_length).then(|| {
+        format!(
+            "the top of the ladder went {:.3e} m inside the wall during the floor phase (top_clearance_min = {c:e} m, below the rounding of −{:.1e} m): the integration is too inaccurate for the floor phase; use a smaller step or a tighter tolerance",
+            -c,
+            TOP_CLEARANCE_ROUNDING * half_length
+        )
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{top_inside_wall, FloorReport, TOP_CLEARANCE_ROUNDING};
+
+    fn report(c: f64) -> FloorReport {
+        FloorReport {
+            floor_force_min: 1.0,
+            top_clearance_min: c,
+        }
+    }
+
+    /// The flag fires just below the rounding bound and not at or above it, at any length.
+    #[test]
+    fn top_inside_wall_fires_only_below_the_rounding() {
+        for l in [1e-20, 1.0, 1e20] {
+            let b = TOP_CLEARANCE_ROUNDING * l;
+            assert!(top_inside_wall(&report(-3.6e-7 * l), l).is_some());
+            assert!(top_inside_wall(&report(-2.0 * b), l).is_some());
+            assert!(top_inside_wall(&report(-b), l).is_none());
+            assert!(top_inside_wall(&report(0.0), l).is_none());
+            assert!(top_inside_wall(&report(1e-9 * l), l).is_none());
+        }
+    }
+}

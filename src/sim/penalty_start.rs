@@ -10,7 +10,7 @@
 //! the contact oscillation it excites (a start with F₀ alone excites one of O(ε) m g, which a
 //! tolerance below 1/κ then has to resolve at ~√κ steps per unit time).
 //!
-//! The derivatives of F₀ along the rigid motion (θ̈ = ω² sin θ, eq. (5)) come from automatic
+//! The derivatives of F₀ along the rigid motion (θ̈ = Ω² sin θ, eq. (5)) come from automatic
 //! differentiation: θ and θ̇ are lifted to third-order jets (`num_dual::Dual3_64`) carrying
 //! their derivatives along the motion, and M⁻¹'s rate from a first-order one.
 
@@ -42,7 +42,7 @@ fn m_inverse<D: DualNum<Primitive = f64> + Copy>(theta: D) -> [[D; 2]; 2] {
 /// The slow-manifold forces and their rates at (θ, θ̇) for stiffness κ: ([F_w, F_f],
 /// [Ḟ_w, Ḟ_f]) to first order in 1/κ, in units of m g and m g √(g/l).
 pub fn slow_forces(kappa: f64, theta: f64, rate: f64) -> ([f64; 2], [f64; 2]) {
-    // Derivatives of θ along (5): θ̈ = ω² sin θ, θ⃛ = ω² cos θ θ̇, θ⁗ = ω² (cos θ θ̈ − sin θ θ̇²).
+    // Derivatives of θ along (5): θ̈ = Ω² sin θ, θ⃛ = Ω² cos θ θ̇, θ⁗ = Ω² (cos θ θ̈ − sin θ θ̇²).
     let (s, c) = theta.sin_cos();
     let acc = OMEGA2 * s;
     let jerk = OMEGA2 * c * rate;

@@ -20,32 +20,35 @@ pub struct Ladder {
 
 impl Ladder {
     /// Ω² = 3g/(4l), the coefficient of eq. (5).
-    pub fn omega2(&self) -> f64 {
+    pub fn big_omega2(&self) -> f64 {
         3.0 * self.gravity / (4.0 * self.half_length)
     }
 }
 
 /// Eq. (5): θ̈ = (3g/4l) sin θ = Ω² sin θ.
-pub fn angular_acceleration<D: DualNum<Primitive = f64> + Copy>(omega2: f64, theta: D) -> D {
-    theta.sin() * omega2
+pub fn angular_acceleration<D: DualNum<Primitive = f64> + Copy>(big_omega2: f64, theta: D) -> D {
+    theta.sin() * big_omega2
 }
 
 /// The factor of the wall force that changes sign at separation: g(θ, θ̇) = Ω² cos θ − θ̇².
 ///
 /// From eqs. (5) and (14), F_w = m l (cos θ θ̈ − sin θ θ̇²) = m l sin θ (Ω² cos θ − θ̇²): the
 /// factor sin θ vanishes at θ = 0 and π, which are not separations, so events watch this factor.
-pub fn separation_factor(omega2: f64, theta: f64, rate: f64) -> f64 {
-    omega2 * theta.cos() - rate * rate
+pub fn separation_factor(big_omega2: f64, theta: f64, rate: f64) -> f64 {
+    big_omega2 * theta.cos() - rate * rate
 }
 
 /// Eq. (14) on the motion (5): the wall force F_w = m l sin θ (Ω² cos θ − θ̇²), along +x at C.
 pub fn wall_force(ladder: &Ladder, theta: f64, rate: f64) -> f64 {
-    ladder.mass * ladder.half_length * theta.sin() * separation_factor(ladder.omega2(), theta, rate)
+    ladder.mass
+        * ladder.half_length
+        * theta.sin()
+        * separation_factor(ladder.big_omega2(), theta, rate)
 }
 
 /// Eq. (15) on the motion (5): the floor force F_f = m g − m l (sin θ θ̈ + cos θ θ̇²), along +y at D.
 pub fn floor_force(ladder: &Ladder, theta: f64, rate: f64) -> f64 {
-    let acc = angular_acceleration(ladder.omega2(), theta);
+    let acc = angular_acceleration(ladder.big_omega2(), theta);
     ladder.mass
         * (ladder.gravity - ladder.half_length * (theta.sin() * acc + theta.cos() * rate * rate))
 }
@@ -58,25 +61,25 @@ pub fn energy(ladder: &Ladder, theta: f64, rate: f64) -> f64 {
 
 /// Footnote 4, generalised to a start with θ̇0 ≠ 0 by the energy integral (9):
 /// cos θ_s = (2 Ω² cos θ0 + θ̇0²) / (3 Ω²). Above 1 the wall would have to pull at the start.
-pub fn separation_cosine(omega2: f64, theta0: f64, rate0: f64) -> f64 {
-    (2.0 * omega2 * theta0.cos() + rate0 * rate0) / (3.0 * omega2)
+pub fn separation_cosine(big_omega2: f64, theta0: f64, rate0: f64) -> f64 {
+    (2.0 * big_omega2 * theta0.cos() + rate0 * rate0) / (3.0 * big_omega2)
 }
 
 /// The wall phase as an ODE for the integrators: y = [θ, θ̇], y' = [θ̇, Ω² sin θ].
 #[derive(Clone, Copy, Debug)]
 pub struct WallPhase {
     /// Ω² = 3g/(4l).
-    pub omega2: f64,
+    pub big_omega2: f64,
     omega: f64,
 }
 
 impl WallPhase {
     /// The wall phase of `ladder`.
     pub fn new(ladder: &Ladder) -> Self {
-        let omega2 = ladder.omega2();
+        let big_omega2 = ladder.big_omega2();
         WallPhase {
-            omega2,
-            omega: omega2.sqrt(),
+            big_omega2,
+            omega: big_omega2.sqrt(),
         }
     }
 }
@@ -89,7 +92,7 @@ pub fn event_safe_step(omega: f64, rate: f64) -> f64 {
 
 impl Ode<2> for WallPhase {
     fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 2]) -> [D; 2] {
-        [y[1], angular_acceleration(self.omega2, y[0])]
+        [y[1], angular_acceleration(self.big_omega2, y[0])]
     }
     fn max_step(&self, y: &[f64; 2]) -> f64 {
         event_safe_step(self.omega, y[1])
@@ -104,7 +107,7 @@ impl Ode<2> for WallPhase {
         false
     }
     fn taylor_series(&self, series: &mut super::integrators::taylor::Series<2>) -> bool {
-        super::integrators::taylor::wall_series_f64(self.omega2, series);
+        super::integrators::taylor::wall_series_f64(self.big_omega2, series);
         true
     }
 }

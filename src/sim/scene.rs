@@ -1,8 +1,9 @@
 //! Scene files (TOML) and their validation. Every problem becomes one [`SceneError`] naming the
 //! file, the line (from toml's spans) and the field, and saying what is allowed.
 //!
-//! Schema (DESIGN.md, "Scenes"): `[ladder] mass half_length gravity`, `[start] angle
-//! angular_velocity`, `[contact] model (stiffness damping)`, `[integrator] method tolerance|step (order)`,
+//! Schema (DESIGN.md, "Scenes"): `[ladder] mass half_length gravity`, `[start] angle (or
+//! angle_from_floor) angular_velocity`, `[contact] model (stiffness damping)`, `[integrator] method
+//! tolerance|step (order)`,
 //! `[end] at (time)`, `[outputs] want`. Unknown keys are errors.
 
 use super::integrators::Control;
@@ -16,6 +17,8 @@ pub use super::scene_errors::SceneError;
 use super::scene_parts::Raw;
 pub use super::scene_parts::{ContactModel, End, MAX_END_TIME, MAX_STEP, MIN_STEP, MIN_TOLERANCE};
 use super::scene_shape::{check_shape, value_error};
+use super::scene_work::check_work;
+use super::start::{check_theta_only, start_angle};
 use super::units::Units;
 use std::path::Path;
 
@@ -26,8 +29,11 @@ pub struct Scene {
     pub file: String,
     /// m, l, g.
     pub ladder: Ladder,
-    /// θ0, rad.
+    /// θ0, rad (for a start given as `angle_from_floor`, the nearest f64 below π/2).
     pub theta0: f64,
+    /// φ0 = π/2 − θ0, rad, when the scene gave the start as `angle_from_floor` (exact; θ0
+    /// cannot hold it near π/2, see `sim::start`).
+    pub phi0: Option<f64>,
     /// θ̇0, rad/s.
     pub rate0: f64,
     /// Integrator name (one of [`METHODS`] or `exact`).
@@ -108,21 +114,17 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
         )?,
     };
     let s = raw.start.get_ref();
-    let theta0 = cx.number(
-        &s.angle,
-        "start.angle",
-        |x| (0.0..std::f64::consts::FRAC_PI_2).contains(&x),
-        "an angle in [0, π/2) rad",
-    )?;
+    let start = start_angle(&cx, s)?;
+    let theta0 = start.theta0;
     let rate0 = cx.number(
         &s.angular_velocity,
         "start.angular_velocity",
         |x| x >= 0.0,
         "a number >= 0 (rad/s)",
     )?;
-    let omega2 = ladder.omega2();
-    if rate0 * rate0 >= omega2 * theta0.cos() {
-        let max = (omega2 * theta0.cos()).sqrt();
+    let big_omega2 = ladder.big_omega2();
+    if rate0 * rate0 >= big_omega2 * start.cos_theta0() {
+        let max = (big_omega2 * start.cos_theta0()).sqrt();
         return Err(cx.err(Some(s.angular_velocity.span()), "start.angular_velocity", format!(
             "{rate0} rad/s is too fast: the wall would have to pull at the start; allowed: below sqrt(3g cos θ0 / 4l) = {max}"
         )));
@@ -134,16 +136,32 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
     let order = super::scene_checks::check_order(&cx, raw.integrator.get_ref(), &method)?;
     let end = check_end(&cx, raw.end.get_ref(), unit)?;
     if theta0 == 0.0 && rate0 == 0.0 && !matches!(end, End::Time(_)) {
-        return Err(cx.err(Some(s.angle.span()), "start", "θ0 = 0 with θ̇0 = 0 is the equilibrium: the ladder never leaves the wall; allowed: angle > 0 or angular_velocity > 0 (or end.at = \"time\")"));
+        return Err(cx.err(Some(start.span.clone()), "start", "θ0 = 0 with θ̇0 = 0 is the equilibrium: the ladder never leaves the wall; allowed: angle > 0 or angular_velocity > 0 (or end.at = \"time\")"));
     }
     let outputs = check_outputs(&cx, raw.outputs.get_ref(), &method, end)?;
     if let ContactModel::Penalty { .. } = contact {
         check_penalty(&cx, &raw, &method, end, &outputs)?;
+        check_theta_only(&cx, &start, "the penalty model (integrated in θ)")?;
     }
+    if control.is_none() {
+        check_theta_only(&cx, &start, "the exact closed form")?;
+    }
+    let i = raw.integrator.get_ref();
+    check_work(
+        &cx,
+        i,
+        &ladder,
+        (theta0, rate0),
+        &method,
+        control,
+        end,
+        contact,
+    )?;
     Ok(Scene {
         file: file.to_string(),
         ladder,
         theta0,
+        phi0: start.phi0,
         rate0,
         method,
         control,

@@ -50,7 +50,9 @@ pub(super) struct RawLadder {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawStart {
-    pub(super) angle: Spanned<f64>,
+    pub(super) angle: Option<Spanned<f64>>,
+    /// The start as its complement π/2 − θ0 (exclusive with `angle`; see `scene::start_angle`).
+    pub(super) angle_from_floor: Option<Spanned<f64>>,
     pub(super) angular_velocity: Spanned<f64>,
 }
 #[derive(Deserialize)]
@@ -91,3 +93,6 @@ pub const MIN_STEP: f64 = 1e-6;
 pub const MAX_STEP: f64 = 1.0;
 /// Longest end time accepted, in units of √(l/g).
 pub const MAX_END_TIME: f64 = 1e4;
+/// Hard limit on the steps of one phase; a scene that would need more is refused up front
+/// (`scene_work`).
+pub const MAX_STEPS: u64 = 10_000_000;

@@ -15,7 +15,7 @@ pub struct Units {
     pub force: f64,
 }
 
-/// The ladder with m = l = g = 1 (ω² = 3/4), the one every rigid scene is run with.
+/// The ladder with m = l = g = 1 (Ω² = 3/4), the one every rigid scene is run with.
 pub const UNIT_LADDER: Ladder = Ladder {
     mass: 1.0,
     half_length: 1.0,

@@ -81,7 +81,7 @@ fn separates_where(c0: &Q, k: i64) -> bool {
         let claimed = l.m.clone()
             * l.l.clone()
             * s.sin.clone()
-            * l.omega_squared()
+            * l.capital_omega_squared()
             * (Q::int(3) * s.cos.clone() - Q::int(k) * c0.clone());
         wall_force_from_rest_at(l, s, c0) == claimed
     })

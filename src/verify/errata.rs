@@ -6,6 +6,7 @@ use crate::registry::check::Config;
 use crate::registry::sample::{exact_ladder, particle_system, EXTRA, LADDER_DRAWS, PER_PARTICLE};
 use crate::registry::{equations, Chain, Eval, Role};
 use crate::scalar::{Rational, Scalar};
+use num_traits::Zero;
 use serde::Serialize;
 
 /// One erratum of the note with its evidence.
@@ -19,6 +20,21 @@ pub struct ErratumReport {
     pub corrected: &'static str,
     /// Why.
     pub why: &'static str,
+    /// Which form of the display is misprinted, counted from 1 in print order (as `ladder show`
+    /// numbers them), and its LaTeX as printed.
+    pub misprinted_form: Option<usize>,
+    /// The misprinted form's LaTeX ([`crate::registry::print_check::MISPRINTS`]).
+    pub misprinted_form_latex: Option<&'static str>,
+    /// What the residuals are measured against: the first side of the chain that holds the
+    /// misprint (a printed form or an independent reference), by its label.
+    pub residual_against: &'static str,
+    /// For a vector display, the component the residuals are of (`x`, `y` or `z`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub residual_component: Option<char>,
+    /// The exact point of the residuals, each coordinate as (name, exact value): the ladder's
+    /// m, l, g, sin θ, cos θ, θ̇, θ̈, θ⃛ as the check evaluates them (on-shell: θ̈ from (5)), or
+    /// the particles' masses and motions and P's.
+    pub point: Vec<(String, String)>,
     /// Printed form minus the reference, at the sample point (exact, shown as a decimal).
     pub printed_residual: f64,
     /// The same fraction, exactly.
@@ -64,19 +80,91 @@ pub fn difference(e: &crate::registry::Equation) -> (String, String) {
     }
 }
 
-fn residuals(chains: &[Chain<Rational>]) -> Option<(Rational, Rational)> {
-    for c in chains {
-        let base = c.iter().find(|s| s.role != Role::Misprint)?;
+/// (printed − base, corrected − base, the base's label) in the first chain with a misprint
+/// whose residual is nonzero (of a vector, the first component that shows it), else the first.
+type Residuals = (Rational, Rational, &'static str, Option<char>);
+
+fn residuals(chains: &[Chain<Rational>]) -> Option<Residuals> {
+    let mut first = None;
+    for (k, c) in chains.iter().enumerate() {
+        let Some(base) = c.iter().find(|s| s.role != Role::Misprint) else {
+            continue;
+        };
         let bad = c.iter().find(|s| s.role == Role::Misprint);
         let good = c.iter().find(|s| s.role == Role::Corrected);
         if let (Some(b), Some(g)) = (bad, good) {
-            return Some((
+            let r = (
                 b.value.clone() - base.value.clone(),
                 g.value.clone() - base.value.clone(),
-            ));
+                base.label,
+                (chains.len() == 3).then(|| ['x', 'y', 'z'][k]),
+            );
+            if !r.0.is_zero() {
+                return Some(r);
+            }
+            first.get_or_insert(r);
         }
     }
-    None
+    first
+}
+
+/// The form of `latex` (counted from 1 in print order) that is the misprint recorded for
+/// display `number`, with the misprint's LaTeX.
+pub fn misprinted_form(number: u32, latex: &str) -> Option<(usize, &'static str)> {
+    use crate::print::parser::{canonical, parse_display};
+    let (_, wrong) = crate::registry::print_check::MISPRINTS
+        .iter()
+        .find(|m| m.0 == number)?;
+    let want = canonical(wrong).ok()?;
+    let display = parse_display(latex).ok()?;
+    let texts = display.statements.iter().flat_map(|s| {
+        s.chain
+            .texts
+            .iter()
+            .chain(s.implies.iter().flat_map(|c| c.texts.iter()))
+    });
+    let k = texts
+        .map(|t| canonical(t).unwrap_or_default())
+        .position(|t| t == want)?;
+    Some((k + 1, wrong))
+}
+
+fn ladder_point(
+    l: &crate::ladder::Ladder<Rational>,
+    s: &crate::ladder::State<Rational>,
+) -> Vec<(String, String)> {
+    [
+        ("m", &l.m),
+        ("l", &l.l),
+        ("g", &l.g),
+        ("sin θ", &s.sin),
+        ("cos θ", &s.cos),
+        ("θ̇", &s.rate),
+        ("θ̈", &s.accel),
+        ("θ⃛", &s.jerk),
+    ]
+    .into_iter()
+    .map(|(n, v)| (n.to_string(), v.to_string()))
+    .collect()
+}
+
+fn particle_point(
+    sys: &crate::system::System<Rational>,
+    p: &crate::system::Point<Rational>,
+) -> Vec<(String, String)> {
+    let v3 = |v: &crate::vector::Vec3<Rational>| format!("({}, {}, {})", v.x, v.y, v.z);
+    let mut out = Vec::new();
+    for (i, q) in sys.particles.iter().enumerate() {
+        let i = i + 1;
+        out.push((format!("m_{i}"), q.m.to_string()));
+        out.push((format!("x_{i}"), v3(&q.x)));
+        out.push((format!("v_{i}"), v3(&q.v)));
+        out.push((format!("a_{i}"), v3(&q.a)));
+    }
+    out.push(("x_P".into(), v3(&p.x)));
+    out.push(("v_P".into(), v3(&p.v)));
+    out.push(("a_P".into(), v3(&p.a)));
+    out
 }
 
 /// The errata of the note, in order, with residuals at a fixed small rational point
@@ -86,6 +174,7 @@ pub fn errata(_cfg: &Config) -> Vec<ErratumReport> {
     for e in equations() {
         let Some(err) = e.erratum else { continue };
         let mut found = None;
+        let mut point = Vec::new();
         for c in &e.checks {
             let chains = match c.eval {
                 Eval::Ladder(sort, f) => {
@@ -99,6 +188,7 @@ pub fn errata(_cfg: &Config) -> Vec<ErratumReport> {
                         Rational::int(4),
                     ];
                     let (l, s) = exact_ladder(sort, v);
+                    point = ladder_point(&l, &s);
                     (f.exact)(&l, &s)
                 }
                 Eval::Floor(..) => continue, // the extension has no errata
@@ -108,6 +198,7 @@ pub fn errata(_cfg: &Config) -> Vec<ErratumReport> {
                         .map(|i| Rational::int((i as i64 * 7919) % 23 + 1))
                         .collect();
                     let (sys, p) = particle_system(sort, n, &values);
+                    point = particle_point(&sys, &p);
                     (f.exact)(&sys, &p)
                 }
             };
@@ -116,13 +207,20 @@ pub fn errata(_cfg: &Config) -> Vec<ErratumReport> {
                 break;
             }
         }
-        let (bad, good) = found.unwrap_or((Rational::int(0), Rational::int(1)));
+        let (bad, good, against, component) =
+            found.unwrap_or((Rational::int(0), Rational::int(1), "none", None));
+        let form = misprinted_form(e.number, e.latex());
         let (difference_text, difference_latex) = difference(&e);
         out.push(ErratumReport {
             number: e.number,
             printed: err.printed,
             corrected: err.corrected,
             why: err.why,
+            misprinted_form: form.map(|f| f.0),
+            misprinted_form_latex: form.map(|f| f.1),
+            residual_against: against,
+            residual_component: component,
+            point,
             printed_residual: bad.to_f64(),
             printed_residual_exact: bad.to_string(),
             corrected_residual: good.to_string(),

@@ -5,7 +5,10 @@ pub mod errata;
 pub mod legend;
 pub mod proof;
 pub mod summary;
+pub mod table;
 pub mod units;
+
+pub use table::table;
 
 use crate::registry::check::{run_check, CheckReport, Config};
 use crate::registry::units::{equation_units, Units};
@@ -24,6 +27,22 @@ pub enum Status {
     Definition,
     /// Some check failed.
     Failed,
+}
+
+/// What happens to an equation off the motion (θ̈ left free instead of taken from (5)).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum OffMotion {
+    /// On-shell: every check was re-run with θ̈ free and failed there, as it must.
+    Fails,
+    /// On-shell, but some check still held with θ̈ free: it cannot tell the motion (a failure).
+    Holds,
+    /// Kinematic, newton or a ladder definition: checked at states with θ̈ free, so it holds for
+    /// any θ̈, on the motion or off it.
+    AnyMotion,
+    /// About any system of particles (general, notation, a particle definition): the ladder's
+    /// motion does not enter.
+    NotApplicable,
 }
 
 /// One row of the report.
@@ -49,6 +68,8 @@ pub struct EquationResult {
     pub exact_points: usize,
     /// True when every check also held exactly (zero residual) at random rational points.
     pub exact: bool,
+    /// Exact points, over all checks, where some side differed (a failure unless 0).
+    pub exact_failures: usize,
     /// Largest float residual in units of its error bound (pass: ≤ 4).
     pub max_residual: f64,
     /// What `max_residual` is measured in (see [`RESIDUAL_UNIT`]).
@@ -63,6 +84,8 @@ pub struct EquationResult {
     /// For on-shell equations: shown to fail off the equation of motion.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fails_off_shell: Option<bool>,
+    /// Off the motion: fails (on-shell), holds for any motion, or not a ladder motion.
+    pub off_motion: OffMotion,
     /// The `=` of the display (counted from 1) that is the law of motion; every other `=` is
     /// algebra or kinematics. Confirmed by computation: off the motion the chain breaks there
     /// and only there ([`crate::registry::law`]).
@@ -80,11 +103,19 @@ pub struct EquationResult {
     pub proof: String,
     /// Seconds spent on the symbolic proofs of this equation.
     pub proof_seconds: f64,
-    /// Dimensional analysis of every form ([`crate::registry::units`]).
+    /// Dimensional analysis of every printed form ([`crate::registry::print_check::units`]);
+    /// for an extension beyond the note (no print), of its Rust forms.
     pub units: Units,
-    /// Why `inconsistent` (the clash and where) or `not applicable`.
+    /// Why `inconsistent` (the offending sum and the printed form's index, as `ladder show N`
+    /// numbers the forms) or `not applicable`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub units_detail: Option<String>,
+    /// Dimensional analysis of the Rust forms ([`crate::registry::units`]); it must agree with
+    /// `units` (a disagreement is a problem).
+    pub units_code: Units,
+    /// Why the Rust forms are `inconsistent` or `not applicable`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub units_code_detail: Option<String>,
     /// Forms in the display's print (issue 9; 0 for an extension beyond the note).
     pub print_forms: usize,
     /// Forms of the print parsed and evaluated.
@@ -96,6 +127,9 @@ pub struct EquationResult {
     /// Why forms of the print were not parsed or evaluated.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub print_unparsed: Vec<String>,
+    /// Where the display's section starts in the book, `equations/05-point-d.md:42`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub doc: Option<String>,
 }
 
 /// The unit of `max_residual`: |lhs − rhs| divided by the running error bound of the two sides,
@@ -184,6 +218,7 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
         exact: reports
             .iter()
             .all(|r| r.exact_points > 0 && r.exact_failures == 0),
+        exact_failures: reports.iter().map(|r| r.exact_failures).sum(),
         max_residual: reports
             .iter()
             .map(|r| r.max_scaled_residual)
@@ -203,6 +238,7 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
         } else {
             Some(on_shell.iter().all(|&b| b))
         },
+        off_motion: off_motion(e, &on_shell),
         law_step: e.law.map(|l| l.step),
         law: e.law.map(|l| l.statement),
         problems,
@@ -210,12 +246,41 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
         proof: "not attempted".into(),
         proof_seconds: 0.0,
         units,
-        units_detail,
+        units_detail: units_detail.clone(),
+        units_code: units,
+        units_code_detail: units_detail,
         print_forms: 0,
         print_parsed: 0,
         print_checked: 0,
         print_matches_code: false,
         print_unparsed: Vec::new(),
+        doc: None,
+    }
+}
+
+/// What an equation does off the motion, from its checks: the on-shell verdicts (`fails off
+/// shell` per check) when there are any, else whether every check is at ladder states with θ̈
+/// drawn freely.
+fn off_motion(e: &Equation, on_shell: &[bool]) -> OffMotion {
+    use crate::registry::sample::LadderSample;
+    use crate::registry::Eval;
+    if !on_shell.is_empty() {
+        return if on_shell.iter().all(|&b| b) {
+            OffMotion::Fails
+        } else {
+            OffMotion::Holds
+        };
+    }
+    let free = |c: &crate::registry::Check| {
+        matches!(
+            c.eval,
+            Eval::Ladder(LadderSample::Kinematic, _) | Eval::Floor(LadderSample::Kinematic, _)
+        )
+    };
+    if !e.checks.is_empty() && e.checks.iter().all(free) {
+        OffMotion::AnyMotion
+    } else {
+        OffMotion::NotApplicable
     }
 }
 
@@ -265,7 +330,14 @@ pub fn judge_print(
         .code_mismatches
         .iter()
         .map(|c| format!("print vs code: {c}"));
-    let problems: Vec<String> = p.problems.into_iter().chain(unparsed).chain(code).collect();
+    let units = print_units_problems(&mut r, e, latex);
+    let problems: Vec<String> = p
+        .problems
+        .into_iter()
+        .chain(unparsed)
+        .chain(code)
+        .chain(units)
+        .collect();
     if !problems.is_empty() {
         r.problems.extend(problems);
         r.status = Status::Failed;
@@ -273,9 +345,46 @@ pub fn judge_print(
     r
 }
 
+/// The print's units verdict becomes the display's `units` (the Rust forms' stays as
+/// `units_code`); returns the problems: a form that must hold and is inconsistent, or a verdict
+/// that differs from the Rust forms'.
+fn print_units_problems(r: &mut EquationResult, e: &Equation, latex: &str) -> Vec<String> {
+    let found = match crate::registry::print_check::units::print_units(e, latex) {
+        Ok(f) => f,
+        // The print check reports a display that does not parse; units have nothing to judge.
+        Err(err) => {
+            r.units = Units::NotApplicable;
+            r.units_detail = Some(format!("print not parsed: {err}"));
+            return Vec::new();
+        }
+    };
+    let mut problems: Vec<String> = found
+        .problems
+        .iter()
+        .map(|p| format!("units (print): {p}"))
+        .collect();
+    (r.units, r.units_detail) = found.verdict();
+    if r.units != r.units_code {
+        problems.push(format!(
+            "units: the print is {}, the Rust forms are {}{}",
+            r.units.name(),
+            r.units_code.name(),
+            r.units_code_detail
+                .as_deref()
+                .map_or(String::new(), |d| format!(" ({d})"))
+        ));
+    }
+    problems
+}
+
 /// Run every check of every equation (on two threads) and judge each equation.
 pub fn verify_all(cfg: &Config) -> Vec<EquationResult> {
     verify_list(equations(), cfg)
+}
+
+/// Run every check of the given equations only (`ladder verify --only`).
+pub fn verify_equations(eqs: Vec<Equation>, cfg: &Config) -> Vec<EquationResult> {
+    verify_list(eqs, cfg)
 }
 
 /// Run the checks of the extension beyond the note, (P1)-(P5).
@@ -314,6 +423,12 @@ fn verify_list(eqs: Vec<Equation>, cfg: &Config) -> Vec<EquationResult> {
             .collect()
     });
     results.sort_by_key(|r| r.number);
+    let pages = crate::docs::pages::headings(&crate::docs::default_dir());
+    for r in &mut results {
+        r.doc = pages
+            .get(&r.label)
+            .map(|p| format!("{}:{}", p.file, p.line));
+    }
     results
 }
 
@@ -341,68 +456,6 @@ pub fn counts(results: &[EquationResult]) -> (usize, usize, usize, usize) {
         n(Status::Definition),
         n(Status::Failed),
     )
-}
-
-/// The human-readable table.
-pub fn table(results: &[EquationResult]) -> String {
-    let mut out = String::new();
-    out.push_str(&format!(
-        "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9} {:>6}  {:<14} {}\n",
-        "eq",
-        "sec",
-        "title",
-        "kind",
-        "checks",
-        "cases",
-        "exact",
-        "res/bound",
-        "proved",
-        "units",
-        "status"
-    ));
-    for r in results {
-        let status = match r.status {
-            Status::Verified => "verified",
-            Status::Erratum => "erratum",
-            Status::Definition => "definition",
-            Status::Failed => "FAILED",
-        };
-        let print = if r.print_forms > 0 {
-            format!(
-                "  print {}/{}{}",
-                r.print_parsed,
-                r.print_forms,
-                if r.print_matches_code { "" } else { " (code?)" }
-            )
-        } else {
-            String::new()
-        };
-        out.push_str(&format!(
-            "{:>4}  {:<5} {:<46} {:<10} {:>6} {:>6} {:>5} {:>9.3} {:>6}  {:<14} {}{}\n",
-            r.label,
-            r.section,
-            r.title.chars().take(46).collect::<String>(),
-            r.kind.name(),
-            r.checks.len(),
-            r.cases,
-            if r.exact { "yes" } else { "no" },
-            r.max_residual,
-            if r.proved { "yes" } else { "no" },
-            r.units.name(),
-            status,
-            print
-        ));
-        for u in &r.print_unparsed {
-            out.push_str(&format!("      · print: {u}\n"));
-        }
-        for p in &r.problems {
-            out.push_str(&format!("      ! {p}\n"));
-        }
-        if let (Units::Inconsistent, Some(d)) = (r.units, &r.units_detail) {
-            out.push_str(&format!("      units: {d}\n"));
-        }
-    }
-    out
 }
 
 /// The verdict on one derivation of the equation of motion ([`crate::method`]).

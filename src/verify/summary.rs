@@ -38,3 +38,19 @@ pub fn proof_counts(results: &[EquationResult]) -> (usize, usize, f64) {
         results.iter().map(|r| r.proof_seconds).sum(),
     )
 }
+
+/// The Schwartz-Zippel bound of the summary line in one plain sentence.
+pub fn schwartz_zippel_sentence(results: &[EquationResult]) -> String {
+    let worst = |f: fn(&EquationResult) -> f64| {
+        results
+            .iter()
+            .map(f)
+            .fold(f64::NEG_INFINITY, f64::max)
+            .ceil()
+    };
+    format!(
+        "in plain words: if any of these identities were false, the chance that it still came out exactly zero at all of its random exact points is at most 1e{} (1e{} counting only the points evaluated in rationals)",
+        worst(|r| r.sz_bound_log10),
+        worst(|r| r.sz_bound_rational_log10)
+    )
+}

@@ -10,8 +10,11 @@ use crate::ladder::forces::wall_force;
 use crate::ladder::geometry::{corner_position, Corner};
 use crate::ladder::particles::{as_system, external_torque_about};
 use crate::ladder::torque::{angular_momentum_about_a, eq13_moment_of_inertia_about_corner};
+use crate::registry::print_check::units::print_units;
 use crate::registry::sample::LadderSample;
-use crate::registry::units::{dimensioned_ladder, equation_units, judge_chains, Units};
+use crate::registry::units::{
+    dimensioned_ladder, equation_units, judge_chains, Units, UnitsFindings,
+};
 use crate::registry::{corrected, misprint, printed, reference, Equation};
 use crate::scalar::{sq, Dim, Scalar};
 use crate::vector::Vec3;
@@ -20,11 +23,16 @@ use serde::Serialize;
 /// Dimensional analysis of one erratum.
 #[derive(Clone, Debug, Serialize)]
 pub struct ErratumUnits {
-    /// The printed form: `inconsistent` when units alone catch the misprint, else `consistent`.
+    /// The printed form, as parsed from the print: `inconsistent` when units alone catch the
+    /// misprint, else `consistent`.
     pub printed: Units,
-    /// What units see in the printed form (the clash and where), when inconsistent.
+    /// What units see in the printed form (the offending sum and the form's index in the print,
+    /// or its dimension against its chain's), when inconsistent.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub printed_detail: Option<String>,
+    /// The Rust encoding of the printed form (its misprint side), judged the same way: must
+    /// equal `printed`.
+    pub printed_code: Units,
     /// The corrected form and every other side: must be `consistent` (or `dimensionless`).
     pub corrected: Units,
     /// What went wrong with the corrected form, if anything.
@@ -36,6 +44,11 @@ impl ErratumUnits {
     /// True when units alone would have caught the misprint.
     pub fn caught_by_units(&self) -> bool {
         self.printed == Units::Inconsistent
+    }
+    /// True when the print and its Rust encoding agree, and the corrected form is not
+    /// inconsistent: the witness holds as recorded.
+    pub fn holds(&self) -> bool {
+        self.printed == self.printed_code && self.corrected != Units::Inconsistent
     }
     /// The line `equations/ERRATA.md` carries for this erratum (held in step by a test).
     pub fn doc_line(&self) -> String {
@@ -55,10 +68,24 @@ impl ErratumUnits {
     }
 }
 
-/// The units witness of an erratum's equation.
+/// The units witness of an erratum's equation: the printed form from the parsed print
+/// ([`crate::registry::print_check::units`]), the corrected form from the Rust forms.
 pub fn erratum_units(e: &Equation) -> ErratumUnits {
     let found = equation_units(e);
-    let printed_detail = found.misprints.iter().find_map(|m| m.1.clone());
+    let caught = |f: &UnitsFindings| f.misprints.iter().find_map(|m| m.1.clone());
+    let code_detail = caught(&found);
+    // A display without a print (none today) falls back on its Rust encoding.
+    let printed_detail = match print_units(e, e.latex()) {
+        Ok(p) => caught(&p),
+        Err(_) => code_detail.clone(),
+    };
+    let verdict = |d: &Option<String>| {
+        if d.is_some() {
+            Units::Inconsistent
+        } else {
+            Units::Consistent
+        }
+    };
     let (corrected, corrected_detail) = match found.problems.first() {
         Some(p) => (Units::Inconsistent, Some(p.clone())),
         None => {
@@ -68,12 +95,9 @@ pub fn erratum_units(e: &Equation) -> ErratumUnits {
         }
     };
     ErratumUnits {
-        printed: if printed_detail.is_some() {
-            Units::Inconsistent
-        } else {
-            Units::Consistent
-        },
+        printed: verdict(&printed_detail),
         printed_detail,
+        printed_code: verdict(&code_detail),
         corrected,
         corrected_detail,
     }
@@ -121,17 +145,17 @@ pub fn prose_units() -> Vec<ProseUnits> {
         reference("x_cm × m v_cm of the particles", orbital),
         printed("−m l² θ̇", -(m.clone() * sq(&len) * w.clone())),
     ]]);
-    // Footnote 4: F_w = m l sin θ ω² (3 cos θ − 2 cos θ0), ω² = 3g/4l; cos θ0 a pure number.
+    // Footnote 4: F_w = m l sin θ Ω² (3 cos θ − 2 cos θ0), Ω² = 3g/4l; cos θ0 a pure number.
     let cos0 = Dim::int(1).require_dimensionless("cos θ0");
     let f_w = m.clone()
         * len.clone()
         * s.sin.clone()
-        * l.omega_squared()
+        * l.capital_omega_squared()
         * (Dim::int(3) * s.cos.clone() - Dim::int(2) * cos0.clone());
     let footnote = judge_chains(&[
         vec![
             reference("F_w, eq. (14)", wall_force(&l, &s)),
-            printed("m l sin θ ω² (3 cos θ − 2 cos θ0)", f_w),
+            printed("m l sin θ Ω² (3 cos θ − 2 cos θ0)", f_w),
         ],
         vec![
             reference("cos θ", s.cos.clone()),
@@ -179,7 +203,7 @@ pub fn prose_units() -> Vec<ProseUnits> {
     vec![
         row(
             "sec. 2.1, footnote 4",
-            "F_w = m l sin θ ω² (3 cos θ − 2 cos θ0), zero at cos θ = (2/3) cos θ0",
+            "F_w = m l sin θ Ω² (3 cos θ − 2 cos θ0), zero at cos θ = (2/3) cos θ0",
             footnote,
             false,
         ),

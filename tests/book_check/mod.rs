@@ -2,8 +2,9 @@
 //! page as XML (quick-xml: the pages are polyglot XHTML, so a page that is not well-formed is
 //! itself a defect) and reports, as `file: message`,
 //!
-//! * a numbered display missing, doubled, without block MathML, or with a status or proof
-//!   verdict other than the one `ladder verify --json` gives (also every summary-table row);
+//! * a numbered display missing, doubled, without block MathML, or with a status, proof verdict
+//!   or units verdict other than the one `ladder verify --json` gives (status and proof also in
+//!   every summary-table row);
 //! * an erratum listed on the errata page that `ladder verify` does not call an erratum, or the
 //!   reverse;
 //! * raw LaTeX left in the text of a page (a backslash command, `$$`, `^{`, `_{`), outside code;
@@ -16,18 +17,20 @@ use quick_xml::Reader;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
-/// What `ladder verify --json` says: number → (status, proved), and the errata.
+/// What `ladder verify --json` says: number → (status, proved), number → units, and the errata.
 pub struct Expected {
     pub displays: BTreeMap<u32, (String, bool)>,
+    pub units: BTreeMap<u32, String>,
     pub errata: BTreeSet<u32>,
 }
 
 /// Read the expectations from the JSON of `ladder verify --json`.
 pub fn expected(verify: &serde_json::Value) -> Expected {
-    let mut displays = BTreeMap::new();
+    let (mut displays, mut units) = (BTreeMap::new(), BTreeMap::new());
     for list in ["equations", "extensions"] {
         for e in verify[list].as_array().expect("a list of equations") {
             let n = e["number"].as_u64().expect("a number") as u32;
+            units.insert(n, e["units"].as_str().expect("units").to_string());
             let s = e["status"].as_str().expect("a status").to_string();
             displays.insert(n, (s, e["proved"].as_bool().expect("proved")));
         }
@@ -37,7 +40,11 @@ pub fn expected(verify: &serde_json::Value) -> Expected {
         .filter(|(n, (s, _))| **n <= 90 && s == "erratum")
         .map(|(n, _)| *n)
         .collect();
-    Expected { displays, errata }
+    Expected {
+        displays,
+        units,
+        errata,
+    }
 }
 
 #[derive(Default)]
@@ -47,6 +54,8 @@ struct Page {
     refs: Vec<(String, bool)>,
     /// (number, status, proved, has block math) of each display, and of each table row.
     displays: Vec<(u32, String, bool, bool)>,
+    /// (number, data-units) of each display.
+    units: Vec<(u32, Option<String>)>,
     rows: Vec<(u32, String, bool)>,
     errata: Vec<u32>,
     problems: Vec<String>,
@@ -131,6 +140,7 @@ fn read_page(src: &str, code_page: bool) -> Page {
                         page.rows.push((n, s.clone(), proved));
                     } else {
                         page.displays.push((n, s.clone(), proved, false));
+                        page.units.push((n, a.get("data-units").cloned()));
                         display = Some(page.displays.len() - 1);
                     }
                 }
@@ -223,6 +233,14 @@ pub fn check(dir: &Path, expect: &Expected) -> Vec<String> {
                     "{name}: display {n} says {s} (proved {proved}), ladder verify says {es} (proved {ep})"
                 )),
                 None => problems.push(format!("{name}: display {n} is not an equation ladder verify knows")),
+            }
+        }
+        for (n, u) in &page.units {
+            if expect.units.get(n) != u.as_ref() {
+                problems.push(format!(
+                    "{name}: display {n} says units {u:?}, ladder verify says {:?}",
+                    expect.units.get(n)
+                ));
             }
         }
         for (n, s, proved) in &page.rows {

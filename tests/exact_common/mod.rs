@@ -69,9 +69,9 @@ pub const JACOBI: [[f64; 7]; 12] = [
 /// rounding of sin(θ₀/2). It is large only near the separatrix with both θ₀ > 0 and θ̇₀ > 0,
 /// where a is a small difference of inputs; a relative error u in s₀ then moves the times by
 /// about κu/(2Ω) — the problem's own condition, which no f64 algorithm escapes.
-pub fn input_condition(theta0: f64, rate0: f64, omega2: f64) -> f64 {
+pub fn input_condition(theta0: f64, rate0: f64, big_omega2: f64) -> f64 {
     let s0 = (0.5 * theta0).sin();
-    let rho = 0.5 * rate0 / omega2.sqrt();
+    let rho = 0.5 * rate0 / big_omega2.sqrt();
     let a = (s0 - rho) * (s0 + rho);
     if a == 0.0 {
         0.0

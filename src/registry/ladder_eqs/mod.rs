@@ -40,7 +40,7 @@ pub(super) fn equations() -> Vec<Equation> {
     e28.erratum = Some(Erratum {
         printed: r"\tau_E - F_{E,y} l \sin \theta",
         corrected: r"\tau_E + F_{E,x} l \cos \theta - F_{E,y} l \sin \theta",
-        why: "the coordinate force F_E has an x component too; its torque F_E,x l cos θ is missing from the second form (the third form has it)",
+        why: "the coordinate force F_E has an x component too; its torque F_E,x l cos θ is missing from form 3 of the display, τ_E − F_E,y l sin θ (form 4, mgl sin θ + F_E,x l cos θ − F_E,y l sin θ, has it)",
     });
     vec![
         eq(

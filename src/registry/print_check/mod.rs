@@ -289,5 +289,6 @@ pub(crate) fn form_text<'a>(chains: &'a [Vec<Form>], label: &str) -> &'a str {
 
 mod inject;
 mod run;
+pub mod units;
 pub use inject::{injections, run_injection, Injection, Outcome, Typo};
 pub use run::{check_print, check_print_with, sample_check, PRINT_EXACT_POINTS, PRINT_FLOAT_CASES};

@@ -98,6 +98,7 @@
 //! * B. C. Carlson, Numerical computation of real or complex elliptic integrals, Numer.
 //!   Algorithms 10 (1995) 13–26 (the duplication algorithm `ellip` implements).
 mod carlson;
+pub mod flat;
 pub mod jacobi;
 mod phase_one;
 pub mod twofold;

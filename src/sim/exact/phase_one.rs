@@ -30,7 +30,7 @@ pub struct Separation {
 pub struct PhaseOne {
     theta0: f64,
     rate0: f64,
-    omega2: f64,
+    big_omega2: f64,
     omega: f64,
     /// sin(θ₀/2), cos(θ₀/2).
     s0: f64,
@@ -64,13 +64,13 @@ enum Orbit {
 /// cos θ_s = (2/3) cos θ₀ + θ̇₀²/(3Ω²): where the wall force m l sin θ (Ω² cos θ − θ̇²) of
 /// eqs. (5), (6), (8) and the energy integral vanishes (footnote 4 of the note, generalised to a
 /// moving start). When it is ≥ cos θ₀ the wall force is already ≤ 0 at the start.
-pub fn separation_cos(theta0: f64, rate0: f64, omega2: f64) -> f64 {
-    (2.0 * theta0.cos() + rate0 * rate0 / omega2) / 3.0
+pub fn separation_cos(theta0: f64, rate0: f64, big_omega2: f64) -> f64 {
+    (2.0 * theta0.cos() + rate0 * rate0 / big_omega2) / 3.0
 }
 
 impl PhaseOne {
     /// The motion from θ₀ ∈ [0, π/2), θ̇₀ ≥ 0 with Ω² = 3g/(4l) > 0 (eq. (5)).
-    pub fn new(theta0: f64, rate0: f64, omega2: f64) -> Result<PhaseOne, String> {
+    pub fn new(theta0: f64, rate0: f64, big_omega2: f64) -> Result<PhaseOne, String> {
         if !(theta0.is_finite() && (0.0..FRAC_PI_2).contains(&theta0)) {
             return Err(format!(
                 "start angle theta0 = {theta0} rad is not in [0, pi/2)"
@@ -81,12 +81,12 @@ impl PhaseOne {
                 "start rate theta0_dot = {rate0} rad/s is not finite and >= 0"
             ));
         }
-        if !(omega2.is_finite() && (1e-100..=1e100).contains(&omega2)) {
+        if !(big_omega2.is_finite() && (1e-100..=1e100).contains(&big_omega2)) {
             return Err(format!(
-                "omega^2 = 3g/(4l) = {omega2} 1/s^2 is not in [1e-100, 1e100]"
+                "omega^2 = 3g/(4l) = {big_omega2} 1/s^2 is not in [1e-100, 1e100]"
             ));
         }
-        let omega = omega2.sqrt();
+        let omega = big_omega2.sqrt();
         let (s0, c0) = (0.5 * theta0).sin_cos();
         let rho = 0.5 * rate0 / omega;
         if theta0 == 0.0 && rate0 == 0.0 {
@@ -94,7 +94,7 @@ impl PhaseOne {
             return Ok(PhaseOne {
                 theta0,
                 rate0,
-                omega2,
+                big_omega2,
                 omega,
                 s0,
                 c0,
@@ -158,7 +158,7 @@ impl PhaseOne {
         Ok(PhaseOne {
             theta0,
             rate0,
-            omega2,
+            big_omega2,
             omega,
             s0,
             c0,
@@ -178,8 +178,8 @@ impl PhaseOne {
     }
 
     /// Ω² = 3g/(4l), 1/s².
-    pub fn omega2(&self) -> f64 {
-        self.omega2
+    pub fn big_omega2(&self) -> f64 {
+        self.big_omega2
     }
 
     /// The complete integral K(k) of the orbit's modulus (∞ on the separatrix, 0 at rest).
@@ -199,7 +199,7 @@ impl PhaseOne {
             return None;
         }
         // cos θ₀ − θ̇₀²/Ω² in double-double: near immediate separation it is a small difference.
-        let margin = cos_minus_ratio(self.theta0.cos(), self.rate0, self.omega2);
+        let margin = cos_minus_ratio(self.theta0.cos(), self.rate0, self.big_omega2);
         if margin <= 0.0 || margin.is_nan() {
             let (angle, rate) = (self.theta0, self.rate0);
             return Some(Separation {
@@ -214,8 +214,8 @@ impl PhaseOne {
         let (ss, cs) = (ss2.sqrt(), (1.0 - ss2).sqrt());
         let angle = 2.0 * ss.atan2(cs);
         let (q, q_lo) = two_prod(self.rate0, self.rate0);
-        let cos_s = (2.0 * self.theta0.cos() + (q + q_lo) / self.omega2) / 3.0;
-        let rate = (self.omega2 * cos_s).sqrt();
+        let cos_s = (2.0 * self.theta0.cos() + (q + q_lo) / self.big_omega2) / 3.0;
+        let rate = (self.big_omega2 * cos_s).sqrt();
         let to = End {
             s: ss,
             c: cs,
@@ -257,7 +257,7 @@ impl PhaseOne {
     /// from (8) and θ̈ from (5). Positive (the wall pushes) on 0 < t < t_s, zero at t_s.
     pub fn wall_force_per_ml(&self, t: f64) -> f64 {
         let (theta, rate) = self.theta_rate(t);
-        theta.sin() * (self.omega2 * theta.cos() - rate * rate)
+        theta.sin() * (self.big_omega2 * theta.cos() - rate * rate)
     }
 
     /// (θ(t), θ̇(t)) with one evaluation of the Jacobi functions.

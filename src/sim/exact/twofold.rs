@@ -16,15 +16,15 @@ pub fn two_sum(a: f64, b: f64) -> (f64, f64) {
 
 /// cos θ₀ − θ̇₀²/Ω², the wall-force margin Ω⁻²(Ω² cos θ₀ − θ̇₀²) at the start, with the
 /// square and the quotient carried in double-double: the only error left is that of `cos0`.
-pub fn cos_minus_ratio(cos0: f64, rate0: f64, omega2: f64) -> f64 {
+pub fn cos_minus_ratio(cos0: f64, rate0: f64, big_omega2: f64) -> f64 {
     let (p, p_lo) = two_prod(rate0, rate0);
     if !p.is_finite() {
         return f64::NEG_INFINITY;
     }
-    let q = p / omega2;
+    let q = p / big_omega2;
     // Remainder of the division, exact by fma: p + p_lo − q Ω² = r.
-    let r = (-q).mul_add(omega2, p) + p_lo;
-    let q_lo = r / omega2;
+    let r = (-q).mul_add(big_omega2, p) + p_lo;
+    let q_lo = r / big_omega2;
     let (d, d_lo) = two_sum(cos0, -q);
     d + (d_lo - q_lo)
 }

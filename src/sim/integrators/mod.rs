@@ -52,6 +52,15 @@ pub trait Ode<const N: usize> {
         y.map(f64::abs)
     }
 
+    /// Components that act as *index-2* variables in the stiff limit (Hairer & Wanner II,
+    /// sec. VII.4): rates of stiff components whose own values are nearly algebraic, so that an
+    /// implicit method determines them only to (rounding of the values)/h. Implicit methods
+    /// divide their error weight by min(h, 1), as radau5.f does for index-2 variables.
+    /// Default: none.
+    fn index2(&self) -> [bool; N] {
+        [false; N]
+    }
+
     /// Whether the acceleration of a second-order model depends on the velocity
     /// (then Störmer-Verlet solves its implicit half step by fixed-point iteration).
     fn accel_uses_velocity(&self) -> bool {

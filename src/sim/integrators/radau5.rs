@@ -10,7 +10,7 @@
 //! The dense output is the collocation polynomial itself.
 
 use super::adaptive::{start_step, trial_step};
-use super::{all_finite, error_norm, eval, Ode, Stats, StepError, Stepper};
+use super::{all_finite, eval, Ode, Stats, StepError, Stepper};
 use num_dual::Dual64;
 
 const SQ6: f64 = 2.449_489_742_783_178;
@@ -103,6 +103,31 @@ pub fn jacobian<const N: usize, S: Ode<N>>(sys: &S, t: f64, y: &[f64; N]) -> [[f
         }
     }
     jac
+}
+
+/// The weighted RMS norm of [`super::error_norm`] with the index-2 components' weights
+/// ([`Ode::index2`]) divided by min(h, 1): their values are known only to (rounding)/h, and a
+/// fixed weight would make the error estimate grow as h shrinks (a step-size collapse).
+fn step_norm<const N: usize, S: Ode<N>>(
+    sys: &S,
+    err: &[f64; N],
+    y0: &[f64; N],
+    y1: &[f64; N],
+    rtol: f64,
+    h: f64,
+) -> f64 {
+    let (s0, s1, idx2) = (sys.scale(y0), sys.scale(y1), sys.index2());
+    let hfac = h.abs().min(1.0);
+    let mut sum = 0.0;
+    for i in 0..N {
+        let mut sk = rtol * s0[i].max(s1[i]);
+        if idx2[i] {
+            sk /= hfac;
+        }
+        // The floor keeps the weight positive at an exact equilibrium (all scales zero).
+        sum += (err[i] / sk.max(f64::MIN_POSITIVE)).powi(2);
+    }
+    (sum / N as f64).sqrt()
 }
 
 /// The Radau IIA(5) integrator.
@@ -241,7 +266,7 @@ impl<const N: usize> Stepper<N> for Radau5<N> {
                 let mut norm = 0.0f64;
                 for a in 0..3 {
                     let dz: [f64; N] = std::array::from_fn(|i| rhs[a * N + i]);
-                    norm = norm.max(error_norm(sys, &dz, &y, &y, self.newton_rtol));
+                    norm = norm.max(step_norm(sys, &dz, &y, &y, self.newton_rtol, h));
                     for i in 0..N {
                         z[a][i] += dz[i];
                     }
@@ -290,7 +315,7 @@ impl<const N: usize> Stepper<N> for Radau5<N> {
             if ok {
                 lu_solve(&self.e1, &self.piv1, &mut est, N);
                 let e: [f64; N] = std::array::from_fn(|i| est[i]);
-                err = error_norm(sys, &e, &y, &y1, self.rtol).max(1e-10);
+                err = step_norm(sys, &e, &y, &y1, self.rtol, h).max(1e-10);
                 if err >= 1.0 && (self.first || rejected) {
                     // Second estimate on the first or a rejected step (stiff components).
                     let yt: [f64; N] = std::array::from_fn(|i| y[i] + e[i]);
@@ -299,7 +324,7 @@ impl<const N: usize> Stepper<N> for Radau5<N> {
                     let mut est2: Vec<f64> = (0..N).map(|i| ft[i] + f2[i]).collect();
                     lu_solve(&self.e1, &self.piv1, &mut est2, N);
                     let e2: [f64; N] = std::array::from_fn(|i| est2[i]);
-                    err = error_norm(sys, &e2, &y, &y1, self.rtol).max(1e-10);
+                    err = step_norm(sys, &e2, &y, &y1, self.rtol, h).max(1e-10);
                 }
             }
             let quot = (err.powf(0.25) / 0.9).clamp(0.125, 5.0);

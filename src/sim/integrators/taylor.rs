@@ -110,7 +110,7 @@ pub fn sin_cos_coefficient<S: Scalar>(inv_k: &S, d: &[S], sin: &[S], cos: &[S]) 
 /// On entry `theta[0]`, `rate[0]`, `sin[0] = sin θ0`, `cos[0] = cos θ0` hold the start; on return
 /// every slice holds its series to order p. `inv[k] = 1/k` for k ≤ p.
 pub fn wall_series<S: Scalar>(
-    omega2: &S,
+    big_omega2: &S,
     inv: &[S],
     theta: &mut [S],
     rate: &mut [S],
@@ -126,7 +126,7 @@ pub fn wall_series<S: Scalar>(
         }
         if k < p {
             theta[k + 1] = rate[k].clone() * inv[k + 1].clone();
-            rate[k + 1] = omega2.clone() * sin[k].clone() * inv[k + 1].clone();
+            rate[k + 1] = big_omega2.clone() * sin[k].clone() * inv[k + 1].clone();
         }
     }
 }
@@ -297,9 +297,9 @@ pub fn horner_with_rate(c: &[f64], tau: f64) -> (f64, f64) {
 /// The series of the separation factor over a step, Ω² t(τ) − r(τ)², into `out[k]`, k ≤ p =
 /// `out.len() − 1`: `trig` is the series of cos θ (or, in the complement, of sin φ) and `rate`
 /// that of θ̇ (φ̇). The root of this polynomial is the separation event of the Taylor method.
-pub fn separation_factor_series(omega2: f64, trig: &[f64], rate: &[f64], out: &mut [f64]) {
+pub fn separation_factor_series(big_omega2: f64, trig: &[f64], rate: &[f64], out: &mut [f64]) {
     for (k, o) in out.iter_mut().enumerate() {
-        *o = omega2 * trig[k] - square(k, rate);
+        *o = big_omega2 * trig[k] - square(k, rate);
     }
 }
 
@@ -318,12 +318,12 @@ fn square(k: usize, r: &[f64]) -> f64 {
 }
 
 /// The wall phase's series in f64, for `WallPhase::taylor_series`.
-pub fn wall_series_f64(omega2: f64, s: &mut Series<2>) {
+pub fn wall_series_f64(big_omega2: f64, s: &mut Series<2>) {
     let p = s.order;
     let inv = &INV[..p + 2];
     let [theta, rate] = &mut s.y;
     wall_series(
-        &omega2,
+        &big_omega2,
         inv,
         &mut theta[..=p],
         &mut rate[..=p],
@@ -336,7 +336,7 @@ pub fn wall_series_f64(omega2: f64, s: &mut Series<2>) {
 /// with sin θ = cos φ), to order p = `phi.len() − 1`; `sin`, `cos` are those of φ. Same entry
 /// and return conventions as [`wall_series`].
 pub fn complement_series<S: Scalar>(
-    omega2: &S,
+    big_omega2: &S,
     inv: &[S],
     phi: &mut [S],
     rate: &mut [S],
@@ -352,18 +352,18 @@ pub fn complement_series<S: Scalar>(
         }
         if k < p {
             phi[k + 1] = rate[k].clone() * inv[k + 1].clone();
-            rate[k + 1] = -(omega2.clone() * cos[k].clone() * inv[k + 1].clone());
+            rate[k + 1] = -(big_omega2.clone() * cos[k].clone() * inv[k + 1].clone());
         }
     }
 }
 
 /// The complement wall phase's series in f64, for `ComplementWall::taylor_series`.
-pub fn complement_series_f64(omega2: f64, s: &mut Series<2>) {
+pub fn complement_series_f64(big_omega2: f64, s: &mut Series<2>) {
     let p = s.order;
     let inv = &INV[..p + 2];
     let [phi, rate] = &mut s.y;
     complement_series(
-        &omega2,
+        &big_omega2,
         inv,
         &mut phi[..=p],
         &mut rate[..=p],

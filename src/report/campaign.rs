@@ -1,0 +1,190 @@
+//! The reliability campaign (issue 11, item 3): scenes drawn at random from the whole domain
+//! the README promises, each run through the path `ladder simulate` takes (scene text → parse →
+//! plan → run → outputs) and judged by [`super::campaign_judge`]; `examples/campaign.rs` is
+//! the command.
+//!
+//! **The domain drawn** (each scene from its own ChaCha8 stream, `seed` and the scene's index,
+//! so any one scene can be drawn again alone):
+//! * m, l, g each 10^U(−30, 30);
+//! * the contact: rigid (3 in 4) or penalty with κ = k l/(m g) = 10^U(0, 12) and a damping
+//!   γ = c √(l/g)/m of 0 (half) or 10^U(−3, 1) √κ;
+//! * every method (`euler` … `taylor`, and `exact` for rigid scenes), a tolerance
+//!   10^U(−16, −1) or a step 10^U(−6, 0) √(l/g), given in seconds or in units of √(l/g);
+//! * every end (`separation`, `flat`, `time` with 10^U(−3, 4) √(l/g), in either unit) and a
+//!   random non-empty set of the outputs that end can produce (`Output::producible`);
+//! * θ0: 0, subnormal (10^U(−323.3, −308)), tiny (10^U(−300, −2)), anywhere in (0, π/2), near
+//!   π/2 (π/2 − 10^U(−15.5, −1)) or the last float below π/2;
+//! * θ̇0: 0 (half), a fraction U(0, 1) of the fastest start the wall can hold
+//!   (Ω √(cos θ0), Ω² = 3g/4l), or 10^U(−20, 3) √(g/l), which is refused when too fast.
+//!
+//! Penalty scenes keep to what that model does (an integrator, the end `separation`, the
+//! separation outputs); rigid scenes with `exact` to the separation. Everything else the scene
+//! format allows is drawn, so refusals (exit 2) are part of the campaign: they are counted by
+//! the field they name.
+
+use crate::sim::output::Output;
+use crate::sim::scene::End;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use std::f64::consts::FRAC_PI_2;
+use std::fmt::Write;
+
+/// Every method a scene may name.
+pub const METHODS: [&str; 9] = [
+    "euler",
+    "symplectic-euler",
+    "verlet",
+    "rk4",
+    "dopri5",
+    "dop853",
+    "radau5",
+    "taylor",
+    "exact",
+];
+
+/// Every output a scene may ask for.
+const OUTPUTS: [&str; 13] = [
+    "separation_angle",
+    "separation_time",
+    "separation_rate",
+    "flat_time",
+    "flat_state",
+    "floor_force_min",
+    "top_clearance_min",
+    "momentum_error",
+    "energy_error",
+    "final_state",
+    "rhs_evals",
+    "trajectory",
+    "forces",
+];
+
+/// The outputs of the penalty model.
+const PENALTY_OUTPUTS: [&str; 5] = [
+    "separation_angle",
+    "separation_time",
+    "separation_rate",
+    "final_state",
+    "rhs_evals",
+];
+
+fn exp10(rng: &mut ChaCha8Rng, lo: f64, hi: f64) -> f64 {
+    10f64.powf(rng.gen_range(lo..hi))
+}
+
+/// A float as TOML reads it back exactly (Rust's shortest round-trip form).
+fn num(x: f64) -> String {
+    format!("{x:e}")
+}
+
+/// The start angle θ0.
+fn start_angle(rng: &mut ChaCha8Rng) -> f64 {
+    match rng.gen_range(0..20) {
+        0..=1 => 0.0,
+        2..=3 => exp10(rng, -323.3, -308.0),
+        4..=7 => exp10(rng, -300.0, -2.0),
+        8..=15 => rng.gen_range(0.0..FRAC_PI_2),
+        16..=18 => FRAC_PI_2 - exp10(rng, -15.5, -1.0),
+        _ => f64::from_bits(FRAC_PI_2.to_bits() - 1),
+    }
+}
+
+/// Scene `index` of the campaign with `seed`, as TOML text.
+pub fn draw(seed: u64, index: u64) -> String {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    rng.set_stream(index);
+    let rng = &mut rng;
+    let (m, l, g) = (
+        exp10(rng, -30.0, 30.0),
+        exp10(rng, -30.0, 30.0),
+        exp10(rng, -30.0, 30.0),
+    );
+    let unit = (l / g).sqrt();
+    let theta0 = start_angle(rng);
+    let omega = (0.75f64).sqrt();
+    let rate_scaled = match rng.gen_range(0..4) {
+        0 | 1 => 0.0,
+        2 => rng.gen_range(0.0..1.0) * omega * theta0.cos().sqrt(),
+        _ => exp10(rng, -20.0, 3.0),
+    };
+    let rate0 = rate_scaled / unit;
+    let penalty = rng.gen_range(0..4) == 0;
+    let mut text = String::new();
+    let _ = write!(
+        text,
+        "[ladder]\nmass = {}\nhalf_length = {}\ngravity = {}\n[start]\nangle = {}\nangular_velocity = {}\n[contact]\n",
+        num(m),
+        num(l),
+        num(g),
+        num(theta0),
+        num(rate0)
+    );
+    let methods: &[&str] = if penalty { &METHODS[..7] } else { &METHODS };
+    let method = methods[rng.gen_range(0..methods.len())];
+    if penalty {
+        let kappa = exp10(rng, 0.0, 12.0);
+        let gamma = match rng.gen_bool(0.5) {
+            true => 0.0,
+            false => exp10(rng, -3.0, 1.0) * kappa.sqrt(),
+        };
+        let _ = write!(
+            text,
+            "model = \"penalty\"\nstiffness = {}\ndamping = {}\n",
+            num(kappa * (m * (g / l))),
+            num(gamma * m / unit)
+        );
+    } else {
+        text += "model = \"rigid\"\n";
+    }
+    let _ = write!(text, "[integrator]\nmethod = \"{method}\"\n");
+    match method {
+        "exact" => {}
+        "dopri5" | "dop853" | "radau5" | "taylor" => {
+            let _ = writeln!(text, "tolerance = {}", num(exp10(rng, -16.0, -1.0)));
+        }
+        _ => {
+            let h = exp10(rng, -6.0, 0.0);
+            let _ = match rng.gen_bool(0.5) {
+                true => writeln!(text, "scaled_step = {}", num(h)),
+                false => writeln!(text, "step = {}", num(h * unit)),
+            };
+        }
+    }
+    let end = if penalty || method == "exact" {
+        End::Separation
+    } else {
+        match rng.gen_range(0..3) {
+            0 => End::Separation,
+            1 => End::Flat,
+            _ => End::Time(exp10(rng, -3.0, 4.0)),
+        }
+    };
+    text += "[end]\n";
+    match end {
+        End::Separation => text += "at = \"separation\"\n",
+        End::Flat => text += "at = \"flat\"\n",
+        End::Time(t) => {
+            let _ = match rng.gen_bool(0.5) {
+                true => write!(text, "at = \"time\"\nscaled_time = {}\n", num(t)),
+                false => write!(text, "at = \"time\"\ntime = {}\n", num(t * unit)),
+            };
+        }
+    }
+    let candidates: Vec<&str> = OUTPUTS
+        .iter()
+        .copied()
+        .filter(|o| !penalty || PENALTY_OUTPUTS.contains(o))
+        .filter(|o| Output::from_name(o).is_some_and(|x| x.producible(method, end).is_ok()))
+        .collect();
+    let mut want: Vec<&str> = candidates
+        .iter()
+        .copied()
+        .filter(|_| rng.gen_bool(0.3))
+        .collect();
+    if want.is_empty() {
+        want.push(candidates[rng.gen_range(0..candidates.len())]);
+    }
+    let list: Vec<String> = want.iter().map(|w| format!("\"{w}\"")).collect();
+    let _ = writeln!(text, "[outputs]\nwant = [{}]", list.join(", "));
+    text
+}

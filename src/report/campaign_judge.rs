@@ -1,0 +1,206 @@
+//! What the reliability campaign ([`super::campaign`]) holds a completed run to: every output
+//! it asked for finite, and each result within its **stated tolerance**, worked out here in the
+//! scene's own units (m = l = g = 1, Ω² = 3/4, times in T = √(l/g)).
+//!
+//! **The integrator's promise** is the error model of `ladder stability` and `tests/sim_scale.rs`:
+//! N accepted steps, each with a local error of at most τ relative to the state's scale
+//! max(|y|, 1) (τ the tolerance; for a fixed step h of order p, (h/T)^(p+1)) and a rounding of
+//! the update by an ulp or so, added without cancellation: a global error E = 10 N (τ + u)
+//! (10, the margin on the O(1) constants; the u term is what a million small fixed steps add).
+//! * **separation angle** (rigid): cos θ_s = (2/3) cos θ0 + (4/9) (θ̇0 T)² is a function of the
+//!   energy, so it inherits E without amplification: |cos θ_s − that| ≤ E max(θ_s, 1) + 8u.
+//!   `exact` promises rounding only (E = 0).
+//! * **separation time** (rigid, integrators): against the exact reference (the linear lead-in
+//!   and Carlson's closed form, `sim::exact`). A state error δy moves the zero of the factor
+//!   g = Ω² cos θ − θ̇² by δt = ∇g·δy / ġ, with ġ = −3 Ω² sin θ θ̇ there:
+//!   E (Ω² sin θ_s max(θ_s, 1) + 2 θ̇_s max(θ̇_s, 1)) / (3 Ω² sin θ_s θ̇_s) + 16u t_s (the event
+//!   stops at 8 ulps of t). `exact` is that reference and is not compared with itself.
+//! * **flat time** (rigid): against t_s + the floor phase's duration by quadrature of its
+//!   conservation laws (`sim::exact::flat`). The separation time's bound, plus the state error
+//!   of the whole run E' = 10 (N_wall + N_floor) τ through the duration
+//!   D = ∫ dθ/θ̇: an energy error δ changes θ̇² by at most 6δ, so D by 3 δ D/θ̇_s²
+//!   (δ ≤ E' (1 + 3 θ̇_max) max(θ̇_max, 1)); the start and end angles move by E' max(θ, 1),
+//!   i.e. the times by that over θ̇_s and θ̇_flat; rounding 16u t_flat; quadrature 1e-14 D.
+//! * **energy error** |ΔE|/(m g l): the energy's gradient is at most 1 + 3 θ̇ in these units,
+//!   so E' (1 + 3 θ̇_max) max(θ̇_max, 1) + 16u (1 + θ̇_max²).
+//! * **momentum error** (tests/momentum_balance.rs): 4 (E' max(θ̇_max, 1) + 4u).
+//! * **penalty separation angle** (`ladder stability`, `report::stability_stiff`): the model's
+//!   own distance to the rigid angle, 10/κ, the dashpot's, 10 γ/κ (its force γ ṗ with
+//!   ṗ = O(1/κ)), rounding 10u, and the integrator's 10 N (τ + u).
+//!
+//! Results a scene did not reach (an end time before separation) are not judged; a run that
+//! stops short of the end it asked for is a failed run (the command exits 1), counted by the
+//! campaign, not here.
+
+use crate::sim::exact::{flat::floor_duration, PhaseOne};
+use crate::sim::extreme::linear_lead_in;
+use crate::sim::integrators::{order, Control};
+use crate::sim::outcome::Outcome;
+use crate::sim::output::Output;
+use crate::sim::penalty::Contact;
+use crate::sim::scene::{ContactModel, Scene};
+use crate::sim::units::Units;
+
+const U: f64 = f64::EPSILON / 2.0;
+const OMEGA2: f64 = 0.75;
+
+/// One thing wrong with a completed run.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Problem {
+    /// An output it asked for is NaN or infinite.
+    NonFinite(&'static str),
+    /// A result outside its stated tolerance.
+    OutOfTolerance {
+        /// Which result.
+        what: &'static str,
+        /// |result − reference| in the scene's units.
+        error: f64,
+        /// The stated tolerance.
+        bound: f64,
+    },
+}
+
+fn finite(xs: &[f64]) -> bool {
+    xs.iter().all(|x| x.is_finite())
+}
+
+/// The outputs `scene` asked for that `o` holds as NaN or infinity.
+pub fn non_finite(scene: &Scene, o: &Outcome) -> Vec<Problem> {
+    let mut bad = Vec::new();
+    for out in &scene.outputs {
+        let ok = match out {
+            Output::SeparationAngle => o.separation.is_none_or(|s| s.angle.is_finite()),
+            Output::SeparationTime => o.separation.is_none_or(|s| s.time.is_finite()),
+            Output::SeparationRate => o.separation.is_none_or(|s| s.rate.is_finite()),
+            Output::FlatTime => o.flat.is_none_or(|f| f.time.is_finite()),
+            Output::FlatState => o.flat.is_none_or(|f| {
+                finite(&[f.rate, f.centre_x, f.centre_velocity_x, f.centre_velocity_y])
+            }),
+            Output::FloorForceMin | Output::TopClearanceMin => o
+                .floor_report
+                .is_none_or(|r| finite(&[r.floor_force_min, r.top_clearance_min])),
+            Output::MomentumError => o.momentum_error.is_none_or(f64::is_finite),
+            Output::EnergyError => o.energy_error.is_none_or(f64::is_finite),
+            Output::FinalState => finite(&[o.last.0, o.last.1, o.last.2]),
+            Output::RhsEvals => true,
+            Output::Trajectory | Output::Forces => o.trace.as_ref().is_none_or(|t| {
+                t.iter().all(|p| {
+                    finite(&[p.t, p.theta, p.rate]) && p.forces.is_none_or(|(a, b)| finite(&[a, b]))
+                })
+            }),
+        };
+        if !ok {
+            bad.push(Problem::NonFinite(out.name()));
+        }
+    }
+    bad
+}
+
+/// τ of the error model: the tolerance, or (h/T)^(p+1) for a fixed step; 0 for `exact`.
+fn local_error(scene: &Scene, unit: f64) -> f64 {
+    match scene.control {
+        None => 0.0,
+        Some(Control::Tolerance(t)) => t,
+        Some(Control::Fixed(h)) => {
+            let p = order(&scene.method).unwrap_or(1) as i32;
+            (h / unit).powi(p + 1)
+        }
+    }
+}
+
+/// t_s in units of T by the exact reference: the linear lead-in of a tiny start (in SI, where
+/// a subnormal θ̇0 keeps its digits) and Carlson's closed form from there.
+pub fn reference_separation_time(scene: &Scene) -> Option<f64> {
+    let unit = Units::of(&scene.ladder).time;
+    let (t0, theta, rate) =
+        match linear_lead_in(scene.ladder.big_omega2(), scene.theta0, scene.rate0) {
+            Some((t, th, w)) => (t / unit, th, w * unit),
+            None => (0.0, scene.theta0, scene.rate0 * unit),
+        };
+    let p = PhaseOne::new(theta, rate, OMEGA2).ok()?;
+    Some(t0 + p.separation()?.time)
+}
+
+fn check(out: &mut Vec<Problem>, what: &'static str, error: f64, bound: f64) {
+    // NaN counts as outside.
+    if error.is_nan() || error > bound {
+        out.push(Problem::OutOfTolerance { what, error, bound });
+    }
+}
+
+/// The results of `o` outside their stated tolerance (see the module docs).
+pub fn out_of_tolerance(scene: &Scene, o: &Outcome) -> Vec<Problem> {
+    let mut bad = Vec::new();
+    let unit = Units::of(&scene.ladder).time;
+    let tau = local_error(scene, unit);
+    let r0 = scene.rate0 * unit;
+    let cs = 2.0 / 3.0 * scene.theta0.cos() + 4.0 / 9.0 * r0 * r0;
+    let Some(sep) = o.separation else {
+        return bad;
+    };
+    let n_wall = o.work.wall.steps as f64;
+    if let ContactModel::Penalty { stiffness, damping } = scene.contact {
+        let c = Contact::from_dimensional(&scene.ladder, stiffness, damping);
+        let bound = 10.0 * (1.0 + c.gamma) / c.kappa + 10.0 * U + 10.0 * n_wall * (tau + U);
+        check(
+            &mut bad,
+            "separation_angle",
+            (sep.angle - cs.acos()).abs(),
+            bound,
+        );
+        return bad;
+    }
+    let e_wall = 10.0 * n_wall * (tau + U);
+    let (theta_s, rate_s) = (sep.angle, (OMEGA2 * cs).sqrt());
+    check(
+        &mut bad,
+        "separation_angle",
+        (theta_s.cos() - cs).abs(),
+        e_wall * theta_s.max(1.0) + 8.0 * U,
+    );
+    if scene.control.is_none() {
+        return bad;
+    }
+    let Some(ts_ref) = reference_separation_time(scene) else {
+        return bad;
+    };
+    let sin_s = theta_s.sin();
+    let ts_bound = e_wall * (OMEGA2 * sin_s * theta_s.max(1.0) + 2.0 * rate_s * rate_s.max(1.0))
+        / (3.0 * OMEGA2 * sin_s * rate_s)
+        + 16.0 * U * ts_ref;
+    check(
+        &mut bad,
+        "separation_time",
+        (sep.time / unit - ts_ref).abs(),
+        ts_bound,
+    );
+    let n_all = n_wall + o.work.floor.map_or(0, |s| s.steps) as f64;
+    let e_all = 10.0 * n_all * (tau + U);
+    let rate_end = o.flat.map_or(o.last.2, |f| f.rate) * unit;
+    let w_max = r0.max(rate_s).max(rate_end.abs());
+    let energy_slip = e_all * (1.0 + 3.0 * w_max) * w_max.max(1.0);
+    if let Some(f) = o.flat {
+        let d = floor_duration(cs);
+        let tf_ref = ts_ref + d;
+        let rate_f = f.rate * unit;
+        let bound = ts_bound
+            + energy_slip * 3.0 * d / (rate_s * rate_s)
+            + e_all * (theta_s.max(1.0) / rate_s + 2.0 / rate_f)
+            + 16.0 * U * tf_ref
+            + 1e-14 * d;
+        check(&mut bad, "flat_time", (f.time / unit - tf_ref).abs(), bound);
+    }
+    if let Some(e) = o.energy_error {
+        let bound = energy_slip + 16.0 * U * (1.0 + w_max * w_max);
+        check(&mut bad, "energy_error", e, bound);
+    }
+    if let Some(p) = o.momentum_error {
+        check(
+            &mut bad,
+            "momentum_error",
+            p,
+            4.0 * (e_all * w_max.max(1.0) + 4.0 * U),
+        );
+    }
+    bad
+}

@@ -1,0 +1,56 @@
+//! The dimension an SI unit spells (`N`, `kg m^2/s`, `rad/s^2`), so a stated unit can be held
+//! against a computed dimension (the symbol table, `equations/UNITS.md`).
+//!
+//! The project states units in a small vocabulary: kg, m, s, N, J, rad (a pure number), `1`,
+//! factors separated by spaces, each with an optional integer power and one `/` (`kg m^2/s` is
+//! kg · m²/s). A unit-parsing crate would bring conversions and prefixes the project never uses.
+
+use super::dimension::Dimension;
+use num_rational::Ratio;
+
+impl Dimension {
+    /// The dimension of an SI unit in the project's vocabulary; Err names an unknown unit.
+    pub fn from_si(unit: &str) -> Result<Dimension, String> {
+        let base = |u: &str| {
+            Ok(match u {
+                "kg" => Dimension::MASS,
+                "m" => Dimension::LENGTH,
+                "s" => Dimension::TIME,
+                "N" => Dimension::new(1, 1, -2),
+                "J" => Dimension::new(1, 2, -2),
+                "rad" | "1" => Dimension::NONE,
+                _ => return Err(format!("unknown SI unit '{u}' in '{unit}'")),
+            })
+        };
+        let power = |f: &str| -> Result<Dimension, String> {
+            let (u, e) = f.split_once('^').unwrap_or((f, "1"));
+            let e: i32 = e
+                .parse()
+                .map_err(|_| format!("bad power '{e}' in '{unit}'"))?;
+            Ok(base(u)?.pow(Ratio::from_integer(e)))
+        };
+        let mut d = Dimension::NONE;
+        for factor in unit.split_whitespace() {
+            let (num, den) = factor.split_once('/').unwrap_or((factor, "1"));
+            d = d * power(num)? / power(den)?;
+        }
+        Ok(d)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Dimension;
+
+    #[test]
+    fn units_spell_their_dimensions() {
+        let d = |s| Dimension::from_si(s).unwrap();
+        assert_eq!(d("N"), d("kg m/s^2"));
+        assert_eq!(d("J s"), d("kg m^2/s"));
+        assert_eq!(d("rad/s^2"), Dimension::new(0, 0, -2));
+        assert_ne!(d("N"), d("J"));
+        assert_ne!(d("kg m^2/s"), d("kg m^2/s^2"));
+        assert!(Dimension::from_si("lb").is_err());
+        assert!(Dimension::from_si("m^x").is_err());
+    }
+}

@@ -1,0 +1,174 @@
+//! The reliability campaign's parts (issue 11, item 3; `examples/campaign.rs` runs them): the
+//! draw covers the whole domain and writes scenes the parser reads back exactly, the flat-time
+//! reference agrees with a tight integration, and the judge rejects wrong results.
+
+use sliding_ladder::report::campaign::{draw, METHODS};
+use sliding_ladder::report::campaign_judge::{non_finite, out_of_tolerance, Problem};
+use sliding_ladder::sim::exact::flat::floor_duration;
+use sliding_ladder::sim::fall::{self, Outcome};
+use sliding_ladder::sim::integrators::Control;
+use sliding_ladder::sim::output::Output;
+use sliding_ladder::sim::rigid::Ladder;
+use sliding_ladder::sim::scene::{parse, ContactModel, End, Scene};
+use std::collections::BTreeSet;
+use std::f64::consts::FRAC_PI_2;
+
+#[test]
+fn the_draw_covers_the_domain_and_every_scene_is_read_as_written() {
+    assert_eq!(draw(7, 5), draw(7, 5));
+    assert_ne!(draw(7, 5), draw(8, 5));
+    let (mut methods, mut ends, mut outputs) = (BTreeSet::new(), BTreeSet::new(), BTreeSet::new());
+    let (mut penalty, mut zero, mut subnormal, mut near_flat, mut pushed) = (0, 0, 0, 0, 0);
+    for i in 0..3000 {
+        let text = draw(7, i);
+        match parse("drawn.toml", &text) {
+            Ok(s) => {
+                methods.insert(s.method.clone());
+                ends.insert(format!("{:?}", s.end).chars().take(4).collect::<String>());
+                outputs.extend(s.outputs.iter().map(|o| o.name()));
+                penalty += usize::from(matches!(s.contact, ContactModel::Penalty { .. }));
+                zero += usize::from(s.theta0 == 0.0);
+                subnormal += usize::from(s.theta0 > 0.0 && s.theta0 < f64::MIN_POSITIVE);
+                near_flat += usize::from(s.theta0 > FRAC_PI_2 - 1e-3);
+                pushed += usize::from(s.rate0 > 0.0);
+                // The numbers are read back as drawn (shortest round-trip form).
+                let angle = text
+                    .lines()
+                    .find_map(|l| l.strip_prefix("angle = "))
+                    .unwrap();
+                assert_eq!(angle.parse::<f64>().unwrap(), s.theta0);
+            }
+            // A refusal names a field: never a syntax error of the drawn text.
+            Err(e) => assert!(
+                !e.field.is_empty() && !e.message.contains("syntax"),
+                "scene {i}: {e}\n{text}"
+            ),
+        }
+    }
+    assert_eq!(methods.len(), METHODS.len(), "{methods:?}");
+    assert_eq!(ends.len(), 3, "{ends:?}");
+    assert_eq!(
+        outputs.len(),
+        Output::names().split(", ").count(),
+        "{outputs:?}"
+    );
+    for (what, n) in [
+        ("penalty", penalty),
+        ("θ0 = 0", zero),
+        ("subnormal θ0", subnormal),
+        ("θ0 near π/2", near_flat),
+        ("pushed", pushed),
+    ] {
+        assert!(n >= 30, "{what}: {n} of 3000");
+    }
+}
+
+fn scene(theta0: f64, tol: f64, end: End, outputs: Vec<Output>) -> Scene {
+    Scene {
+        file: "(campaign test)".into(),
+        ladder: Ladder {
+            mass: 2.0,
+            half_length: 0.5,
+            gravity: 9.81,
+        },
+        theta0,
+        phi0: None,
+        rate0: 0.0,
+        method: "dop853".into(),
+        control: Some(Control::Tolerance(tol)),
+        end,
+        outputs,
+        contact: ContactModel::Rigid,
+        order: None,
+    }
+}
+
+fn whole_fall(theta0: f64) -> (Scene, Outcome) {
+    let outputs = vec![
+        Output::SeparationAngle,
+        Output::SeparationTime,
+        Output::FlatTime,
+        Output::FlatState,
+        Output::EnergyError,
+        Output::MomentumError,
+    ];
+    let sc = scene(theta0, 1e-13, End::Flat, outputs);
+    let o = fall::run(&sc, fall::MAX_STEPS).expect("runs");
+    (sc, o)
+}
+
+/// The quadrature of the floor phase's conservation laws against DOP853 at 1e-13: equal within
+/// the judge's bound at three starts, one near the floor (in the complement).
+#[test]
+fn the_flat_reference_agrees_with_a_tight_integration() {
+    for theta0 in [0.1, 0.7, FRAC_PI_2 - 1e-9] {
+        let (sc, o) = whole_fall(theta0);
+        assert_eq!(out_of_tolerance(&sc, &o), vec![], "θ0 = {theta0}");
+        assert_eq!(non_finite(&sc, &o), vec![]);
+        let unit = (0.5f64 / 9.81).sqrt();
+        let cs = 2.0 / 3.0 * theta0.cos();
+        let floor = (o.flat.unwrap().time - o.separation.unwrap().time) / unit;
+        assert!(
+            (floor - floor_duration(cs)).abs() <= 1e-9 * floor,
+            "{floor} {}",
+            floor_duration(cs)
+        );
+    }
+}
+
+fn flagged(sc: &Scene, o: &Outcome) -> Vec<&'static str> {
+    out_of_tolerance(sc, o)
+        .into_iter()
+        .chain(non_finite(sc, o))
+        .map(|p| match p {
+            Problem::OutOfTolerance { what, .. } => what,
+            Problem::NonFinite(what) => what,
+        })
+        .collect()
+}
+
+/// Every check of the judge fails on a result moved by a little more than its bound allows.
+#[test]
+fn the_judge_rejects_wrong_results() {
+    let (sc, good) = whole_fall(0.3);
+    assert!(flagged(&sc, &good).is_empty());
+    let mut o = good.clone();
+    o.separation.as_mut().unwrap().angle *= 1.0 + 1e-9;
+    assert_eq!(flagged(&sc, &o), ["separation_angle"]);
+    let mut o = good.clone();
+    o.separation.as_mut().unwrap().time *= 1.0 + 1e-9;
+    assert_eq!(flagged(&sc, &o), ["separation_time"]);
+    let mut o = good.clone();
+    o.flat.as_mut().unwrap().time *= 1.0 + 1e-8;
+    assert_eq!(flagged(&sc, &o), ["flat_time"]);
+    let mut o = good.clone();
+    o.energy_error = Some(1e-8);
+    assert_eq!(flagged(&sc, &o), ["energy_error"]);
+    let mut o = good.clone();
+    o.momentum_error = Some(1e-8);
+    assert_eq!(flagged(&sc, &o), ["momentum_error"]);
+    let mut o = good.clone();
+    o.flat.as_mut().unwrap().centre_x = f64::NAN;
+    assert_eq!(flagged(&sc, &o), ["flat_state"]);
+    let mut o = good.clone();
+    o.energy_error = Some(f64::INFINITY);
+    assert_eq!(flagged(&sc, &o), ["energy_error", "energy_error"]);
+}
+
+/// A penalty run is held to the rigid angle within 10 (1 + γ)/κ + 10 N (τ + u): at κ = 1e8 an
+/// angle moved by 1e-6 is rejected.
+#[test]
+fn the_judge_holds_penalty_runs_to_the_rigid_angle() {
+    let mut sc = scene(0.3, 1e-10, End::Separation, vec![Output::SeparationAngle]);
+    sc.method = "radau5".into();
+    // κ = k l/(m g) = 1e8.
+    sc.contact = ContactModel::Penalty {
+        stiffness: 1e8 * 2.0 * 9.81 / 0.5,
+        damping: 0.0,
+    };
+    let o = fall::run(&sc, fall::MAX_STEPS).expect("runs");
+    assert!(flagged(&sc, &o).is_empty());
+    let mut wrong = o.clone();
+    wrong.separation.as_mut().unwrap().angle += 1e-6;
+    assert_eq!(flagged(&sc, &wrong), ["separation_angle"]);
+}

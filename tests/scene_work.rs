@@ -1,0 +1,208 @@
+//! Plan-time refusals (`sim::scene_work`): a request the run could not meet is refused up front
+//! with exit 2 and the field, and each refusal is needed: the same scene run anyway fails, and a
+//! scene just inside the stated limit is accepted and runs.
+
+use sliding_ladder::report::campaign_judge::out_of_tolerance;
+use sliding_ladder::sim::fall;
+use sliding_ladder::sim::scene::parse;
+use sliding_ladder::sim::scene_work::phase_steps;
+
+const BASE: &str = "[ladder]
+mass = 1.0
+half_length = 1.0
+gravity = 1.0
+[start]
+angle = 0.3
+angular_velocity = 0.0
+[contact]
+CONTACT
+[integrator]
+METHOD
+[end]
+at = \"END\"
+[outputs]
+want = [\"separation_angle\"]
+";
+
+fn text(contact: &str, method: &str, end: &str) -> String {
+    BASE.replace("CONTACT", contact)
+        .replace("METHOD", method)
+        .replace("END", end)
+}
+
+const SPRINGS: &str = "model = \"penalty\"\nstiffness = 1e8\ndamping = 0.0";
+
+/// The number after `key` in `message` (e.g. the limit a refusal states).
+fn number_after(message: &str, key: &str) -> f64 {
+    let rest = &message[message.find(key).expect(key) + key.len()..];
+    let end = rest.find([' ', ';', ',', ')']).unwrap_or(rest.len());
+    rest[..end].parse().unwrap()
+}
+
+#[test]
+fn a_fixed_step_on_stiff_springs_is_refused_and_would_fail() {
+    // κ = 1e8: ω = 2e4, so h ≤ 0.2/ω = 1e-5.
+    let bad = text(SPRINGS, "method = \"rk4\"\nstep = 1e-3", "separation");
+    let e = parse("s.toml", &bad).unwrap_err();
+    let msg = e.to_string();
+    assert!(
+        msg.starts_with("s.toml:14: [integrator] step: penalty springs of k l/(m g) = 1e8"),
+        "{msg}"
+    );
+    let limit = number_after(&msg, "a step ≤ ");
+    assert!((limit - 1e-5).abs() <= 1e-20, "{msg}");
+    // Run anyway (the check bypassed): the integration is unstable and the run fails.
+    let inside = text(SPRINGS, "method = \"rk4\"\nstep = 0.99e-5", "separation");
+    let mut sc = parse("s.toml", &inside).expect("inside the limit");
+    let o = fall::run(&sc, fall::MAX_STEPS).expect("runs");
+    assert!(out_of_tolerance(&sc, &o).is_empty());
+    sc.control = Some(sliding_ladder::sim::integrators::Control::Fixed(1e-3));
+    assert!(fall::run(&sc, fall::MAX_STEPS).is_err());
+}
+
+#[test]
+fn explicit_euler_on_springs_needs_a_smaller_step_still() {
+    let springs = "model = \"penalty\"\nstiffness = 1e2\ndamping = 0.0";
+    let e = parse(
+        "s.toml",
+        &text(springs, "method = \"euler\"\nstep = 1e-3", "separation"),
+    )
+    .unwrap_err();
+    assert!(e.to_string().contains("explicit Euler gains energy"), "{e}");
+    // The same step suits symplectic Euler (h ω = 0.02).
+    assert!(parse(
+        "s.toml",
+        &text(
+            springs,
+            "method = \"symplectic-euler\"\nstep = 1e-3",
+            "separation"
+        )
+    )
+    .is_ok());
+}
+
+#[test]
+fn an_explicit_method_on_the_stiffest_springs_from_a_tiny_start_is_refused() {
+    let springs = "model = \"penalty\"\nstiffness = 1e12\ndamping = 0.0";
+    let slow = text(
+        springs,
+        "method = \"dop853\"\ntolerance = 1e-8",
+        "separation",
+    )
+    .replace("angle = 0.3", "angle = 1e-30");
+    let e = parse("s.toml", &slow).unwrap_err().to_string();
+    assert!(
+        e.starts_with("s.toml:13: [integrator] method: penalty springs")
+            && e.contains("allowed: method = \"radau5\""),
+        "{e}"
+    );
+    // radau5 is accepted there, and from θ0 = 0.3 dop853 too (about 2e6 steps).
+    assert!(parse("s.toml", &slow.replace("dop853", "radau5")).is_ok());
+    let near = text(
+        springs,
+        "method = \"dop853\"\ntolerance = 1e-8",
+        "separation",
+    );
+    assert!(parse("s.toml", &near).is_ok());
+}
+
+#[test]
+fn a_step_too_small_for_the_fall_is_refused_at_the_stated_least_step() {
+    let rigid = "model = \"rigid\"";
+    let e = parse(
+        "s.toml",
+        &text(rigid, "method = \"rk4\"\nscaled_step = 1e-6", "flat")
+            .replace("angle = 0.3", "angle = 1e-30"),
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(
+        e.contains("[integrator] step: the wall phase needs about"),
+        "{e}"
+    );
+    let least = number_after(&e, "a step ≥ ");
+    let at = |h: f64| {
+        text(rigid, &format!("method = \"rk4\"\nstep = {h:e}"), "flat")
+            .replace("angle = 0.3", "angle = 1e-30")
+    };
+    assert!(parse("s.toml", &at(least * 1.01)).is_ok());
+    let no = at(least * 0.99);
+    assert!(parse("s.toml", &no).is_err());
+}
+
+/// The estimate is the run: a fixed-step fall to flat takes the estimated steps in each phase
+/// (within one step and the event's last partial step), so the refusal refuses what the run
+/// would have hit.
+#[test]
+fn the_step_estimate_matches_the_run() {
+    let sc = parse(
+        "s.toml",
+        &text(
+            "model = \"rigid\"",
+            "method = \"rk4\"\nscaled_step = 1e-3",
+            "flat",
+        )
+        .replace("[\"separation_angle\"]", "[\"flat_time\"]"),
+    )
+    .unwrap();
+    let est = phase_steps(
+        &sc.ladder,
+        (sc.theta0, sc.rate0),
+        &sc.method,
+        sc.control.unwrap(),
+        sc.end,
+        sc.contact,
+    );
+    let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    let got = [o.work.wall.steps, o.work.floor.unwrap().steps];
+    for (e, g) in est.iter().zip(got) {
+        assert!(
+            (e - g as f64).abs() <= 2.0,
+            "estimated {est:?}, took {got:?}"
+        );
+    }
+}
+
+/// The campaign's finding F1: penalty contact from θ0 = 1e-12 with dop853 at tolerance 1e-10
+/// reported a separation at θ = 1.4e-12 (exit 0). Such a start is refused up front; from a start
+/// of 100 tolerances on, the separation is the rigid one within the model error.
+#[test]
+fn an_explicit_method_from_a_start_below_its_force_error_is_refused() {
+    let springs = "model = \"penalty\"\nstiffness = 1e6\ndamping = 0.0";
+    let scene = |angle: &str, method: &str| {
+        text(
+            springs,
+            &format!("method = \"{method}\"\ntolerance = 1e-10"),
+            "separation",
+        )
+        .replace("angle = 0.3", &format!("angle = {angle}"))
+    };
+    let e = parse("s.toml", &scene("1e-12", "dop853"))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with(
+            "s.toml:13: [integrator] method: penalty contact from a start of size 1.0e-12 rad"
+        ) && e.contains("a start ≥ 1e-8 rad"),
+        "{e}"
+    );
+    // radau5 is accepted there; dop853 from the least start it allows separates where the
+    // rigid ladder does, cos θ_s = (2/3) cos θ0, within the κ = 1e6 model error (~1e-6).
+    assert!(parse("s.toml", &scene("1e-12", "radau5")).is_ok());
+    let least = number_after(&e, "a start ≥ ");
+    let sc = parse("s.toml", &scene(&format!("{least:e}"), "dop853")).unwrap();
+    let out = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    let theta = out.separation.expect("separates").angle;
+    let rigid = (2.0 / 3.0 * least.cos()).acos();
+    assert!((theta - rigid).abs() < 1e-5, "θ_s = {theta}, rigid {rigid}");
+    // Run the refused start anyway (the check bypassed): the separation it reports is the
+    // spurious one at θ ≈ θ0, nowhere near the rigid arccos(2/3).
+    let mut sc = sc;
+    sc.theta0 = 1e-12;
+    let wrong = fall::run(&sc, fall::MAX_STEPS)
+        .unwrap()
+        .separation
+        .expect("a (spurious) separation")
+        .angle;
+    assert!(wrong < 1e-6, "bypassed run gave θ_s = {wrong}");
+}

@@ -1,0 +1,244 @@
+//! The `ladder verify` table as a teacher reads it (issue 16, item 4): full titles, the pass
+//! threshold beside the residual, what a display does off the motion, what the exact points
+//! found, what a definition was checked against, the book line of each row, and a legend for
+//! every column. Each property is shown to fail on a table or legend that lacks it.
+
+use sliding_ladder::registry::check::{run_check, Config, TOLERANCE_FACTOR};
+use sliding_ladder::registry::{equations, Equation};
+use sliding_ladder::verify::legend::{legend, unexplained_columns};
+use sliding_ladder::verify::summary::schwartz_zippel_sentence;
+use sliding_ladder::verify::table::{render, residual, width, wrap, COLUMNS, TITLE_WIDTH};
+use sliding_ladder::verify::{judge, verify_extensions, EquationResult, OffMotion, Status};
+
+fn tiny() -> Config {
+    Config {
+        float_cases: 3,
+        exact_points: 2,
+        seed: 7,
+    }
+}
+
+fn equation(n: u32) -> Equation {
+    equations().into_iter().find(|e| e.number == n).unwrap()
+}
+
+/// The row of `n`, judged from its checks run on a few states (fast).
+fn checked(n: u32) -> EquationResult {
+    let e = equation(n);
+    let reports: Vec<_> = e.checks.iter().map(|c| run_check(c, &tiny())).collect();
+    judge(&e, &reports)
+}
+
+/// Every equation's row without running its checks (for layout only).
+fn unchecked() -> Vec<EquationResult> {
+    equations().iter().map(|e| judge(e, &[])).collect()
+}
+
+/// The first line of each row: the lines that start with a label such as ` (25)`.
+fn row_lines(table: &str) -> Vec<&str> {
+    table
+        .lines()
+        .filter(|l| l.trim_start().starts_with('(') && l.contains(')'))
+        .collect()
+}
+
+#[test]
+fn every_column_is_explained_by_the_legend_and_a_missing_entry_is_caught() {
+    let text = legend(&Config::default());
+    assert_eq!(unexplained_columns(&text), Vec::<&str>::new(), "{text}");
+    // Drop the entry of one column: the check names it.
+    let cut: String = text
+        .lines()
+        .filter(|l| !l.starts_with("  off motion "))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    assert_eq!(unexplained_columns(&cut), vec!["off motion"]);
+    // The legend states the threshold the residual column is compared with.
+    assert!(text.contains(&format!("≤ {TOLERANCE_FACTOR}")));
+}
+
+#[test]
+fn titles_are_whole_and_wrap_within_their_column() {
+    let results = unchecked();
+    let table = render(&results, false);
+    for r in &results {
+        let lines = wrap(r.title, TITLE_WIDTH);
+        assert_eq!(lines.join(" "), r.title, "wrap loses words");
+        assert!(lines.iter().all(|l| width(l) <= TITLE_WIDTH), "{lines:?}");
+        // Each piece is in the table, the first on the row, the rest on the lines below it.
+        let at = table
+            .lines()
+            .position(|l| l.contains(&format!("{} ", r.label)) && l.contains(&lines[0]))
+            .unwrap_or_else(|| panic!("row {} not found", r.label));
+        for (k, piece) in lines.iter().enumerate().skip(1) {
+            assert!(
+                table
+                    .lines()
+                    .nth(at + k)
+                    .is_some_and(|l| l.contains(piece.as_str())),
+                "{}: '{piece}' not under its row",
+                r.label
+            );
+        }
+    }
+    // The longest title is longer than the column: it must wrap, not be cut.
+    let longest = results.iter().map(|r| width(r.title)).max().unwrap();
+    assert!(longest > TITLE_WIDTH);
+    // A cut title would fail the check above.
+    let cut: String = results[0].title.chars().take(10).collect();
+    assert_ne!(wrap(&cut, TITLE_WIDTH).join(" "), results[0].title);
+}
+
+#[test]
+fn every_row_lines_up_with_the_header_in_terminal_columns() {
+    let table = render(&unchecked(), false);
+    let header = table.lines().next().unwrap();
+    let full: usize = COLUMNS.iter().map(|c| c.1).sum::<usize>() + COLUMNS.len() - 1;
+    assert_eq!(width(header), full);
+    for l in row_lines(&table) {
+        assert_eq!(width(l), full, "misaligned: {l}");
+    }
+    // θ̈ takes one column though it is two chars: counting chars would misalign 'any θ̈' rows.
+    assert_eq!(width("any θ̈"), 5);
+    assert_eq!("any θ̈".chars().count(), 6);
+    // A table wider than a teacher's terminal fails here.
+    assert!(full <= 150, "the table is {full} columns wide");
+}
+
+#[test]
+fn the_residual_stands_beside_its_threshold() {
+    assert_eq!(residual(0.2554), "0.255 ≤ 4");
+    assert_eq!(residual(4.0), "4.000 ≤ 4");
+    assert_eq!(residual(4.5), "4.500 > 4");
+    assert_eq!(residual(6.25e13), "6.2e13 > 4");
+    let r = checked(25);
+    let table = render(std::slice::from_ref(&r), false);
+    assert!(table.contains(&residual(r.max_residual)), "{table}");
+    assert!(r.max_residual <= TOLERANCE_FACTOR);
+}
+
+#[test]
+fn off_the_motion_on_shell_rows_fail_at_their_law_and_kinematic_rows_hold() {
+    let on = checked(25);
+    assert_eq!((on.off_motion, on.law_step), (OffMotion::Fails, Some(2)));
+    let kin = checked(12);
+    assert_eq!(kin.off_motion, OffMotion::AnyMotion);
+    let particles = checked(30);
+    assert_eq!(particles.off_motion, OffMotion::NotApplicable);
+    let table = render(&[on, kin, particles], false);
+    let rows = row_lines(&table);
+    assert!(rows[0].contains("fails at =2"), "{}", rows[0]);
+    assert!(rows[1].contains("any θ̈"), "{}", rows[1]);
+    assert!(rows[2].contains(" — "), "{}", rows[2]);
+    // An on-shell check that holds off the motion: the row says so and fails.
+    let e = equation(25);
+    let mut reports: Vec<_> = e.checks.iter().map(|c| run_check(c, &tiny())).collect();
+    reports[0].off_shell_fails = Some(false);
+    let bad = judge(&e, &reports);
+    assert_eq!(
+        (bad.off_motion, bad.status),
+        (OffMotion::Holds, Status::Failed)
+    );
+    assert!(render(&[bad], false).contains("HOLDS"));
+}
+
+#[test]
+fn the_exact_column_counts_points_and_failures() {
+    let r = checked(25);
+    assert_eq!(r.exact_failures, 0);
+    assert_eq!(r.exact_points, 2);
+    assert!(render(std::slice::from_ref(&r), false).contains("0 at 2 pts"));
+    let mut bad = r.clone();
+    bad.exact_failures = 1;
+    assert!(render(&[bad], false).contains("≠0 at 1 of 2"));
+}
+
+#[test]
+fn definitions_say_what_they_were_checked_against_and_wide_rows_name_the_law() {
+    let def = checked(1);
+    assert_eq!(def.status, Status::Definition);
+    let table = render(std::slice::from_ref(&def), false);
+    assert!(
+        table.contains(&format!("checked: {}", def.checks[0])),
+        "{table}"
+    );
+    let analysis = checked(25);
+    assert!(!render(std::slice::from_ref(&analysis), false).contains("checked:"));
+    let wide = render(std::slice::from_ref(&analysis), true);
+    assert!(
+        wide.contains(&format!("checked: {}", analysis.checks[0])),
+        "{wide}"
+    );
+    assert!(wide.contains("law of motion at the 2nd `=`"), "{wide}");
+}
+
+#[test]
+fn each_row_names_the_line_of_its_section_in_the_book() {
+    let rows = verify_extensions(&tiny());
+    let table = render(&rows, false);
+    assert!(table.contains("── equations/phase2.md"), "{table}");
+    let page = std::fs::read_to_string(sliding_ladder::docs::default_dir().join("phase2.md"))
+        .expect("phase2.md");
+    for r in &rows {
+        let doc = r.doc.as_deref().expect("a page");
+        let (file, line) = doc.rsplit_once(':').unwrap();
+        assert_eq!(file, "equations/phase2.md");
+        let line: usize = line.parse().unwrap();
+        let heading = page.lines().nth(line - 1).unwrap();
+        assert!(
+            heading.starts_with('#') && heading.contains(&r.label),
+            "{doc}: '{heading}'"
+        );
+        let row = row_lines(&table)
+            .into_iter()
+            .find(|l| l.contains(&r.label))
+            .unwrap();
+        assert!(row.ends_with(&format!(" {line}")), "{row}");
+    }
+}
+
+#[test]
+fn the_schwartz_zippel_sentence_states_the_worst_bound() {
+    let mut rows = vec![checked(12), checked(25)];
+    rows[0].sz_bound_log10 = -28.4;
+    rows[1].sz_bound_log10 = -40.0;
+    rows[0].sz_bound_rational_log10 = -14.2;
+    rows[1].sz_bound_rational_log10 = -20.0;
+    let s = schwartz_zippel_sentence(&rows);
+    assert!(s.contains("at most 1e-28 (1e-14"), "{s}");
+    assert!(s.contains("if any of these identities were false"), "{s}");
+    rows[1].sz_bound_log10 = -3.5;
+    assert!(schwartz_zippel_sentence(&rows).contains("at most 1e-3 "));
+}
+
+#[test]
+fn verify_only_runs_the_chosen_displays_and_exits_0_when_they_pass() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args([
+            "verify",
+            "--only",
+            "25,1",
+            "--cases",
+            "5",
+            "--exact-points",
+            "1",
+        ])
+        .output()
+        .expect("runs");
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    // The table (above the summary line) has the two rows asked for.
+    let table = text.split(" equations: ").next().unwrap();
+    assert_eq!(row_lines(table).len(), 2, "{text}");
+    assert!(
+        text.contains("2 equations: 1 verified, 0 erratum, 1 definition, 0 failed"),
+        "{text}"
+    );
+    // An unknown item is bad input: exit 2, one line on stderr.
+    let bad = std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(["verify", "--only", "25,999"])
+        .output()
+        .expect("runs");
+    assert_eq!(bad.status.code(), Some(2));
+    assert_eq!(String::from_utf8_lossy(&bad.stderr).lines().count(), 1);
+}
