@@ -5,8 +5,9 @@
 //! **Why a feature.** ode_solvers (with nalgebra beneath it) is only needed to compare, never to
 //! simulate, so the `ladder` binary does not carry it by default: it is an optional dependency
 //! behind the cargo feature `peers` (and a dev-dependency of the criterion bench). Run
-//! `cargo run --release --features peers -- work-precision --out DIR`; CI lints and tests this
-//! path (`.ci/run`).
+//! `cargo run --release --features peers -- work-precision --out DIR`. CI lints this path
+//! (`.ci/run`); its test, `cargo test --features peers --test work_precision_peers`, runs there
+//! with `LADDER_SLOW=1` only (it needs a second optimised build of the library).
 //!
 //! **The task.** ode_solvers stops only at the ends of its steps and has no event location, so a
 //! peer is handed the exact separation time t_s and asked for θ there: its error is
