@@ -18,4 +18,6 @@ pub mod stability_stiff;
 pub mod svg_chart;
 pub mod work_precision;
 pub mod work_precision_fit;
+#[cfg(feature = "peers")]
+pub mod work_precision_peers;
 pub mod work_precision_report;
