@@ -3,7 +3,7 @@
 //! from the drawing so that each file has one job.
 
 use super::diagram::{arm_symbol, Diagram};
-use super::diagram_svg::{esc, n3, COLOURS};
+use super::svg_text::{esc, n3, FORCE_COLOURS};
 use std::fmt::Write;
 
 /// The legend column: the state, each force with its arm and torque about P, the total.
@@ -56,7 +56,7 @@ pub(super) fn legend(out: &mut String, d: &Diagram, left: f64) {
         );
     }
     for (i, a) in d.arrows.iter().enumerate() {
-        let colour = COLOURS[i % COLOURS.len()];
+        let colour = FORCE_COLOURS[i % FORCE_COLOURS.len()];
         put(
             out,
             &format!(

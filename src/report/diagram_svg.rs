@@ -10,29 +10,11 @@
 //! out slightly wrong; here every coordinate is a float with two decimals.
 
 use super::diagram::{arm_symbol, arrow_scale, drawing_width, to_px, window, Arrow, Diagram, SIDE};
+use super::svg_text::{esc, n3, FORCE_COLOURS};
 use std::fmt::Write;
 
 /// Width of the legend column right of the drawing, px.
 pub const LEGEND: f64 = 460.0;
-
-/// Colours of the forces in order (F_w, F_f, m g, the coordinate force): Okabe–Ito.
-pub(super) const COLOURS: [&str; 4] = ["#0072B2", "#009E73", "#000000", "#D55E00"];
-
-/// Three decimals with a true minus sign, and never "−0.000".
-pub fn n3(x: f64) -> String {
-    let s = format!("{x:.3}");
-    if s == "-0.000" {
-        "0.000".into()
-    } else {
-        s.replace('-', "−")
-    }
-}
-
-pub(super) fn esc(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-}
 
 fn line(out: &mut String, a: (f64, f64), b: (f64, f64), style: &str) {
     let _ = writeln!(
@@ -298,7 +280,7 @@ font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n<rect width=\"{w}\" 
             &mut out,
             d,
             a,
-            COLOURS[i % COLOURS.len()],
+            FORCE_COLOURS[i % FORCE_COLOURS.len()],
             if along % 2 == 0 { 1.0 } else { -1.0 },
         );
         drawn.push(f);
@@ -320,7 +302,7 @@ font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n<rect width=\"{w}\" 
         p.0, p.1
     );
     for (i, a) in d.arrows.iter().enumerate() {
-        arrow(&mut out, d, a, COLOURS[i % COLOURS.len()]);
+        arrow(&mut out, d, a, FORCE_COLOURS[i % FORCE_COLOURS.len()]);
     }
     super::diagram_legend::legend(&mut out, d, left);
     out.push_str("</svg>\n");
