@@ -79,6 +79,7 @@ fn scene(theta0: f64, tol: f64, end: End, outputs: Vec<Output>) -> Scene {
         end,
         outputs,
         contact: ContactModel::Rigid,
+        order: None,
     }
 }
 

@@ -35,6 +35,7 @@ fn scene(ladder: Ladder, theta0: f64, rate0: f64, method: &str, tol: f64) -> Sce
         rate0,
         method: method.into(),
         control: Some(Control::Tolerance(tol)),
+        order: None,
         end: End::Flat,
         outputs: vec![
             Output::SeparationAngle,
