@@ -22,6 +22,7 @@ pub mod extreme;
 pub mod fall;
 pub mod floor;
 pub mod integrators;
+pub mod lead_in;
 pub mod minimum;
 pub mod outcome;
 pub mod output;
