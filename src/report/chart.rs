@@ -53,6 +53,10 @@ pub struct Chart {
     /// Peers: (series, the series it is a peer of). A peer is drawn dashed, with markers, in
     /// the colour and marker of the series it compares with (same method, another code).
     pub peers: Vec<(String, String)>,
+    /// A series drawn as a front (the Pareto front of work-precision): a wide, light grey band
+    /// under the data, without markers and without a colour of the palette, so it reads as a
+    /// background to the methods' lines rather than as one more of them.
+    pub front: Option<String>,
 }
 
 impl From<PlotSpec> for Chart {

@@ -18,6 +18,9 @@ pub const PALETTE: [&str; 9] = [
     "#7F7F7F",
 ];
 
+/// The colour of a front ([`Chart::front`]): a light grey band behind the data.
+pub const FRONT: &str = "#D0D0D0";
+
 const LEFT: f64 = 84.0;
 const RIGHT: f64 = 200.0;
 const TOP: f64 = 44.0;
@@ -195,6 +198,17 @@ pub fn chart_svg(chart: &Chart, series: &[Series], w: f64, h: f64, id: &str) -> 
 <text x=\"{:.2}\" y=\"{:.1}\" font-size=\"12\" fill=\"#333\"{}>{}</text>", if right { p - 4.0 } else { p + 4.0 }, y0 + 15.0 + 15.0 * (i % 3) as f64, if right { " text-anchor=\"end\"" } else { "" }, esc(&m.label));
         }
     }
+    // The front first, under every method's line.
+    let front = |ser: &&Series| chart.front.as_deref() == Some(ser.name.as_str());
+    for ser in series.iter().filter(front) {
+        let line: Vec<String> = ser
+            .points
+            .iter()
+            .filter_map(|&(a, b)| Some((px(x.map(a)?), py(y.map(b)?))))
+            .map(|(a, b)| format!("{a:.2},{b:.2}"))
+            .collect();
+        let _ = write!(o, "<polyline fill=\"none\" stroke=\"{FRONT}\" stroke-width=\"9\" stroke-linejoin=\"round\" stroke-linecap=\"round\" points=\"{}\"/>", line.join(" "));
+    }
     // (colour and marker index, dashed, markers) of each series: a peer borrows its partner's.
     let style = |i: usize, ser: &Series| {
         let partner = chart
@@ -208,7 +222,7 @@ pub fn chart_svg(chart: &Chart, series: &[Series], w: f64, h: f64, id: &str) -> 
             None => (i, "", chart.markers),
         }
     };
-    for (i, ser) in series.iter().enumerate() {
+    for (i, ser) in series.iter().enumerate().filter(|(_, s)| !front(s)) {
         let (k, dash, markers) = style(i, ser);
         let color = PALETTE[k % PALETTE.len()];
         let pts: Vec<(f64, f64)> = ser
@@ -231,6 +245,10 @@ pub fn chart_svg(chart: &Chart, series: &[Series], w: f64, h: f64, id: &str) -> 
         let (k, dash, markers) = style(i, ser);
         let color = PALETTE[k % PALETTE.len()];
         let ly = y0 + 10.0 + 20.0 * i as f64;
+        if front(&ser) {
+            let _ = write!(o, "<line x1=\"{lx:.1}\" y1=\"{ly:.1}\" x2=\"{:.1}\" y2=\"{ly:.1}\" stroke=\"{FRONT}\" stroke-width=\"9\" stroke-linecap=\"round\"/><text x=\"{:.1}\" y=\"{:.1}\" font-size=\"13\">{}</text>", lx + 26.0, lx + 32.0, ly + 4.0, esc(&ser.name));
+            continue;
+        }
         let _ = write!(o, "<line x1=\"{lx:.1}\" y1=\"{ly:.1}\" x2=\"{:.1}\" y2=\"{ly:.1}\" stroke=\"{color}\" stroke-width=\"2\"{dash}/>", lx + 26.0);
         if markers {
             o.push_str(&marker(k, lx + 13.0, ly, color));

@@ -3,6 +3,7 @@
 //! table is printed by `ladder work-precision`, in `crate::cli::work_precision`).
 
 use super::plot::{Chart, PlotSpec, Series};
+use super::svg_chart::decade_label;
 use super::work_precision::{measure, Run, Timing, PEERS_OF};
 use super::work_precision_fit::{observed_order, pareto, OrderFit, Point};
 use crate::sim::integrators::{order, RIGID_METHODS as METHODS};
@@ -117,26 +118,30 @@ pub fn panel(rep: &SceneReport) -> (Chart, Vec<Series>) {
             peers.push((peer.to_string(), of.to_string()));
         }
     }
-    let mut front: Vec<(f64, f64)> = rep.pareto.iter().map(point).collect();
-    front.sort_by(|a, b| a.0.total_cmp(&b.0));
     series.push(Series {
         name: "Pareto front".into(),
-        points: front,
+        points: staircase(rep.pareto.iter().map(point).collect()),
     });
     let what = if rep.to_flat {
-        "separation and flat"
+        "θₛ, tₛ, flat time"
     } else {
-        "separation angle and time"
+        "θₛ and tₛ"
+    };
+    // The peers have no events, so a scene that runs to flat has none (`work_precision_peers`).
+    let no_peers = if rep.to_flat && cfg!(feature = "peers") {
+        " (no peers: no floor phase)"
+    } else {
+        ""
     };
     let spec = PlotSpec {
         title: format!(
-            "θ0 = {}, θ̇0 = {}{}",
-            rep.start.0,
-            rep.start.1,
+            "θ0 = {} rad, θ̇0 = {} rad/s{}{no_peers}",
+            number(rep.start.0),
+            number(rep.start.1),
             if rep.to_flat { ", to flat" } else { "" }
         ),
         x_label: "median run time per solve (s)".into(),
-        y_label: format!("worse relative error ({what})"),
+        y_label: format!("worse rel. error of {what} (0 at 10⁻¹⁷)"),
         ..Default::default()
     };
     let chart = Chart {
@@ -144,9 +149,33 @@ pub fn panel(rep: &SceneReport) -> (Chart, Vec<Series>) {
         log_x: true,
         log_y: true,
         markers: true,
-        dashed: vec!["Pareto front".into()],
         peers,
+        front: Some("Pareto front".into()),
         ..Default::default()
     };
     (chart, series)
+}
+
+/// The Pareto front as the boundary of the region it dominates: from each run across to the
+/// next one's time, then down to its error (points sorted by time; their errors then fall).
+pub fn staircase(mut front: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
+    front.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut out = Vec::with_capacity(2 * front.len());
+    for (i, &p) in front.iter().enumerate() {
+        if i > 0 {
+            out.push((p.0, front[i - 1].1));
+        }
+        out.push(p);
+    }
+    out
+}
+
+/// A start value for a title: a power of ten as 10⁻⁶, otherwise as Rust prints it.
+fn number(v: f64) -> String {
+    let k = v.abs().log10().round();
+    if v > 0.0 && k.abs() >= 3.0 && 10f64.powi(k as i32) == v {
+        decade_label(k as i32)
+    } else {
+        v.to_string()
+    }
 }
