@@ -7,9 +7,11 @@
 //! separation with event location is timed too, beside one closed-form evaluation, and the whole
 //! fall to flat (no closed form: the reference is the Taylor method at 1e-16, checked against
 //! DOP853 at 1e-16 on stderr). Run: `cargo bench --bench integrators`; only the Taylor
-//! comparisons of issue 13: `cargo bench --bench integrators -- at-1e-12`.
+//! comparisons of issue 13: `cargo bench --bench integrators -- at-1e-12`, which ends with a
+//! table of the medians of that run and their ratios to the Taylor method (with the load
+//! average: on a shared machine only ratios within one run are comparable).
 
-use criterion::{criterion_group, criterion_main, Criterion};
+use criterion::{criterion_group, Criterion};
 use ode_solvers::{OutputType, System, Vector2};
 use sliding_ladder::report::work_precision::scene_at;
 use sliding_ladder::sim::exact::PhaseOne;
@@ -156,6 +158,20 @@ fn bench_at_1e12(c: &mut Criterion) {
                     .and_then(|p| p.separation())
             })
         });
+        // The peer has no event location: it is handed the exact separation time and timed
+        // for θ there, an easier task than ours (which finds t_s too).
+        let peer_err = |tol| {
+            (peer_theta(true, tol, theta0, rate0, exact.time) - exact.angle).abs() / exact.angle
+        };
+        match pick(&peer_err, target) {
+            Some((tol, e)) => {
+                eprintln!("{name}: ode_solvers-dop853 θ(t_s), tolerance {tol:e} gives angle error {e:.2e}");
+                g.bench_function("ode_solvers-dop853", |b| {
+                    b.iter(|| peer_theta(true, black_box(tol), theta0, rate0, exact.time))
+                });
+            }
+            None => eprintln!("{name}: ode_solvers-dop853 never reaches {target:e}"),
+        }
         for m in ["taylor", "dop853"] {
             let sc = |tol| scene_with(theta0, rate0, m, Control::Tolerance(tol), End::Separation);
             let err = |tol| {
@@ -250,4 +266,65 @@ fn bench_methods(c: &mut Criterion) {
 }
 
 criterion_group! { name = benches; config = configure(); targets = bench_at_1e12, bench_peers, bench_methods }
-criterion_main!(benches);
+
+/// The groups of issue 13 whose medians are summarised after the run, with their members.
+const SUMMARY: [(&str, &[&str]); 3] = [
+    (
+        "from-rest-0.1/separation-at-1e-12",
+        &["taylor", "dop853", "ode_solvers-dop853", "closed-form"],
+    ),
+    (
+        "from-rest-0.3/separation-at-1e-12",
+        &["taylor", "dop853", "ode_solvers-dop853", "closed-form"],
+    ),
+    ("full-fall-0.3/flat-at-1e-12", &["taylor", "dop853"]),
+];
+
+/// Criterion's median (ns per solve) of `group`/`name`, if this run wrote it (files from an
+/// earlier run, or from a run filtered to other groups, are left out: ratios are only quoted
+/// between benches of one run).
+fn median_ns(group: &str, name: &str, since: std::time::SystemTime) -> Option<f64> {
+    let target = std::env::var("CARGO_TARGET_DIR").unwrap_or_else(|_| "target".into());
+    let dir = format!(
+        "{target}/criterion/{}/{name}/new/estimates.json",
+        group.replace('/', "_")
+    );
+    let meta = std::fs::metadata(&dir).ok()?;
+    if meta.modified().ok()? < since {
+        return None;
+    }
+    let v: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&dir).ok()?).ok()?;
+    v["median"]["point_estimate"].as_f64()
+}
+
+/// Medians of the issue-13 groups and their ratios to the Taylor method, for README's table.
+fn summary(since: std::time::SystemTime) {
+    let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    let load = load
+        .split_whitespace()
+        .take(3)
+        .collect::<Vec<_>>()
+        .join(" ");
+    eprintln!("\nmedians per solve of this run (load average at the end: {load})");
+    for (group, names) in SUMMARY {
+        let Some(taylor) = median_ns(group, "taylor", since) else {
+            continue;
+        };
+        for name in names.iter() {
+            if let Some(m) = median_ns(group, name, since) {
+                eprintln!(
+                    "{group:38} {name:20} {:8.3} µs   {:5.2}x taylor's",
+                    m / 1e3,
+                    m / taylor
+                );
+            }
+        }
+    }
+}
+
+fn main() {
+    let since = std::time::SystemTime::now();
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    summary(since);
+}

@@ -2,10 +2,20 @@
 //! Pareto front of a real sweep has no dominated run, and the full fall's flat-time reference
 //! agrees with an independent method.
 
-use sliding_ladder::report::work_precision::{default_scenes, measure, Timing};
+use sliding_ladder::report::work_precision::{
+    default_scenes, flat_reference, measure, scene_at, Timing,
+};
 use sliding_ladder::report::work_precision_fit::{dominates, observed_order, Point};
 use sliding_ladder::report::work_precision_report::report;
+use sliding_ladder::sim::event::{Direction, Event};
+use sliding_ladder::sim::exact::PhaseOne;
+use sliding_ladder::sim::fall;
+use sliding_ladder::sim::floor::{self, FloorPhase};
+use sliding_ladder::sim::integrators::taylor::{Taylor, MAX_ORDER};
+use sliding_ladder::sim::integrators::Control;
+use sliding_ladder::sim::run::integrate_phase;
 use sliding_ladder::sim::scene::End;
+use std::f64::consts::FRAC_PI_2;
 
 /// One timed repeat: these tests judge errors and work, not speed.
 const ONCE: Timing = Timing {
@@ -55,4 +65,60 @@ fn a_real_front_has_no_dominated_run_and_the_flat_reference_holds() {
         .fold(f64::INFINITY, f64::min);
     assert!(best < 1e-13, "dop853's best flat-time error {best:e}");
     assert!(rep.runs.iter().all(|r| r.error() >= r.angle_error));
+}
+
+/// Flat: θ − π/2 rises through zero (the old reference's event, in θ).
+struct FlatInTheta;
+impl Event<4> for FlatInTheta {
+    fn value(&self, _t: f64, y: &[f64; 4]) -> f64 {
+        y[0] - FRAC_PI_2
+    }
+    fn direction(&self) -> Direction {
+        Direction::Rising
+    }
+    fn rate(&self, _t: f64, _y: &[f64; 4], dy: &[f64; 4]) -> Option<f64> {
+        Some(dy[0])
+    }
+}
+
+/// Near the floor (θ0 = π/2 − 1e-9, φ_s = 6.7e-10) the flat-time reference runs the floor phase
+/// in φ = π/2 − θ: it agrees with DOP853's whole fall (an independent method, also in φ, from its
+/// own separation). The same reference run in θ, as it was before, starts from θ_s with an
+/// absolute error of up to an ulp of π/2 (2.2e-16, i.e. 3e-7 of φ_s) and misses.
+#[test]
+fn the_flat_reference_runs_in_the_complement_near_the_floor() {
+    let mut sc = scene_at(FRAC_PI_2 - 1e-9, 0.0);
+    sc.end = End::Flat;
+    let ladder = sc.ladder;
+    let sep = PhaseOne::new(sc.theta0, sc.rate0, ladder.big_omega2())
+        .unwrap()
+        .separation()
+        .unwrap();
+    let reference = flat_reference(&sc, &sep).unwrap();
+    let old = {
+        let y = floor::state_at_separation(&ladder, sep.angle, sep.rate);
+        let mut st = Taylor::with_order(sep.time, y, 1e-16, MAX_ORDER);
+        let end = integrate_phase(
+            &FloorPhase::new(&ladder),
+            &mut st,
+            &[&FlatInTheta],
+            sep.time + 100.0,
+            1_000_000,
+            &mut (),
+        )
+        .unwrap();
+        end.t
+    };
+    sc.method = "dop853".into();
+    sc.control = Some(Control::Tolerance(1e-14));
+    let independent = fall::run(&sc, fall::MAX_STEPS).unwrap().flat.unwrap().time;
+    let rel = |t: f64| (t - independent).abs() / independent;
+    println!(
+        "flat time {reference} (φ) vs DOP853 {independent}: {:.1e}; in θ {old}: {:.1e}; floor phase {:.1e} s",
+        rel(reference),
+        rel(old),
+        reference - sep.time
+    );
+    assert!(rel(reference) < 1e-14, "{:e}", rel(reference));
+    assert!(rel(old) > 1e-13, "{:e}", rel(old));
 }

@@ -96,7 +96,7 @@ fn print_report(rep: &SceneReport) {
         rep.start.0,
         rep.start.1,
         if rep.to_flat {
-            ", to flat; flat-time reference: Taylor order 40 at 1e-16 from the exact separation"
+            ", to flat; flat-time reference: Taylor order 40 at 1e-16 in φ = π/2 − θ from the exact separation"
         } else {
             ""
         }
@@ -126,6 +126,9 @@ fn print_report(rep: &SceneReport) {
             r.seconds * 1e6,
             format!("{:.3}-{:.3}", r.seconds_iqr.0 * 1e6, r.seconds_iqr.1 * 1e6),
         );
+    }
+    if rep.runs.iter().any(|r| r.method.starts_with("ode_solvers")) {
+        println!("ode_solvers-*: the peers (--features peers), handed the exact t_s (no event location): θ there, time error 0 by construction, not on the Pareto front");
     }
     println!(
         "observed order: slope of −ln(error) against ln(rhs evaluations) over runs with error in [floor, {:.0e}] whose work grows and is not tied (floor: min({:.0e}, {} × the sweep's rounding level); see work_precision_fit)",

@@ -50,6 +50,9 @@ pub struct Chart {
     pub markers: bool,
     /// Names of the series drawn dashed (references, peers, fronts).
     pub dashed: Vec<String>,
+    /// Peers: (series, the series it is a peer of). A peer is drawn dashed, with markers, in
+    /// the colour and marker of the series it compares with (same method, another code).
+    pub peers: Vec<(String, String)>,
 }
 
 impl From<PlotSpec> for Chart {

@@ -268,6 +268,7 @@ fn scene(ladder: Ladder, theta0: f64, rate0: f64, end: End, outputs: Vec<Output>
         rate0,
         method: "dop853".into(),
         control: Some(Control::Tolerance(TOL)),
+        order: None,
         end,
         outputs,
         contact: ContactModel::Rigid,

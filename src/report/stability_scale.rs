@@ -33,6 +33,7 @@ fn flat_scene(ladder: Ladder, theta0: f64, method: &str, tol: f64) -> Scene {
         rate0: 0.0,
         method: method.into(),
         control: Some(Control::Tolerance(tol)),
+        order: None,
         end: End::Flat,
         outputs: vec![Output::SeparationAngle, Output::FlatTime],
         contact: ContactModel::Rigid,

@@ -9,6 +9,7 @@
 //! text, and owning it keeps the palette and layout the same in every figure.
 
 use super::chart::{Chart, Series};
+use super::svg_text::esc;
 use std::fmt::Write;
 
 /// The palette (Okabe–Ito, distinguishable with any colour vision), in series order.
@@ -21,12 +22,6 @@ const LEFT: f64 = 84.0;
 const RIGHT: f64 = 200.0;
 const TOP: f64 = 44.0;
 const BOTTOM: f64 = 58.0;
-
-fn esc(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-}
 
 /// `10` to the integer power `k`, as text with Unicode superscripts: 10⁻¹².
 pub fn decade_label(k: i32) -> String {
@@ -200,23 +195,32 @@ pub fn chart_svg(chart: &Chart, series: &[Series], w: f64, h: f64, id: &str) -> 
 <text x=\"{:.2}\" y=\"{:.1}\" font-size=\"12\" fill=\"#333\"{}>{}</text>", if right { p - 4.0 } else { p + 4.0 }, y0 + 15.0 + 15.0 * (i % 3) as f64, if right { " text-anchor=\"end\"" } else { "" }, esc(&m.label));
         }
     }
+    // (colour and marker index, dashed, markers) of each series: a peer borrows its partner's.
+    let style = |i: usize, ser: &Series| {
+        let partner = chart
+            .peers
+            .iter()
+            .find(|(p, _)| *p == ser.name)
+            .and_then(|(_, of)| series.iter().position(|s| s.name == *of));
+        match partner {
+            Some(j) => (j, " stroke-dasharray=\"7 4\"", chart.markers),
+            None if chart.dashed.contains(&ser.name) => (i, " stroke-dasharray=\"7 4\"", false),
+            None => (i, "", chart.markers),
+        }
+    };
     for (i, ser) in series.iter().enumerate() {
-        let color = PALETTE[i % PALETTE.len()];
+        let (k, dash, markers) = style(i, ser);
+        let color = PALETTE[k % PALETTE.len()];
         let pts: Vec<(f64, f64)> = ser
             .points
             .iter()
             .filter_map(|&(a, b)| Some((px(x.map(a)?), py(y.map(b)?))))
             .collect();
-        let dash = if chart.dashed.contains(&ser.name) {
-            " stroke-dasharray=\"7 4\""
-        } else {
-            ""
-        };
         let line: Vec<String> = pts.iter().map(|(a, b)| format!("{a:.2},{b:.2}")).collect();
         let _ = write!(o, "<polyline fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"{dash} stroke-linejoin=\"round\" points=\"{}\"/>", line.join(" "));
-        if chart.markers && !chart.dashed.contains(&ser.name) {
+        if markers {
             for (a, b) in &pts {
-                o.push_str(&marker(i, *a, *b, color));
+                o.push_str(&marker(k, *a, *b, color));
             }
         }
     }
@@ -224,16 +228,12 @@ pub fn chart_svg(chart: &Chart, series: &[Series], w: f64, h: f64, id: &str) -> 
     // The legend, in its own column.
     let lx = x1 + 14.0;
     for (i, ser) in series.iter().enumerate() {
-        let color = PALETTE[i % PALETTE.len()];
+        let (k, dash, markers) = style(i, ser);
+        let color = PALETTE[k % PALETTE.len()];
         let ly = y0 + 10.0 + 20.0 * i as f64;
-        let dash = if chart.dashed.contains(&ser.name) {
-            " stroke-dasharray=\"7 4\""
-        } else {
-            ""
-        };
         let _ = write!(o, "<line x1=\"{lx:.1}\" y1=\"{ly:.1}\" x2=\"{:.1}\" y2=\"{ly:.1}\" stroke=\"{color}\" stroke-width=\"2\"{dash}/>", lx + 26.0);
-        if chart.markers && dash.is_empty() {
-            o.push_str(&marker(i, lx + 13.0, ly, color));
+        if markers {
+            o.push_str(&marker(k, lx + 13.0, ly, color));
         }
         let _ = write!(
             o,

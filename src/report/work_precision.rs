@@ -9,11 +9,9 @@
 //! exists for the floor phase), whose agreement with DOP853 at 1e-16 is reported beside it.
 
 use super::work_precision_fit::Point;
-use crate::sim::event::{Direction, Event};
-use crate::sim::exact::PhaseOne;
-use crate::sim::exact::Separation;
+use crate::sim::complement::{self, ComplementFloor};
+use crate::sim::exact::{separation_cos, PhaseOne, Separation};
 use crate::sim::fall;
-use crate::sim::floor::{self, FloorPhase};
 use crate::sim::integrators::taylor::{Taylor, MAX_ORDER};
 use crate::sim::integrators::{is_adaptive, Control};
 use crate::sim::output::Output;
@@ -22,6 +20,13 @@ use crate::sim::run::integrate_phase;
 use crate::sim::scene::{End, Scene};
 use serde::Serialize;
 use std::time::Instant;
+
+/// The peers' names and the method each compares with (`--features peers`, see
+/// `report::work_precision_peers`): ode_solvers' DOP853 and Dopri5.
+pub const PEERS_OF: [(&str, &str); 2] = [
+    ("ode_solvers-dop853", "dop853"),
+    ("ode_solvers-dopri5", "dopri5"),
+];
 
 /// One run of one method at one tolerance or step on one scene.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -101,6 +106,7 @@ pub fn scene_at(theta0: f64, rate0: f64) -> Scene {
         rate0,
         method: "dop853".into(),
         control: Some(Control::Tolerance(1e-12)),
+        order: None,
         end: End::Separation,
         outputs: vec![
             Output::SeparationAngle,
@@ -166,31 +172,30 @@ pub fn median_seconds(f: impl FnMut()) -> f64 {
     time_it(TIMING, f).0
 }
 
-/// Flat: θ − π/2 rises through zero (for the reference run).
-struct Flat;
-impl Event<4> for Flat {
-    fn value(&self, _t: f64, y: &[f64; 4]) -> f64 {
-        y[0] - std::f64::consts::FRAC_PI_2
-    }
-    fn direction(&self) -> Direction {
-        Direction::Rising
-    }
-    fn rate(&self, _t: f64, _y: &[f64; 4], dy: &[f64; 4]) -> Option<f64> {
-        Some(dy[0])
-    }
-}
-
 /// The reference flat time: the floor phase from the exact separation state, by the Taylor
 /// method at order MAX_ORDER and tolerance 1e-16 (no run of the sweep uses that order, and the
 /// wall phase is the closed form).
+///
+/// The floor phase runs in the complement φ = π/2 − θ (`sim::complement`), from
+/// φ_s = arcsin(cos θ_s) with cos θ_s from footnote 4 ([`separation_cos`]): near the floor θ_s
+/// carries an absolute error of an ulp of π/2, which in θ would be a relative error of u/φ_s in
+/// the whole floor phase (`tests/work_precision.rs` shows it at θ0 = π/2 − 1e-9).
 pub fn flat_reference(base: &Scene, sep: &Separation) -> Result<f64, String> {
     let ladder = base.ladder;
-    let sys = FloorPhase::new(&ladder);
-    let y = floor::state_at_separation(&ladder, sep.angle, sep.rate);
+    let sys = ComplementFloor::new(&ladder);
+    let phi_s = separation_cos(base.theta0, base.rate0, ladder.big_omega2()).asin();
+    let y = complement::floor_state_at_separation(&ladder, phi_s, sep.rate);
     let mut st = Taylor::with_order(sep.time, y, 1e-16, MAX_ORDER);
     let t_end = sep.time + 1e3 * (ladder.half_length / ladder.gravity).sqrt();
-    let end = integrate_phase(&sys, &mut st, &[&Flat], t_end, 1_000_000, &mut ())
-        .map_err(|e| format!("reference run: {e}"))?;
+    let end = integrate_phase(
+        &sys,
+        &mut st,
+        &[&complement::Flat],
+        t_end,
+        1_000_000,
+        &mut (),
+    )
+    .map_err(|e| format!("reference run: {e}"))?;
     end.event
         .map(|_| end.t)
         .ok_or_else(|| "the reference run never lies flat".into())

@@ -3,7 +3,7 @@
 //! table is printed by `ladder work-precision`, in `crate::cli::work_precision`).
 
 use super::plot::{Chart, PlotSpec, Series};
-use super::work_precision::{measure, Run, Timing};
+use super::work_precision::{measure, Run, Timing, PEERS_OF};
 use super::work_precision_fit::{observed_order, pareto, OrderFit, Point};
 use crate::sim::integrators::{order, RIGID_METHODS as METHODS};
 use crate::sim::scene::{End, Scene};
@@ -32,12 +32,22 @@ pub fn report(
     timing: Timing,
     tick: impl FnMut(&str),
 ) -> Result<SceneReport, String> {
-    let runs = measure(scene, &METHODS, timing, tick)?;
+    #[allow(unused_mut)]
+    let mut runs = measure(scene, &METHODS, timing, tick)?;
+    // ode_solvers' DOP853 and Dopri5 in the same run (`--features peers`; see the module).
+    #[cfg(feature = "peers")]
+    runs.extend(super::work_precision_peers::measure_peers(scene, timing)?);
     let orders = METHODS
         .iter()
         .map(|m| ((*m).to_string(), order(m), observed_order(&runs, m)))
         .collect();
-    let pareto = pareto(&runs).into_iter().cloned().collect();
+    // The front of this crate's runs: the peers were handed t_s (see `work_precision_peers`).
+    let ours: Vec<Run> = runs
+        .iter()
+        .filter(|r| PEERS_OF.iter().all(|(p, _)| r.method != *p))
+        .cloned()
+        .collect();
+    let pareto = pareto(&ours).into_iter().cloned().collect();
     Ok(SceneReport {
         scene: scene.file.clone(),
         start: (scene.theta0, scene.rate0),
@@ -90,6 +100,23 @@ pub fn panel(rep: &SceneReport) -> (Chart, Vec<Series>) {
                 .collect(),
         })
         .collect();
+    // The peers measured (`--features peers`), each beside the method it compares with.
+    let mut peers = Vec::new();
+    for (peer, of) in PEERS_OF {
+        let points: Vec<(f64, f64)> = rep
+            .runs
+            .iter()
+            .filter(|r| r.method == peer)
+            .map(point)
+            .collect();
+        if !points.is_empty() {
+            series.push(Series {
+                name: peer.into(),
+                points,
+            });
+            peers.push((peer.to_string(), of.to_string()));
+        }
+    }
     let mut front: Vec<(f64, f64)> = rep.pareto.iter().map(point).collect();
     front.sort_by(|a, b| a.0.total_cmp(&b.0));
     series.push(Series {
@@ -118,6 +145,7 @@ pub fn panel(rep: &SceneReport) -> (Chart, Vec<Series>) {
         log_y: true,
         markers: true,
         dashed: vec!["Pareto front".into()],
+        peers,
         ..Default::default()
     };
     (chart, series)

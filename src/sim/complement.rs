@@ -19,6 +19,7 @@
 //! of π/2 that FRAC_PI_2 misses ([`HALF_PI_LO`]) is added with one rounding.
 
 use super::event::{Direction, Event};
+use super::integrators::taylor::{separation_factor_series, Series};
 use super::integrators::Ode;
 use super::rigid::{event_safe_step, Ladder};
 use super::run::Observer;
@@ -92,6 +93,11 @@ impl Event<2> for ComplementSeparation {
     /// d/dt (Ω² sin φ − φ̇²) = Ω² cos φ φ̇ − 2 φ̇ φ̈.
     fn rate(&self, _t: f64, y: &[f64; 2], dy: &[f64; 2]) -> Option<f64> {
         Some(self.0 * y[0].cos() * dy[0] - 2.0 * y[1] * dy[1])
+    }
+    fn series(&self, s: &Series<2>, out: &mut [f64]) -> bool {
+        let p = s.order;
+        separation_factor_series(self.0, &s.sin, &s.y[1], &mut out[..=p]);
+        true
     }
 }
 

@@ -16,6 +16,8 @@
 //! **Refinement.** The root is found by Brent's method ([`brent`]) on the interpolant of the step
 //! that brackets it, iterated until the bracket is two adjacent floats (tolerance zero).
 
+use super::integrators::taylor::Series;
+
 /// Which sign changes count.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Direction {
@@ -39,6 +41,13 @@ pub trait Event<const N: usize> {
     /// known; the root is then refined by Brent's method alone).
     fn rate(&self, _t: f64, _y: &[f64; N], _dy: &[f64; N]) -> Option<f64> {
         None
+    }
+    /// The Taylor coefficients of [`Event::value`] over a step of the Taylor method, formed from
+    /// the step's series into `out[..=series.order]`; false when the event has none (it is then
+    /// evaluated on the interpolant). With them the root is found by Newton's method on one
+    /// polynomial, without a transcendental function per iterate.
+    fn series(&self, _series: &Series<N>, _out: &mut [f64]) -> bool {
+        false
     }
 }
 
@@ -77,6 +86,15 @@ pub fn newton_in_bracket(
         }
         let (l, h) = (lo.min(hi), lo.max(hi));
         let newton = t - v / d;
+        // Near the root the event's value is rounding noise and so is the correction: a
+        // correction of a few ulps means converged (bisecting on to adjacent floats would cost
+        // ~50 more evaluations for digits the noise does not have). Checked before the bracket
+        // test: a correction below half an ulp leaves `newton` equal to `t`, which the bracket
+        // test would reject as outside (t is an end of it) and so bisect on.
+        let noise = 8.0 * f64::EPSILON * t.abs().max(f64::MIN_POSITIVE);
+        if (newton - t).abs() <= noise && newton >= l && newton <= h {
+            return Some(newton);
+        }
         let next = if !(newton > l && newton < h) || (2.0 * v).abs() > (dx_old * d).abs() {
             dx_old = dx;
             dx = 0.5 * (h - l);
@@ -86,10 +104,6 @@ pub fn newton_in_bracket(
             dx = (newton - t).abs();
             newton
         };
-        // Near the root the event's value is rounding noise and so is the correction: a
-        // correction of a few ulps means converged (bisecting on to adjacent floats would cost
-        // ~50 more evaluations for digits the noise does not have).
-        let noise = 8.0 * f64::EPSILON * t.abs().max(f64::MIN_POSITIVE);
         if (next - t).abs() <= noise || h - l <= 2.0 * f64::EPSILON * h.abs().max(l.abs()) {
             return Some(next);
         }
@@ -199,6 +213,21 @@ mod tests {
             "{r}"
         );
         assert!(newton_in_bracket(|_| None, 1.0, 2.0, 0.5, -0.4).is_none());
+    }
+
+    #[test]
+    fn newton_stops_when_the_correction_is_below_an_ulp() {
+        // f = (t − 2) + 1e-17: from t = 3 Newton lands on t = 2 exactly, where f is 1e-17 and
+        // the correction 1e-17 vanishes in t. That is converged; bisecting on from there
+        // towards the other end of the bracket took 50 more evaluations.
+        let evals = std::cell::Cell::new(0);
+        let f = |t: f64| {
+            evals.set(evals.get() + 1);
+            Some(((t - 2.0) + 1e-17, 1.0))
+        };
+        let r = newton_in_bracket(f, 1.0, 3.0, -1.0, 1.0).unwrap();
+        assert_eq!(r, 2.0);
+        assert!(evals.get() <= 3, "{} evaluations", evals.get());
     }
 
     #[test]

@@ -8,6 +8,7 @@ use super::exact::PhaseOne;
 use super::fall_observer::{rigid_momentum_x, TraceObserver, SAMPLES_PER_STEP};
 use super::floor;
 use super::integrators::any::AnyStepper;
+use super::integrators::taylor;
 use super::integrators::Stepper;
 pub use super::fall_observer::momentum_balance;
 pub use super::outcome::{FlatState, FloorReport, Outcome, Plan, Sample, SeparationState, Work};
@@ -31,6 +32,11 @@ impl Event<2> for SeparationEvent {
     /// d/dt (Ω² cos θ − θ̇²) = −Ω² sin θ θ̇ − 2 θ̇ θ̈.
     fn rate(&self, _t: f64, y: &[f64; 2], dy: &[f64; 2]) -> Option<f64> {
         Some(-self.0 * y[0].sin() * dy[0] - 2.0 * y[1] * dy[1])
+    }
+    fn series(&self, s: &taylor::Series<2>, out: &mut [f64]) -> bool {
+        let p = s.order;
+        taylor::separation_factor_series(self.0, &s.cos, &s.y[1], &mut out[..=p]);
+        true
     }
 }
 
@@ -139,9 +145,10 @@ fn run_rigid(
         false => y_lead,
     };
     // The stepper runs in time since the lead-in (its step floor is relative to |t|).
-    let mut stepper = AnyStepper::new(&scene.method, control, 0.0, start).ok_or_else(|| {
-        RunError::Start(format!("method {} does not take {control:?}", scene.method))
-    })?;
+    let mut stepper = AnyStepper::with_order(&scene.method, control, scene.order, 0.0, start)
+        .ok_or_else(|| {
+            RunError::Start(format!("method {} does not take {control:?}", scene.method))
+        })?;
     let mut obs = TraceObserver {
         ladder,
         phase: 1,
@@ -205,9 +212,9 @@ fn run_rigid(
         let phi_s = phi_s.unwrap_or_else(|| complement::complement(sep.angle));
         let y_s = complement::floor_state_at_separation(&ladder, phi_s, sep.rate);
         let mut stepper2 =
-            AnyStepper::new(&scene.method, control, sep.time, y_s).ok_or_else(|| {
-                RunError::Start(format!("method {} does not take {control:?}", scene.method))
-            })?;
+            AnyStepper::with_order(&scene.method, control, scene.order, sep.time, y_s).ok_or_else(
+                || RunError::Start(format!("method {} does not take {control:?}", scene.method)),
+            )?;
         let monitor = plan.floor_monitor.then_some(FloorReport {
             floor_force_min: f64::INFINITY,
             top_clearance_min: f64::INFINITY,

@@ -3,6 +3,7 @@
 //! that asks for nothing but the separation keeps O(1) memory.
 
 use super::event::{brent, crosses, newton_in_bracket, Event};
+use super::integrators::taylor::{horner, horner_with_rate, MAX_ORDER};
 use super::integrators::{Ode, StepError, Stepper};
 use std::fmt;
 
@@ -145,19 +146,34 @@ pub fn integrate_phase<const N: usize, S: Ode<N>, St: Stepper<N>, O: Observer<N>
                     continue;
                 }
                 stepper.prepare_dense(sys);
-                // Refine on the interpolant; its end values may differ from the step's by a
-                // rounding, so fall back to the step's values where they disagree in sign.
-                let (ia, ib) = (value_at(stepper, a), value_at(stepper, b));
-                let (fa, fb) = if ia * ib <= 0.0 { (ia, ib) } else { (fa, fb) };
-                // Newton's method where the interpolant and the event have exact derivatives
-                // (the Taylor method), else Brent's.
-                let with_rate = |t: f64| {
-                    let dy = stepper.interpolate_rate(t)?;
-                    let y = stepper.interpolate(t);
-                    Some((ev.value(t, &y), ev.rate(t, &y, &dy)?))
+                // The Taylor method with an event that has its own series: Newton on the
+                // event's polynomial over the step (no transcendental function per iterate).
+                let mut poly = [0.0; MAX_ORDER + 1];
+                let root = match stepper.step_series().filter(|s| ev.series(s, &mut poly)) {
+                    Some(s) => {
+                        let (c, t_prev) = (&poly[..=s.order], stepper.t_prev());
+                        let (ia, ib) = (horner(c, a - t_prev), horner(c, b - t_prev));
+                        let (fa, fb) = if ia * ib <= 0.0 { (ia, ib) } else { (fa, fb) };
+                        let on_poly = |t: f64| Some(horner_with_rate(c, t - t_prev));
+                        newton_in_bracket(on_poly, a, b, fa, fb).unwrap_or(a)
+                    }
+                    None => {
+                        // Refine on the interpolant; its end values may differ from the
+                        // step's by a rounding, so fall back to the step's values where they
+                        // disagree in sign.
+                        let (ia, ib) = (value_at(stepper, a), value_at(stepper, b));
+                        let (fa, fb) = if ia * ib <= 0.0 { (ia, ib) } else { (fa, fb) };
+                        // Newton's method where the interpolant and the event have exact
+                        // derivatives (the Taylor method), else Brent's.
+                        let with_rate = |t: f64| {
+                            let dy = stepper.interpolate_rate(t)?;
+                            let y = stepper.interpolate(t);
+                            Some((ev.value(t, &y), ev.rate(t, &y, &dy)?))
+                        };
+                        newton_in_bracket(with_rate, a, b, fa, fb)
+                            .unwrap_or_else(|| brent(|t| value_at(stepper, t), a, b, fa, fb))
+                    }
                 };
-                let root = newton_in_bracket(with_rate, a, b, fa, fb)
-                    .unwrap_or_else(|| brent(|t| value_at(stepper, t), a, b, fa, fb));
                 if first.is_none_or(|(r, _)| root < r) {
                     first = Some((root, i));
                 }

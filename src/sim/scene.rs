@@ -2,7 +2,8 @@
 //! file, the line (from toml's spans) and the field, and saying what is allowed.
 //!
 //! Schema (DESIGN.md, "Scenes"): `[ladder] mass half_length gravity`, `[start] angle (or
-//! angle_from_floor) angular_velocity`, `[contact] model (stiffness damping)`, `[integrator] method tolerance|step`,
+//! angle_from_floor) angular_velocity`, `[contact] model (stiffness damping)`, `[integrator] method
+//! tolerance|step (order)`,
 //! `[end] at (time)`, `[outputs] want`. Unknown keys are errors.
 
 use super::integrators::Control;
@@ -39,6 +40,9 @@ pub struct Scene {
     pub method: String,
     /// Step or tolerance (None for `exact`).
     pub control: Option<Control>,
+    /// The Taylor method's order (`[integrator] order`, method "taylor" only); None: from the
+    /// tolerance ([`crate::sim::integrators::taylor::order_for`]).
+    pub order: Option<usize>,
     /// Where the run ends.
     pub end: End,
     /// The outputs asked for, in the order given.
@@ -129,6 +133,7 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
     // The scene's time unit √(l/g): steps and end times are limited in it (see `sim::scaled`).
     let unit = Units::of(&ladder).time;
     let (method, control) = check_integrator(&cx, raw.integrator.get_ref(), unit)?;
+    let order = super::scene_checks::check_order(&cx, raw.integrator.get_ref(), &method)?;
     let end = check_end(&cx, raw.end.get_ref(), unit)?;
     if theta0 == 0.0 && rate0 == 0.0 && !matches!(end, End::Time(_)) {
         return Err(cx.err(Some(start.span.clone()), "start", "θ0 = 0 with θ̇0 = 0 is the equilibrium: the ladder never leaves the wall; allowed: angle > 0 or angular_velocity > 0 (or end.at = \"time\")"));
@@ -160,6 +165,7 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
         rate0,
         method,
         control,
+        order,
         end,
         outputs,
         contact,

@@ -216,6 +216,34 @@ pub(super) fn check_integrator(
     Ok((method.into(), Some(control)))
 }
 
+/// `[integrator] order`: the Taylor method's order, a whole number in
+/// [`taylor::MIN_ORDER`, `taylor::MAX_ORDER`], for method "taylor" only.
+pub(super) fn check_order(
+    cx: &Ctx,
+    i: &RawIntegrator,
+    method: &str,
+) -> Result<Option<usize>, SceneError> {
+    use crate::sim::integrators::taylor::{MAX_ORDER, MIN_ORDER};
+    let Some(o) = &i.order else {
+        return Ok(None);
+    };
+    let allowed = format!("a whole number in [{MIN_ORDER}, {MAX_ORDER}] (default: from the tolerance, about −ln(tol)/2)");
+    if method != TAYLOR {
+        return Err(cx.err(
+            Some(o.span()),
+            "integrator.order",
+            format!("\"{method}\" takes no order; allowed: order with method = \"taylor\" only"),
+        ));
+    }
+    let p = cx.number(
+        o,
+        "integrator.order",
+        |x| x.fract() == 0.0 && (MIN_ORDER as f64..=MAX_ORDER as f64).contains(&x),
+        &allowed,
+    )?;
+    Ok(Some(p as usize))
+}
+
 pub(super) fn check_outputs(
     cx: &Ctx,
     o: &RawOutputs,

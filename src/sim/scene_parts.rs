@@ -69,6 +69,7 @@ pub(super) struct RawIntegrator {
     pub(super) tolerance: Option<Spanned<f64>>,
     pub(super) step: Option<Spanned<f64>>,
     pub(super) scaled_step: Option<Spanned<f64>>,
+    pub(super) order: Option<Spanned<f64>>,
 }
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]

@@ -53,6 +53,23 @@ impl<const N: usize> AnyStepper<N> {
             _ => return None,
         })
     }
+
+    /// As [`AnyStepper::new`], with the Taylor method's order when `order` is given (other
+    /// methods have none: the scene check refuses it for them, and it is ignored here).
+    pub fn with_order(
+        name: &str,
+        control: Control,
+        order: Option<usize>,
+        t0: f64,
+        y0: [f64; N],
+    ) -> Option<Self> {
+        match (name, control, order) {
+            ("taylor", Control::Tolerance(r), Some(p)) => {
+                Some(AnyStepper::Taylor(Taylor::with_order(t0, y0, r, p)))
+            }
+            _ => Self::new(name, control, t0, y0),
+        }
+    }
 }
 
 macro_rules! each {
@@ -91,6 +108,9 @@ impl<const N: usize> Stepper<N> for AnyStepper<N> {
     }
     fn interpolate_rate(&self, t: f64) -> Option<[f64; N]> {
         each!(self, s => s.interpolate_rate(t))
+    }
+    fn step_series(&self) -> Option<&super::taylor::Series<N>> {
+        each!(self, s => s.step_series())
     }
     fn restart(&mut self, t: f64, y: [f64; N]) {
         each!(self, s => s.restart(t, y))

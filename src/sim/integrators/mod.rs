@@ -154,6 +154,11 @@ pub trait Stepper<const N: usize> {
     fn interpolate_rate(&self, _t: f64) -> Option<[f64; N]> {
         None
     }
+    /// The Taylor method's series of the last step (in τ = t − t_prev), from which an event may
+    /// form its own polynomial ([`crate::sim::event::Event::series`]); None for other methods.
+    fn step_series(&self) -> Option<&taylor::Series<N>> {
+        None
+    }
     /// Start again at `(t, y)` (after an event ends a phase).
     fn restart(&mut self, t: f64, y: [f64; N]);
     /// Counters so far.

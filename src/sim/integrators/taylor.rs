@@ -71,13 +71,28 @@ pub fn order_for(tol: f64) -> usize {
 }
 
 /// Σ_{j=0}^{k} a_j b_{k−j}, the k-th coefficient of a product of series.
+///
+/// Even and odd j are summed apart: in f64 the loop is bound by the latency of the additions,
+/// and two independent chains halve it (the order of summation is the only change; exact
+/// scalars give the same value).
 #[inline(always)]
 fn product<S: Scalar>(k: usize, a: &[S], b: &[S]) -> S {
-    let mut acc = a[0].clone() * b[k].clone();
-    for j in 1..=k {
-        acc = acc + a[j].clone() * b[k - j].clone();
+    let (a, b) = (&a[..=k], &b[..=k]);
+    let mut even = a[0].clone() * b[k].clone();
+    if k == 0 {
+        return even;
     }
-    acc
+    let mut odd = a[1].clone() * b[k - 1].clone();
+    let mut j = 2;
+    while j < k {
+        even = even + a[j].clone() * b[k - j].clone();
+        odd = odd + a[j + 1].clone() * b[k - j - 1].clone();
+        j += 2;
+    }
+    if j == k {
+        even = even + a[k].clone() * b[0].clone();
+    }
+    even + odd
 }
 
 /// The k-th coefficients (k ≥ 1) of s = sin θ and c = cos θ from the series `d` of θ' and the
@@ -237,6 +252,21 @@ impl<const N: usize> Series<N> {
         }
     }
 
+    /// The state and (sin, cos) of y[0] at τ = h: Horner's rule on every series in one loop
+    /// (the N + 2 chains run side by side; each gives the value of its own [`horner`]).
+    fn end_values(&self, h: f64) -> ([f64; N], (f64, f64)) {
+        let p = self.order;
+        let (mut y, mut s, mut c) = ([0.0; N], 0.0, 0.0);
+        for k in (0..=p).rev() {
+            for i in 0..N {
+                y[i] = y[i] * h + self.y[i][k];
+            }
+            s = s * h + self.sin[k];
+            c = c * h + self.cos[k];
+        }
+        (y, (s, c))
+    }
+
     /// 1/k for k = 0..=p+1 in f64 (for models' [`Ode::taylor_series`]).
     pub fn inv(&self) -> &'static [f64] {
         &INV[..self.order + 2]
@@ -245,10 +275,44 @@ impl<const N: usize> Series<N> {
 
 /// Σ c_k τ^k by Horner's rule.
 #[inline(always)]
-fn horner(c: &[f64], tau: f64) -> f64 {
+pub fn horner(c: &[f64], tau: f64) -> f64 {
     let mut acc = 0.0;
     for &ck in c.iter().rev() {
         acc = acc * tau + ck;
+    }
+    acc
+}
+
+/// (Σ c_k τ^k, Σ k c_k τ^(k−1)): the polynomial and its derivative in one Horner pass.
+#[inline(always)]
+pub fn horner_with_rate(c: &[f64], tau: f64) -> (f64, f64) {
+    let (mut v, mut d) = (0.0, 0.0);
+    for &ck in c.iter().rev() {
+        d = d * tau + v;
+        v = v * tau + ck;
+    }
+    (v, d)
+}
+
+/// The series of the separation factor over a step, Ω² t(τ) − r(τ)², into `out[k]`, k ≤ p =
+/// `out.len() − 1`: `trig` is the series of cos θ (or, in the complement, of sin φ) and `rate`
+/// that of θ̇ (φ̇). The root of this polynomial is the separation event of the Taylor method.
+pub fn separation_factor_series(big_omega2: f64, trig: &[f64], rate: &[f64], out: &mut [f64]) {
+    for (k, o) in out.iter_mut().enumerate() {
+        *o = big_omega2 * trig[k] - square(k, rate);
+    }
+}
+
+/// Σ_{j=0}^{k} r_j r_{k−j}, the k-th coefficient of r², by its symmetry in half the products.
+#[inline(always)]
+fn square(k: usize, r: &[f64]) -> f64 {
+    let mut acc = 0.0;
+    for j in 0..k.div_ceil(2) {
+        acc += r[j] * r[k - j];
+    }
+    acc *= 2.0;
+    if k % 2 == 0 {
+        acc += r[k / 2] * r[k / 2];
     }
     acc
 }
@@ -392,17 +456,18 @@ impl<const N: usize> Taylor<N> {
     /// exp(−0.7/(p−1)); infinite when both orders vanish (e.g. at an equilibrium).
     fn step_size(&self, scale: &[f64; N]) -> f64 {
         let p = self.series.order;
-        let mut h = f64::INFINITY;
+        // The smaller of (tol/e_m)^{1/m} is the smaller of ln(tol/e_m)/m: one exp, no pow.
+        let mut ln_h = f64::INFINITY;
         for m in [p - 1, p] {
             let mut e: f64 = 0.0;
             for i in 0..N {
                 e = e.max(self.series.y[i][m].abs() / scale[i].max(f64::MIN_POSITIVE));
             }
             if e > 0.0 {
-                h = h.min((self.tol / e).powf(1.0 / m as f64));
+                ln_h = ln_h.min((self.tol / e).ln() / m as f64);
             }
         }
-        h * (-0.7 / (p - 1) as f64).exp()
+        (ln_h - 0.7 / (p - 1) as f64).exp()
     }
 }
 
@@ -442,9 +507,7 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
         if h <= 10.0 * f64::EPSILON * t.abs().max(1e-300) || h <= 0.0 {
             return Err(StepError::StepTooSmall { t, h });
         }
-        let s = &self.series;
-        let y1: [f64; N] = std::array::from_fn(|i| horner(&s.y[i][..=p], h));
-        let trig1 = (horner(&s.sin[..=p], h), horner(&s.cos[..=p], h));
+        let (y1, trig1) = self.series.end_values(h);
         if !all_finite(&y1) || !trig1.0.is_finite() || !trig1.1.is_finite() {
             return Err(StepError::NotFinite { t });
         }
@@ -457,6 +520,10 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
     }
 
     fn prepare_dense<S: Ode<N>>(&mut self, _sys: &S) {}
+
+    fn step_series(&self) -> Option<&Series<N>> {
+        Some(&self.series)
+    }
 
     fn interpolate(&self, t: f64) -> [f64; N] {
         let tau = t - self.t_prev;

@@ -1,0 +1,84 @@
+//! `[integrator] order` for `method = "taylor"` (issue 13): accepted and used when in range,
+//! refused with one line `file:line: [section] key: what is wrong; allowed: …` otherwise.
+
+use sliding_ladder::sim::fall;
+use sliding_ladder::sim::integrators::taylor::{order_for, MAX_ORDER, MIN_ORDER};
+use sliding_ladder::sim::scene::parse;
+
+/// A Taylor scene ending at separation; line 12 is the tolerance, line 13 the extra key.
+fn scene(method: &str, extra: &str) -> String {
+    format!(
+        "[ladder]
+mass = 1.0
+half_length = 1.0
+gravity = 9.81
+[start]
+angle = 0.3
+angular_velocity = 0.0
+[contact]
+model = \"rigid\"
+[integrator]
+method = \"{method}\"
+tolerance = 1e-10
+{extra}
+[end]
+at = \"separation\"
+[outputs]
+want = [\"separation_angle\", \"rhs_evals\"]
+"
+    )
+}
+
+#[test]
+fn the_order_is_read_and_used() {
+    let default = parse("scene.toml", &scene("taylor", "")).unwrap();
+    assert_eq!(default.order, None);
+    let given = parse("scene.toml", &scene("taylor", "order = 8")).unwrap();
+    assert_eq!(given.order, Some(8));
+    // The stepper counts one evaluation per order per step: the order shows in the counts.
+    let evals = |sc| {
+        let w = fall::run(sc, fall::MAX_STEPS).unwrap().work.wall;
+        (w.rhs_evals, w.steps)
+    };
+    let (e8, s8) = evals(&given);
+    let (ed, sd) = evals(&default);
+    assert_eq!(e8, 8 * s8);
+    assert_eq!(ed, order_for(1e-10) as u64 * sd);
+    assert_ne!(order_for(1e-10), 8);
+    // Order 8 at the same tolerance needs more steps than the default order 13.
+    assert!(s8 > sd, "order 8: {s8} steps, default: {sd}");
+}
+
+#[test]
+fn a_bad_order_is_one_line_naming_the_key() {
+    let range = format!(
+        "allowed: a whole number in [{MIN_ORDER}, {MAX_ORDER}] (default: from the tolerance, about −ln(tol)/2)"
+    );
+    let cases = [
+        (
+            scene("dop853", "order = 12"),
+            "scene.toml:13: [integrator] order: \"dop853\" takes no order; allowed: order with method = \"taylor\" only".to_string(),
+        ),
+        (
+            scene("taylor", "order = 1"),
+            format!("scene.toml:13: [integrator] order: 1 is out of range; {range}"),
+        ),
+        (
+            scene("taylor", "order = 41"),
+            format!("scene.toml:13: [integrator] order: 41 is out of range; {range}"),
+        ),
+        (
+            scene("taylor", "order = 12.5"),
+            format!("scene.toml:13: [integrator] order: 12.5 is out of range; {range}"),
+        ),
+    ];
+    for (text, expected) in cases {
+        let e = parse("scene.toml", &text).expect_err(&expected);
+        assert_eq!(e.to_string(), expected);
+    }
+    // The edges of the range are accepted.
+    for p in [MIN_ORDER, MAX_ORDER] {
+        let sc = parse("scene.toml", &scene("taylor", &format!("order = {p}"))).unwrap();
+        assert_eq!(sc.order, Some(p));
+    }
+}
