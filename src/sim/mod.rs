@@ -11,8 +11,8 @@
 //! [`penalty_confirm`] (when its separation is believed) and [`penalty_scene`] (scenes with
 //! `contact.model = "penalty"`), [`constrained`] (full coordinates with Lagrange multipliers
 //! and their drift), [`extreme`] (the wall phase at the edges of its domain: equilibrium,
-//! immediate release, any scale), [`complement`] (the wall phase near the floor, in
-//! φ = π/2 − θ).
+//! immediate release, any scale; a tiny start's linear growth in [`lead_in`]), [`complement`]
+//! (the wall phase near the floor, in φ = π/2 − θ).
 
 pub mod complement;
 pub mod constrained;
@@ -23,6 +23,7 @@ pub mod fall;
 mod fall_observer;
 pub mod floor;
 pub mod integrators;
+pub mod lead_in;
 pub mod minimum;
 pub mod outcome;
 pub mod output;

@@ -55,9 +55,9 @@
 //! bounce and the wall force would reach zero at the first rebound).
 
 use super::event::{Direction, Event};
-use super::extreme::linear_lead_in;
 use super::integrators::any::AnyStepper;
 use super::integrators::{order, Control, Ode, Stats, Stepper};
+use super::lead_in::linear_lead_in;
 use super::penalty_confirm::confirm_separation;
 pub use super::penalty_start::OMEGA2;
 use super::penalty_start::{rigid_forces, slow_forces};
