@@ -5,12 +5,12 @@
 use super::complement;
 use super::event::{Direction, Event};
 use super::exact::PhaseOne;
+pub use super::fall_observer::momentum_balance;
 use super::fall_observer::{rigid_momentum_x, TraceObserver, SAMPLES_PER_STEP};
 use super::floor;
 use super::integrators::any::AnyStepper;
 use super::integrators::taylor;
 use super::integrators::Stepper;
-pub use super::fall_observer::momentum_balance;
 pub use super::outcome::{FlatState, FloorReport, Outcome, Plan, Sample, SeparationState, Work};
 use super::rigid::{self, Ladder, WallPhase};
 use super::run::{integrate_phase, Observer, RunError};

@@ -219,7 +219,8 @@ impl<const N: usize> Radau5<N> {
             }
         }
         self.lu_h = 0.0;
-        let ok = lu_factor(&mut self.lu, &mut self.piv, n3) && lu_factor(&mut self.e1, &mut self.piv1, N);
+        let ok = lu_factor(&mut self.lu, &mut self.piv, n3)
+            && lu_factor(&mut self.e1, &mut self.piv1, N);
         if ok {
             self.lu_h = h;
         }
@@ -382,7 +383,11 @@ impl<const N: usize> Stepper<N> for Radau5<N> {
                 self.t = if last { t_stop } else { t + h };
                 self.y = y1;
                 if !last {
-                    self.h = if keep_jac && (1.0..=1.2).contains(&grow) { h } else { h_new };
+                    self.h = if keep_jac && (1.0..=1.2).contains(&grow) {
+                        h
+                    } else {
+                        h_new
+                    };
                 }
                 self.jac_fresh = false;
                 if !keep_jac {
