@@ -16,6 +16,7 @@ use super::complement;
 use super::event::{Direction, Event};
 use super::integrators::any::AnyStepper;
 use super::integrators::{Control, Stats, Stepper};
+pub use super::lead_in::{linear_lead_in, LINEAR_AMPLITUDE};
 use super::outcome::SeparationState;
 use super::rigid::{separation_factor, Ladder, WallPhase};
 use super::run::{integrate_phase, Observer, RunError};
@@ -124,8 +125,6 @@ pub fn wall_release(
         ))),
     }
 }
-
-pub use super::lead_in::{linear_lead_in, LINEAR_AMPLITUDE};
 
 /// An observer that sees times shifted by `.1` (a phase integrated in time since a lead-in).
 pub struct Shifted<'a, O>(pub &'a mut O, pub f64);

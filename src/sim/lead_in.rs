@@ -1,7 +1,7 @@
-//! The linear lead-in of a tiny start: the exact solution of the linearised wall phase carries
-//! it to an amplitude an integrator can measure. Used by the rigid phases
-//! ([`super::extreme`]) and the penalty model ([`super::penalty`]); here on its own, with no
-//! imports, so that both may use it without importing each other.
+//! The linearised start: from a tiny or subnormal angle the wall phase is θ̈ = Ω² θ to f64
+//! precision, solved in closed form up to an amplitude where integrators can take over. Its own
+//! module with no imports, so that both the rigid phases ([`super::extreme`]) and the penalty
+//! model ([`super::penalty`]) can use it without importing each other.
 
 /// Amplitude below which the wall phase is linear to f64 precision: sin θ = θ (1 − θ²/6 + …)
 /// and θ²/6 ≤ 1.5e-19 < u/700 for |θ| ≤ 2⁻³⁰, so (5) is θ̈ = Ω² θ there.

@@ -6,7 +6,8 @@
 //! scene's own units and the conversions of a run),
 //! [`rigid`] (phase 1, the note's sec. 2.1), [`floor`] (phase 2, beyond the note), [`exact`]
 //! (reference), [`integrators`], [`event`] (crossings refined on the interpolant), [`run`] (the
-//! phase driver), [`fall`] (a whole scene; what it watches in `fall_observer`); the `ladder simulate` command lives in `crate::cli`.
+//! phase driver), [`fall`] (a whole scene; what it watches in `fall_observer`); the `ladder
+//! simulate` command lives in `crate::cli`.
 //! Stiff and extreme cases: [`penalty`] (the ladder on one-sided springs, beyond the note),
 //! [`penalty_confirm`] (when its separation is believed) and [`penalty_scene`] (scenes with
 //! `contact.model = "penalty"`), [`constrained`] (full coordinates with Lagrange multipliers
