@@ -12,7 +12,7 @@ use sliding_ladder::sim::penalty_confirm::rigid_separation_angle;
 use sliding_ladder::sim::scene::parse;
 use std::time::Instant;
 
-const RIGID: &str = "[ladder]\nmass = 1.0\nhalf_length = 1.0\ngravity = 1.0\n[start]\nangle = 0.3\nangular_velocity = 0.0\n[integrator]\nmethod = \"radau5\"\ntolerance = TOL\n[end]\nat = \"separation\"\n[outputs]\nwant = [\"separation_angle\"]\n";
+const RIGID: &str = "[ladder]\nmass = 1.0\nhalf_length = 1.0\ngravity = 1.0\n[start]\nangle = 0.3\nangular_velocity = 0.0\n[contact]\nmodel = \"rigid\"\n[integrator]\nmethod = \"radau5\"\ntolerance = TOL\n[end]\nat = \"separation\"\n[outputs]\nwant = [\"separation_angle\"]\n";
 
 fn median(mut v: Vec<f64>) -> f64 {
     v.sort_by(f64::total_cmp);
