@@ -10,7 +10,7 @@
 //! the five counts is nonzero). `--only I` runs scene I alone and prints it; `--out DIR` writes
 //! every scene that is not fine to DIR/scene-I.toml, ready for `ladder simulate`;
 //! `--work-cap W` and `--contact MODEL` narrow the run, counting what they leave out. CI runs
-//! `--scenes 10000 --seed 1 --work-cap 1e5 --contact rigid --budget 30` (README says why).
+//! `--scenes 10000 --seed 1 --work-cap 1e5 --budget 30` (README says why; both contact models).
 
 use clap::Parser;
 use sliding_ladder::cli::simulate::{files, to_json};

@@ -6,7 +6,6 @@
 //! here are generic over the scalar type like the note's own, and are checked the same way against
 //! a three-particle model of the free ladder ([`as_system`]) and by automatic differentiation.
 
-use super::energy::moment_of_inertia_cm;
 use super::{Ladder, State};
 use crate::scalar::{sq, Scalar};
 use crate::system::{Particle, System};
@@ -161,9 +160,4 @@ pub fn lagrange_residuals<T: Scalar>(l: &Ladder<T>, s: &State<T>, x: &Slide<T>) 
     ))
     .1;
     (T::split(p_theta).1 - d_theta, T::split(p_x).1 - d_x)
-}
-
-/// The moment of inertia the θ equation carries, m l² (sin²θ + 1/3) = I_cm + m l² sin²θ.
-pub fn effective_inertia<T: Scalar>(l: &Ladder<T>, s: &State<T>) -> T {
-    moment_of_inertia_cm(l) + l.m.clone() * sq(&l.l) * sq(&s.sin)
 }
