@@ -161,6 +161,11 @@ fn cases() -> Vec<(&'static str, String, String)> {
             s("scene.toml:10: [contact] stiffness: only for model = \"penalty\"; allowed: no stiffness or damping with model = \"rigid\""),
         ),
         (
+            "no start angle",
+            with("angle = 0.3\n", ""),
+            s("scene.toml:5: [start]: no start angle; allowed: one of angle (θ0 in [0, π/2) rad) or angle_from_floor (π/2 − θ0 in (0, π/2] rad)"),
+        ),
+        (
             "penalty springs too soft",
             PENALTY.replace("stiffness = 9.81e6", "stiffness = 19.62"),
             s("scene.toml:10: [contact] stiffness: k l/(m g) = 2e0 is too soft: the springs sink by about m g/k = 0.500 l and their bounce lifts the foot off the floor before the wall lets go, which the penalty model does not follow; allowed: k l/(m g) ≥ 5 (k ≥ 4.9050e1 N/m)"),

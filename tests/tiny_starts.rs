@@ -101,3 +101,23 @@ fn an_unreached_end_is_reported() {
     let why = sliding_ladder::sim::outcome::unreached_end(&sc, &o).expect("separation missing");
     assert!(why.contains("separation"), "{why}");
 }
+
+/// The trajectory of a tiny start keeps its dense samples after the lead-in (the phase runs
+/// through `extreme::Shifted`, which must pass the observer's samples a step on): four inside
+/// each step (the last, cut at the event, may keep fewer) and its end, as from an ordinary start.
+#[test]
+fn a_tiny_start_traces_every_step_densely() {
+    for angle in ["1e-30", "0.3"] {
+        let text = scene_text("dop853", "tolerance = 1e-10", angle, "0.0", "separation").replace(
+            "want = [\"separation_angle\", \"separation_time\"]",
+            "want = [\"trajectory\"]",
+        );
+        let sc = scene::parse("tiny.toml", &text).unwrap();
+        let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+        let (rows, steps) = (o.trace.unwrap().len() as u64, o.work.wall.steps);
+        assert!(
+            rows >= 4 * steps,
+            "θ0 = {angle}: {rows} rows for {steps} steps"
+        );
+    }
+}

@@ -1,0 +1,110 @@
+//! `sim::run::integrate_phase` on toy systems (mutation testing of `src/sim` found these gaps):
+//! a phase ends at the earliest of its events when several cross within one step (the list
+//! order must not matter), a system that sets no step limit (`Ode::max_step`'s default) lets an
+//! adaptive method take steps as long as its error allows, and the explicit methods' stage
+//! times are right (the ladder's systems do not depend on t, so only a system that does sees
+//! them).
+
+use num_dual::DualNum;
+use sliding_ladder::sim::event::{Direction, Event};
+use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::{Control, Ode, Stepper};
+use sliding_ladder::sim::run::{integrate_phase, Observer};
+
+/// ẏ = 1: y = t.
+struct Clock;
+
+impl Ode<1> for Clock {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 1]) -> [D; 1] {
+        [y[0] * 0.0 + 1.0]
+    }
+}
+
+/// y rises through `self.0`.
+struct Reaches(f64);
+
+impl Event<1> for Reaches {
+    fn value(&self, _t: f64, y: &[f64; 1]) -> f64 {
+        y[0] - self.0
+    }
+    fn direction(&self) -> Direction {
+        Direction::Rising
+    }
+}
+
+#[test]
+fn two_events_in_one_step_end_the_phase_at_the_earlier() {
+    let (late, early) = (Reaches(0.7), Reaches(0.3));
+    for (events, index) in [([&late as &dyn Event<1>, &early], 1), ([&early, &late], 0)] {
+        // One step of 1 covers both crossings.
+        let mut stepper = AnyStepper::new("rk4", Control::Fixed(1.0), 0.0, [0.0]).unwrap();
+        let end = integrate_phase(&Clock, &mut stepper, &events, 10.0, 100, &mut ()).unwrap();
+        assert_eq!(end.event, Some(index));
+        assert!((end.t - 0.3).abs() <= 4.0 * f64::EPSILON, "{}", end.t);
+    }
+}
+
+/// dopri5 is exact on ẏ = 1 (from y = 1: the default error scale is |y|), so its steps grow by its largest factor each time (10): from
+/// t = 0 to 1e6 that is a few dozen steps, where any finite default limit L would need 1e6/L.
+#[test]
+fn a_system_without_a_step_limit_is_not_limited() {
+    let mut stepper = AnyStepper::new("dopri5", Control::Tolerance(1e-10), 0.0, [1.0]).unwrap();
+    let never = Reaches(2e6);
+    let events = [&never as &dyn Event<1>];
+    let end = integrate_phase(&Clock, &mut stepper, &events, 1e6, 1000, &mut ()).unwrap();
+    assert_eq!(end.event, None);
+    assert_eq!(end.t, 1e6);
+    assert!(
+        stepper.stats().steps < 100,
+        "{} steps",
+        stepper.stats().steps
+    );
+}
+
+/// ẏ = cos t: the right-hand side depends on t, which none of the ladder's systems does, so the
+/// stage times of the explicit methods are seen only here. Each adaptive method (and its dense
+/// output, sampled inside every step) follows y = sin t within its error model 10 N τ.
+struct Wave;
+
+impl Ode<1> for Wave {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, t: f64, y: &[D; 1]) -> [D; 1] {
+        [y[0] * 0.0 + t.cos()]
+    }
+    fn scale(&self, _y: &[f64; 1]) -> [f64; 1] {
+        [1.0]
+    }
+}
+
+/// Records the largest |y − sin t| over the samples it is shown.
+struct Worst(f64, u64);
+
+impl Observer<1> for Worst {
+    fn samples_per_step(&self) -> usize {
+        3
+    }
+    fn observe(&mut self, t: f64, y: &[f64; 1]) {
+        self.0 = self.0.max((y[0] - t.sin()).abs());
+        self.1 += 1;
+    }
+}
+
+#[test]
+fn the_stage_times_of_each_method_are_right() {
+    let tol = 1e-10;
+    for method in ["dopri5", "dop853"] {
+        let mut stepper = AnyStepper::new(method, Control::Tolerance(tol), 0.0, [0.0]).unwrap();
+        let mut worst = Worst(0.0, 0);
+        integrate_phase(&Wave, &mut stepper, &[], 10.0, 100_000, &mut worst).unwrap();
+        let n = stepper.stats().steps as f64;
+        assert!(
+            worst.1 as f64 >= 3.0 * n,
+            "{method}: dense samples {}",
+            worst.1
+        );
+        assert!(
+            worst.0 <= 10.0 * n * tol,
+            "{method}: {:e} over {n} steps",
+            worst.0
+        );
+    }
+}
