@@ -19,6 +19,7 @@ fn the_draw_covers_the_domain_and_every_scene_is_read_as_written() {
     assert_ne!(draw(7, 5), draw(8, 5));
     let (mut methods, mut ends, mut outputs) = (BTreeSet::new(), BTreeSet::new(), BTreeSet::new());
     let (mut penalty, mut zero, mut subnormal, mut near_flat, mut pushed) = (0, 0, 0, 0, 0);
+    let (mut from_floor, mut orders) = (0, 0);
     for i in 0..3000 {
         let text = draw(7, i);
         match parse("drawn.toml", &text) {
@@ -32,11 +33,19 @@ fn the_draw_covers_the_domain_and_every_scene_is_read_as_written() {
                 near_flat += usize::from(s.theta0 > FRAC_PI_2 - 1e-3);
                 pushed += usize::from(s.rate0 > 0.0);
                 // The numbers are read back as drawn (shortest round-trip form).
-                let angle = text
-                    .lines()
-                    .find_map(|l| l.strip_prefix("angle = "))
-                    .unwrap();
-                assert_eq!(angle.parse::<f64>().unwrap(), s.theta0);
+                let value = |key: &str| {
+                    text.lines()
+                        .find_map(|l| l.strip_prefix(key))
+                        .map(|v| v.parse::<f64>().unwrap())
+                };
+                match value("angle = ") {
+                    Some(theta0) => assert_eq!(theta0, s.theta0),
+                    None => {
+                        assert_eq!(value("angle_from_floor = "), s.phi0);
+                        from_floor += 1;
+                    }
+                }
+                orders += usize::from(s.order.is_some());
             }
             // A refusal names a field: never a syntax error of the drawn text.
             Err(e) => assert!(
@@ -58,6 +67,8 @@ fn the_draw_covers_the_domain_and_every_scene_is_read_as_written() {
         ("subnormal θ0", subnormal),
         ("θ0 near π/2", near_flat),
         ("pushed", pushed),
+        ("θ0 from the floor", from_floor),
+        ("Taylor's order", orders),
     ] {
         assert!(n >= 30, "{what}: {n} of 3000");
     }
