@@ -180,8 +180,9 @@ fn the_campaign_findings_f1_and_f4_separate_where_the_rigid_ladder_does() {
     }
 }
 
-/// `ladder simulate` on a scene whose contact the integration does not resolve: exit 2, one
-/// line on stderr saying so, nothing on stdout.
+/// `ladder simulate` on a scene whose contact the integration does not resolve (dopri5 at 1e-6
+/// against a wall force of 7e-10 m g after the lead-in): refused up front (`sim::penalty_plan`),
+/// exit 2, one line on stderr naming the tolerance, nothing on stdout.
 #[test]
 fn ladder_simulate_exits_2_on_an_unresolved_contact() {
     let dir = std::env::temp_dir().join(format!("ladder-penalty-confirm-{}", std::process::id()));
@@ -198,7 +199,9 @@ fn ladder_simulate_exits_2_on_an_unresolved_contact() {
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(
-        err.contains("the penalty contact was not resolved"),
+        err.contains(
+            ":14: [integrator] tolerance: the rigid wall force where the integration starts"
+        ) && err.contains("no more than the integration's force error per step"),
         "{err}"
     );
     assert!(out.stdout.is_empty());
@@ -223,4 +226,37 @@ fn the_judge_holds_a_penalty_separation_to_the_contacts_error_model() {
         let problems = out_of_tolerance(&sc, &moved);
         assert_eq!(!problems.is_empty(), flagged, "{factor}: {problems:?}");
     }
+}
+
+/// F3 (penalty starts near π/2, campaign seed 1): scenes 69 (κ = 37 at the last float below
+/// π/2), 129 (κ = 1.3e6 at π/2 − 1.4e-9), 418 (κ = 1.6e6 at π/2 − 2.1e-7: it "separated" at π/2 + 3.3e-7, inside the model's
+/// error but past flat) and 514 (κ = 1.9e4 at π/2 − 2.1e-4) are refused up front, exit 2 naming
+/// the stiffness and why: the model's own error exceeds the rigid separation's distance from
+/// flat. Stiffer springs from 1e-7 below flat run and separate between the start and flat,
+/// within the judge's error model.
+#[test]
+fn penalty_starts_near_the_floor_are_refused_or_right() {
+    use sliding_ladder::report::campaign::draw;
+    for i in [69, 129, 418, 514] {
+        let e = parse("s.toml", &draw(1, i)).expect_err("refused");
+        assert_eq!(e.field, "contact.stiffness", "scene {i}");
+        assert!(
+            e.to_string()
+                .contains("could not tell separation from flat"),
+            "{e}"
+        );
+    }
+    let theta0 = FRAC_PI_2 - 1e-7;
+    let text = scene(
+        &format!("{theta0:?}"),
+        "0.0",
+        ("1e12", "0.0"),
+        "radau5",
+        "1e-12",
+    );
+    let sc = parse("s.toml", &text).expect("runs");
+    let o = fall::run(&sc, fall::MAX_STEPS).expect("separates");
+    let s = o.separation.expect("a separation");
+    assert!(out_of_tolerance(&sc, &o).is_empty());
+    assert!(s.angle > theta0 && s.angle < FRAC_PI_2, "{}", s.angle);
 }

@@ -34,6 +34,7 @@
 use super::exact::{flat::floor_duration, PhaseOne};
 use super::integrators::Control;
 use super::penalty::Contact;
+use super::penalty_plan::{penalty_refusal, PenaltyRefusal};
 use super::rigid::Ladder;
 use super::scene_errors::{Ctx, SceneError};
 use super::scene_parts::{ContactModel, End, RawIntegrator, MAX_STEPS};
@@ -182,6 +183,32 @@ pub(super) fn check_work(
                 ));
             }
             Control::Tolerance(_) => {}
+        }
+        // Separations the run could not tell (`super::penalty_plan`).
+        let in_units = match control {
+            Control::Fixed(h) => Control::Fixed(h / unit),
+            c => c,
+        };
+        match penalty_refusal(kappa, (start.0, start.1 * unit), method, in_units) {
+            Some(PenaltyRefusal::Soft(m)) => {
+                let line = cx
+                    .text
+                    .lines()
+                    .position(|l| l.trim_start().starts_with("stiffness"))
+                    .map_or(1, |i| i + 1);
+                return Err(cx.err_at_line(line, "contact.stiffness", m));
+            }
+            Some(PenaltyRefusal::Unresolved(m)) => {
+                let (span, field) = match control {
+                    Control::Fixed(_) => (step_span, "integrator.step"),
+                    _ => (
+                        i.tolerance.as_ref().map(|t| t.span()),
+                        "integrator.tolerance",
+                    ),
+                };
+                return Err(cx.err(span, field, m));
+            }
+            None => {}
         }
     }
     let Control::Fixed(h) = control else {
