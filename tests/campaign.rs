@@ -198,8 +198,10 @@ fn the_contact_filter_leaves_out_exactly_one_model() {
         rigid += usize::from(!is_penalty);
         penalty += usize::from(is_penalty);
     }
+    // About 1 in 4 scenes is drawn with penalty springs; the plan refuses most of them (94 of
+    // 1000 are accepted: a floor, so that the filter is seen to keep enough of each model).
     assert!(
-        rigid > 500 && penalty > 100,
+        rigid > 500 && penalty > 50,
         "{rigid} rigid, {penalty} penalty"
     );
     // Scene 857 (dop853 at a tolerance of 2.8e-16 on stiff springs, finding F6) is now refused
