@@ -46,7 +46,7 @@ pub const MAX_ORDER: usize = 40;
 pub const MIN_ORDER: usize = 2;
 
 /// 1/k for k = 0..=MAX_ORDER+1 (entry 0 unused), so the f64 recursions multiply, never divide.
-pub(super) const INV: [f64; MAX_ORDER + 2] = {
+const INV: [f64; MAX_ORDER + 2] = {
     let mut t = [0.0; MAX_ORDER + 2];
     let mut k = 1;
     while k < MAX_ORDER + 2 {
@@ -327,7 +327,21 @@ fn square(k: usize, r: &[f64]) -> f64 {
 /// The wall phase's series in f64, for `WallPhase::taylor_series`: [`wall_series`]'s sums in
 /// its order by the fast path [`super::taylor_f64::wall_series`] (same bits).
 pub fn wall_series_f64(big_omega2: f64, s: &mut Series<2>) {
-    super::taylor_f64::wall_series(false, big_omega2, s);
+    fast_wall_series(false, big_omega2, s);
+}
+
+fn fast_wall_series(complement: bool, big_omega2: f64, s: &mut Series<2>) {
+    let p = s.order;
+    let [angle, rate] = &mut s.y;
+    super::taylor_f64::wall_series(
+        complement,
+        big_omega2,
+        &INV[..p + 2],
+        &mut angle[..=p],
+        &mut rate[..=p],
+        &mut s.sin[..=p],
+        &mut s.cos[..=p],
+    );
 }
 
 /// Taylor coefficients of the wall phase in the complement φ = π/2 − θ, φ̈ = −Ω² cos φ (eq. (5)
@@ -358,7 +372,7 @@ pub fn complement_series<S: Scalar>(
 /// The complement wall phase's series in f64, for `ComplementWall::taylor_series`: as
 /// [`wall_series_f64`], [`complement_series`]'s sums by the fast path (same bits).
 pub fn complement_series_f64(big_omega2: f64, s: &mut Series<2>) {
-    super::taylor_f64::wall_series(true, big_omega2, s);
+    fast_wall_series(true, big_omega2, s);
 }
 
 /// The floor phase's series in f64, for `FloorPhase::taylor_series`

@@ -5,14 +5,10 @@
 //! **Why a second copy.** Each order k needs the convolutions Σ_j θ̇_j c_{k−1−j} and
 //! Σ_j θ̇_j s_{k−1−j}; the generic code indexes one factor backwards, with a bounds check per
 //! term, and was 58 % of the instructions of a whole separation solve at tolerance 1e-12
-//! (callgrind). Here sin and cos are also stored reversed (`rev[M − i]` = coefficient i), so
+//! (callgrind). Here sin and cos are also stored reversed (`rev[p − i]` = coefficient i), so
 //! both factors of every convolution are read forwards in pairs, without bounds checks, and
 //! the two convolutions share the loads of θ̇. The recursion is bound by latency (order k needs
 //! order k − 1), so the newest terms are summed last (see [`super::taylor::product`]).
-
-use super::taylor::{Series, INV, MAX_ORDER};
-
-const M: usize = MAX_ORDER;
 
 /// Σ_j a_j b_j and Σ_j a_j c_j (j < n = `a.len()`) in the order of
 /// [`super::taylor::product`] when `b` and `c` hold the second factors reversed: the inner
@@ -46,30 +42,45 @@ fn dot2(a: &[f64], b: &[f64], c: &[f64]) -> (f64, f64) {
     )
 }
 
-/// The wall phase's series: θ̈ = Ω² sin θ (eq. (5)), or in the complement φ̈ = −Ω² cos φ.
-/// Entry and return as [`super::taylor::wall_series_f64`].
-pub fn wall_series(complement: bool, big_omega2: f64, s: &mut Series<2>) {
-    let p = s.order;
-    let (mut srev, mut crev) = ([0.0; M + 1], [0.0; M + 1]);
-    srev[M] = s.sin[0];
-    crev[M] = s.cos[0];
-    let [angle, rate] = &mut s.y;
+/// Longest series the fast path takes (orders 0..=63; the stepper stores at most 41).
+const CAP: usize = 64;
+
+/// The wall phase's series: θ̈ = Ω² sin θ (eq. (5)), or in the complement φ̈ = −Ω² cos φ, to
+/// order p = `angle.len() − 1` ≤ 63. On entry entry 0 of every slice holds the start (sin and
+/// cos of the angle in `sin[0]`, `cos[0]`); `inv[k]` = 1/k for k ≤ p + 1. Same conventions as
+/// [`super::taylor::wall_series`], which this module does not import (no cycle: the generic
+/// module calls this one).
+pub fn wall_series(
+    complement: bool,
+    big_omega2: f64,
+    inv: &[f64],
+    angle: &mut [f64],
+    rate: &mut [f64],
+    sin: &mut [f64],
+    cos: &mut [f64],
+) {
+    let p = angle.len() - 1;
+    assert!(p < CAP && rate.len() > p && sin.len() > p && cos.len() > p && inv.len() > p + 1);
+    // rev[p − i] = coefficient i, so the window of order k is rev[p + 1 − k ..= p].
+    let (mut srev, mut crev) = ([0.0; CAP], [0.0; CAP]);
+    srev[p] = sin[0];
+    crev[p] = cos[0];
     for k in 0..=p {
         if k > 0 {
             // k s_k = Σ_j θ̇_j c_{k−1−j},  k c_k = −Σ_j θ̇_j s_{k−1−j}.
-            let w = M + 1 - k;
-            let (sc, ss) = dot2(&rate[..k], &crev[w..], &srev[w..]);
-            let (sk, ck) = (sc * INV[k], -(ss * INV[k]));
-            (s.sin[k], s.cos[k]) = (sk, ck);
-            (srev[M - k], crev[M - k]) = (sk, ck);
+            let w = p + 1 - k;
+            let (sc, ss) = dot2(&rate[..k], &crev[w..=p], &srev[w..=p]);
+            let (sk, ck) = (sc * inv[k], -(ss * inv[k]));
+            (sin[k], cos[k]) = (sk, ck);
+            (srev[p - k], crev[p - k]) = (sk, ck);
         }
         if k < p {
-            angle[k + 1] = rate[k] * INV[k + 1];
-            let w = big_omega2 * INV[k + 1];
+            let w = big_omega2 * inv[k + 1];
+            angle[k + 1] = rate[k] * inv[k + 1];
             rate[k + 1] = if complement {
-                -(s.cos[k] * w)
+                -(cos[k] * w)
             } else {
-                s.sin[k] * w
+                sin[k] * w
             };
         }
     }
