@@ -3,34 +3,13 @@
 
 mod common;
 
+use common::{with, BASE};
 use proptest::prelude::*;
-
-const BASE: &str = "[ladder]
-mass = 1.0
-half_length = 1.0
-gravity = 9.81
-[start]
-angle = 0.3
-angular_velocity = 0.0
-[contact]
-model = \"rigid\"
-[integrator]
-method = \"dop853\"
-tolerance = 1e-12
-[end]
-at = \"separation\"
-[outputs]
-want = [\"separation_angle\", \"trajectory\"]
-";
 
 /// Run `ladder simulate` on `text`; returns (exit code, stderr, files in the out dir).
 fn simulate(name: &str, text: Option<&str>) -> (i32, String, usize) {
     let run = common::simulate_scene("cli", name, text, &[]);
     (run.code, run.stderr, run.files)
-}
-
-fn with(line: &str, replacement: &str) -> String {
-    common::replace_line(BASE, line, replacement)
 }
 
 #[test]
@@ -282,24 +261,8 @@ fn every_bad_scene_gets_one_line_exit_2_and_no_file() {
         ),
     ];
     for (case, text, line, field, words) in cases {
-        let (code, err, files) = simulate(&case.replace(' ', "-"), Some(&text));
-        assert_eq!(code, 2, "{case}: exit {code}, stderr {err}");
-        assert_eq!(err.trim_end().lines().count(), 1, "{case}: {err}");
-        assert!(err.contains("scene.toml"), "{case}: no file name in {err}");
-        if let Some(l) = line {
-            assert!(
-                err.contains(&format!("scene.toml:{l}: ")),
-                "{case}: line {l} not in {err}"
-            );
-        }
-        // Fields are shown as `[section] key` (or `[section]`).
-        let place = match field.split_once('.') {
-            Some((section, key)) => format!("[{section}] {key}"),
-            None => field.to_string(),
-        };
-        assert!(err.contains(&place), "{case}: field {place} not in {err}");
-        assert!(err.contains(words), "{case}: '{words}' not in {err}");
-        assert_eq!(files, 0, "{case}: output written");
+        let run = common::simulate_scene("cli", &case.replace(' ', "-"), Some(&text), &[]);
+        common::assert_refused(case, &run, line, field, words);
     }
 }
 

@@ -3,34 +3,11 @@
 //! here by hand from the scene text (line numbers counted in `BASE`); the command-line side
 //! (exit 2, nothing on stdout or in `--out`) is held in `cli_scene_errors.rs`.
 
+mod common;
+
+use common::{with, BASE};
 use sliding_ladder::sim::output::Output;
 use sliding_ladder::sim::scene::{load, parse};
-
-/// The valid scene the cases edit. Lines: 1 [ladder], 2 mass, 3 half_length, 4 gravity,
-/// 5 [start], 6 angle, 7 angular_velocity, 8 [contact], 9 model, 10 [integrator], 11 method,
-/// 12 tolerance, 13 [end], 14 at, 15 [outputs], 16 want.
-const BASE: &str = "[ladder]
-mass = 1.0
-half_length = 1.0
-gravity = 9.81
-[start]
-angle = 0.3
-angular_velocity = 0.0
-[contact]
-model = \"rigid\"
-[integrator]
-method = \"dop853\"
-tolerance = 1e-12
-[end]
-at = \"separation\"
-[outputs]
-want = [\"separation_angle\", \"trajectory\"]
-";
-
-fn with(old: &str, new: &str) -> String {
-    assert!(BASE.contains(old), "{old} not in the base scene");
-    BASE.replacen(old, new, 1)
-}
 
 const LADDER_RANGE: &str = "a number > 0 (kg) in [1e-30, 1e30]";
 

@@ -15,6 +15,8 @@
 //!
 //! `PROPTEST_CASES` sets the number of random scenes (default 64, about a second in release).
 
+mod common;
+
 use proptest::prelude::*;
 use sliding_ladder::sim::fall::{self, Outcome};
 use sliding_ladder::sim::integrators::{is_adaptive, Control, RIGID_METHODS};
@@ -149,24 +151,25 @@ fn the_sweep_checks_can_fail() {
     }
 }
 
-const SLOW: &str = "[ladder]
-mass = 1e10
-half_length = 1e28
-gravity = 1e-5
-[start]
-angle = 0.3
-angular_velocity = 0.0
-[contact]
-model = \"rigid\"
-[integrator]
-method = \"rk4\"
-STEP
-[end]
-at = \"time\"
-TIME
-[outputs]
-want = [\"final_state\"]
-";
+/// The base scene at m = 1e10 kg, l = 1e28 m, g = 1e-5 m/s², with rk4 to an end time (`STEP` and
+/// `TIME` stand for the step and the end time).
+fn slow() -> String {
+    common::edited(
+        common::BASE,
+        &[
+            (
+                "mass = 1.0\nhalf_length = 1.0\ngravity = 9.81",
+                "mass = 1e10\nhalf_length = 1e28\ngravity = 1e-5",
+            ),
+            (
+                "method = \"dop853\"\ntolerance = 1e-12",
+                "method = \"rk4\"\nSTEP",
+            ),
+            ("at = \"separation\"", "at = \"time\"\nTIME"),
+            ("\"separation_angle\", \"trajectory\"", "\"final_state\""),
+        ],
+    )
+}
 
 /// Steps and end times are limited in units of √(l/g) and may be given in them: a ladder with
 /// √(l/g) = 1e16.5 s can be stepped and run to 2.5 time units (into the floor phase) either way, and gives the same
@@ -175,7 +178,7 @@ want = [\"final_state\"]
 fn steps_and_end_times_in_the_scenes_own_units() {
     let unit = (1e28f64 / 1e-5).sqrt();
     let run = |step: &str, time: &str| {
-        let text = SLOW.replace("STEP", step).replace("TIME", time);
+        let text = slow().replace("STEP", step).replace("TIME", time);
         let sc = sliding_ladder::sim::scene::parse("slow.toml", &text).expect("valid");
         fall::run(&sc, fall::MAX_STEPS).expect("runs").last
     };
@@ -189,7 +192,7 @@ fn steps_and_end_times_in_the_scenes_own_units() {
     assert!(scaled.1 > 0.3, "the ladder fell: {scaled:?}");
     let err = sliding_ladder::sim::scene::parse(
         "slow.toml",
-        &SLOW
+        &slow()
             .replace("STEP", "step = 1.0")
             .replace("TIME", "scaled_time = 2.5"),
     )
@@ -201,7 +204,7 @@ fn steps_and_end_times_in_the_scenes_own_units() {
     );
     let both = sliding_ladder::sim::scene::parse(
         "slow.toml",
-        &SLOW
+        &slow()
             .replace("STEP", "scaled_step = 1e-2")
             .replace("TIME", "time = 1.0\nscaled_time = 2.5"),
     )

@@ -4,30 +4,9 @@
 
 mod common;
 
-use common::replace_line as with;
+use common::{replace_line as with, PENALTY};
 use serde_json::Value;
 use std::process::Command;
-
-/// A valid penalty scene; line numbers below refer to it.
-const PENALTY: &str = "[ladder]
-mass = 1.0
-half_length = 1.0
-gravity = 9.81
-[start]
-angle = 0.3
-angular_velocity = 0.0
-[contact]
-model = \"penalty\"
-stiffness = 9.81e6
-damping = 0.0
-[integrator]
-method = \"radau5\"
-tolerance = 1e-10
-[end]
-at = \"separation\"
-[outputs]
-want = [\"separation_angle\", \"separation_time\"]
-";
 
 /// `ladder simulate SCENE --json --out DIR` on `text`: (exit code, stdout, stderr, files).
 fn simulate(name: &str, text: &str) -> (i32, String, String, usize) {
@@ -209,22 +188,8 @@ fn every_bad_penalty_scene_gets_one_line_exit_2_and_no_file() {
         ),
     ];
     for (case, text, line, field, words) in cases {
-        let (code, out, err, files) = simulate(case, &text);
-        assert_eq!(code, 2, "{case}: exit {code}, stderr {err}");
-        assert_eq!(err.lines().count(), 1, "{case}: {err}");
-        assert!(
-            err.contains(&format!("scene.toml:{line}: ")),
-            "{case}: line {line} not in {err}"
-        );
-        // Fields are shown as `[section] key` (or `[section]`).
-        let place = match field.split_once('.') {
-            Some((section, key)) => format!("[{section}] {key}"),
-            None => field.to_string(),
-        };
-        assert!(err.contains(&place), "{case}: field {place} not in {err}");
-        assert!(err.contains(words), "{case}: '{words}' not in {err}");
-        assert!(out.is_empty(), "{case}: stdout {out}");
-        assert_eq!(files, 0, "{case}: output written");
+        let run = common::simulate_scene("stab", case, Some(&text), &["--json"]);
+        common::assert_refused(case, &run, Some(line), field, words);
     }
 }
 

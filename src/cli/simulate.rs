@@ -1,6 +1,7 @@
 //! `ladder simulate SCENE`: run a scene and print (or write) the outputs it asks for. Exit
-//! codes: 0 all good, 1 a check failed (e.g. lift-off), 2 bad input (one line on stderr, nothing
-//! written).
+//! codes: 0 all good, 1 a check failed (e.g. lift-off) or the run stopped short of the end the
+//! scene asks for (the step limit included; stderr says why and the JSON has `incomplete`),
+//! 2 bad input or a request the run cannot meet (one line on stderr, nothing written).
 
 use crate::report::digits::sig;
 use crate::report::files::{write_all, OutFile};
@@ -47,10 +48,11 @@ pub fn simulate(scene_path: &Path, json: bool, out: Option<&Path>) -> ExitCode {
         Ok(o) => o,
         Err(e) => {
             eprintln!("error: {}: {e}", scene.file);
-            return ExitCode::from(match e {
-                RunError::LiftOff { .. } => 1,
-                _ => 2,
-            });
+            if json && matches!(e, RunError::TooManySteps { .. }) {
+                let v = json!({ "incomplete": e.to_string() });
+                println!("{}", serde_json::to_string_pretty(&v).unwrap_or_default());
+            }
+            return ExitCode::from(run_error_code(&e));
         }
     };
     // A run that stops short of the end the scene asked for must say so (exit 1, stderr, JSON).
@@ -87,6 +89,16 @@ pub fn simulate(scene_path: &Path, json: bool, out: Option<&Path>) -> ExitCode {
         return ExitCode::from(1);
     }
     ExitCode::SUCCESS
+}
+
+/// The exit code of a run that stopped with `e`: lift-off is a failed check and the step limit a
+/// run that stopped short of its end (1, as `unreached_end`; the JSON says `incomplete`); the
+/// rest is a request the run cannot meet (2), e.g. a penalty contact it did not resolve.
+pub fn run_error_code(e: &RunError) -> u8 {
+    match e {
+        RunError::LiftOff { .. } | RunError::TooManySteps { .. } => 1,
+        RunError::Step(_) | RunError::Start(_) => 2,
+    }
 }
 
 /// The note's own problem, built in (so `ladder` with no arguments needs no file): the ladder
@@ -289,4 +301,18 @@ pub fn summary(scene: &Scene, o: &Outcome) -> String {
 /// The files `--out` writes for this scene (CSV and SVG for a trajectory and forces).
 pub fn files(scene: &Scene, o: &Outcome) -> Vec<OutFile> {
     crate::report::fall_figures::files(scene, o)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The step limit is not bad input (it was exit 2): exit 1 like a run short of its end.
+    #[test]
+    fn the_step_limit_exits_1_and_an_unresolved_contact_2() {
+        let limit = RunError::TooManySteps { limit: 10, t: 1.0 };
+        assert_eq!(run_error_code(&limit), 1);
+        assert_eq!(run_error_code(&RunError::LiftOff { t: 1.0, theta: 1.0 }), 1);
+        assert_eq!(run_error_code(&RunError::Start("not resolved".into())), 2);
+    }
 }

@@ -77,30 +77,53 @@ pub type ParticleChains<S> = fn(&System<S>, &Point<S>) -> Vec<Chain<S>>;
 /// The chains of one floor-phase check (the ladder off the wall), in one scalar type.
 pub type FloorChains<S> = fn(&Ladder<S>, &State<S>, &Slide<S>) -> Vec<Chain<S>>;
 
-/// A floor-phase check instantiated in every scalar type.
-#[derive(Clone, Copy)]
-pub struct FloorFns {
-    /// In f64 (derivatives by num-dual).
-    pub float: FloorChains<f64>,
-    /// With running error bounds.
-    pub bound: FloorChains<Bound>,
-    /// In exact rationals.
-    pub exact: FloorChains<Rational>,
-    /// In residues modulo a prime (the fast path of the exact points).
-    pub modular: FloorChains<Modp>,
-    /// In degree-counting mode (Schwartz-Zippel).
-    pub degree: FloorChains<Degree>,
-    /// In symbolic rational functions (proofs).
-    pub symbolic: FloorChains<Sym>,
-    /// In physical dimensions (dimensional analysis).
-    pub units: FloorChains<Dim>,
+/// Declares a struct holding one check's chain function in every scalar type, so the three
+/// kinds of check (ladder, particle system, floor phase) cannot drift apart field by field.
+macro_rules! fns_in_every_scalar {
+    ($(#[$doc:meta])* $name:ident, $chains:ident) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy)]
+        pub struct $name {
+            /// In f64 (derivatives by num-dual).
+            pub float: $chains<f64>,
+            /// With running error bounds.
+            pub bound: $chains<Bound>,
+            /// In exact rationals.
+            pub exact: $chains<Rational>,
+            /// In residues modulo a prime (the fast path of the exact points).
+            pub modular: $chains<Modp>,
+            /// In degree-counting mode (Schwartz-Zippel).
+            pub degree: $chains<Degree>,
+            /// In symbolic rational functions (proofs).
+            pub symbolic: $chains<Sym>,
+            /// In physical dimensions (dimensional analysis).
+            pub units: $chains<Dim>,
+        }
+    };
 }
 
-/// Instantiate a generic floor-phase check.
+fns_in_every_scalar!(
+    /// A ladder check instantiated in every scalar type.
+    LadderFns,
+    LadderChains
+);
+fns_in_every_scalar!(
+    /// A particle-system check instantiated in every scalar type.
+    ParticleFns,
+    ParticleChains
+);
+fns_in_every_scalar!(
+    /// A floor-phase check instantiated in every scalar type.
+    FloorFns,
+    FloorChains
+);
+
+/// Fills any of the structs above with one generic function, instantiated per scalar type.
+#[doc(hidden)]
 #[macro_export]
-macro_rules! floor_fns {
-    ($f:path) => {
-        $crate::registry::FloorFns {
+macro_rules! fns_of {
+    ($kind:ident, $f:path) => {
+        $crate::registry::$kind {
             float: $f,
             bound: $f,
             exact: $f,
@@ -112,57 +135,20 @@ macro_rules! floor_fns {
     };
 }
 
-/// A ladder check instantiated in every scalar type.
-#[derive(Clone, Copy)]
-pub struct LadderFns {
-    /// In f64 (derivatives by num-dual).
-    pub float: LadderChains<f64>,
-    /// With running error bounds.
-    pub bound: LadderChains<Bound>,
-    /// In exact rationals.
-    pub exact: LadderChains<Rational>,
-    /// In residues modulo a prime (the fast path of the exact points).
-    pub modular: LadderChains<Modp>,
-    /// In degree-counting mode (Schwartz-Zippel).
-    pub degree: LadderChains<Degree>,
-    /// In symbolic rational functions (proofs).
-    pub symbolic: LadderChains<Sym>,
-    /// In physical dimensions (dimensional analysis).
-    pub units: LadderChains<Dim>,
-}
-
-/// A particle-system check instantiated in every scalar type.
-#[derive(Clone, Copy)]
-pub struct ParticleFns {
-    /// In f64 (derivatives by num-dual).
-    pub float: ParticleChains<f64>,
-    /// With running error bounds.
-    pub bound: ParticleChains<Bound>,
-    /// In exact rationals.
-    pub exact: ParticleChains<Rational>,
-    /// In residues modulo a prime (the fast path of the exact points).
-    pub modular: ParticleChains<Modp>,
-    /// In degree-counting mode (Schwartz-Zippel).
-    pub degree: ParticleChains<Degree>,
-    /// In symbolic rational functions (proofs).
-    pub symbolic: ParticleChains<Sym>,
-    /// In physical dimensions (dimensional analysis).
-    pub units: ParticleChains<Dim>,
+/// Instantiate a generic floor-phase check
+/// `fn f<S: Scalar>(&Ladder<S>, &State<S>, &Slide<S>) -> Vec<Chain<S>>`.
+#[macro_export]
+macro_rules! floor_fns {
+    ($f:path) => {
+        $crate::fns_of!(FloorFns, $f)
+    };
 }
 
 /// Instantiate a generic ladder check `fn f<S: Scalar>(&Ladder<S>, &State<S>) -> Vec<Chain<S>>`.
 #[macro_export]
 macro_rules! ladder_fns {
     ($f:path) => {
-        $crate::registry::LadderFns {
-            float: $f,
-            bound: $f,
-            exact: $f,
-            modular: $f,
-            degree: $f,
-            symbolic: $f,
-            units: $f,
-        }
+        $crate::fns_of!(LadderFns, $f)
     };
 }
 
@@ -170,15 +156,7 @@ macro_rules! ladder_fns {
 #[macro_export]
 macro_rules! particle_fns {
     ($f:path) => {
-        $crate::registry::ParticleFns {
-            float: $f,
-            bound: $f,
-            exact: $f,
-            modular: $f,
-            degree: $f,
-            symbolic: $f,
-            units: $f,
-        }
+        $crate::fns_of!(ParticleFns, $f)
     };
 }
 

@@ -22,25 +22,21 @@
 //! format allows is drawn, so refusals (exit 2) are part of the campaign: they are counted by
 //! the field they name.
 
+use crate::sim::integrators::{METHODS, RIGID_METHODS};
 use crate::sim::output::Output;
-use crate::sim::scene::End;
+use crate::sim::scene::{ContactModel, End};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::f64::consts::FRAC_PI_2;
 use std::fmt::Write;
 
-/// Every method a scene may name.
-pub const METHODS: [&str; 9] = [
-    "euler",
-    "symplectic-euler",
-    "verlet",
-    "rk4",
-    "dopri5",
-    "dop853",
-    "radau5",
-    "taylor",
-    "exact",
-];
+/// Every method a scene may name: the integrators and, for rigid scenes, the closed form.
+pub fn methods(penalty: bool) -> Vec<&'static str> {
+    match penalty {
+        true => METHODS.to_vec(),
+        false => RIGID_METHODS.iter().copied().chain(["exact"]).collect(),
+    }
+}
 
 /// Every output a scene may ask for.
 const OUTPUTS: [&str; 13] = [
@@ -75,6 +71,20 @@ fn exp10(rng: &mut ChaCha8Rng, lo: f64, hi: f64) -> f64 {
 /// A float as TOML reads it back exactly (Rust's shortest round-trip form).
 fn num(x: f64) -> String {
     format!("{x:e}")
+}
+
+/// The name a scene gives `contact` (`model = "rigid"` or `"penalty"`).
+pub fn model_name(contact: &ContactModel) -> &'static str {
+    match contact {
+        ContactModel::Rigid => "rigid",
+        ContactModel::Penalty { .. } => "penalty",
+    }
+}
+
+/// Whether the campaign runs a scene with `contact` when asked for the model `only` (`None`:
+/// every scene); the others are drawn all the same, so that scene I stays scene I.
+pub fn selected(contact: &ContactModel, only: Option<&str>) -> bool {
+    only.is_none_or(|m| m == model_name(contact))
 }
 
 /// The start angle θ0.
@@ -119,7 +129,7 @@ pub fn draw(seed: u64, index: u64) -> String {
         num(theta0),
         num(rate0)
     );
-    let methods: &[&str] = if penalty { &METHODS[..7] } else { &METHODS };
+    let methods = methods(penalty);
     let method = methods[rng.gen_range(0..methods.len())];
     if penalty {
         let kappa = exp10(rng, 0.0, 12.0);

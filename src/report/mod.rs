@@ -4,6 +4,7 @@ pub mod campaign;
 pub mod campaign_judge;
 pub mod chart;
 pub mod diagram;
+mod diagram_legend;
 pub mod diagram_svg;
 pub mod digits;
 pub mod fall_figures;
@@ -15,6 +16,7 @@ pub mod stability_extreme;
 pub mod stability_scale;
 pub mod stability_stiff;
 pub mod svg_chart;
+pub mod svg_text;
 pub mod work_precision;
 pub mod work_precision_fit;
 #[cfg(feature = "peers")]

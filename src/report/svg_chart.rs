@@ -9,6 +9,7 @@
 //! text, and owning it keeps the palette and layout the same in every figure.
 
 use super::chart::{Chart, Series};
+use super::svg_text::esc;
 use std::fmt::Write;
 
 /// The palette (Okabe–Ito, distinguishable with any colour vision), in series order.
@@ -24,12 +25,6 @@ const LEFT: f64 = 84.0;
 const RIGHT: f64 = 200.0;
 const TOP: f64 = 44.0;
 const BOTTOM: f64 = 58.0;
-
-fn esc(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-}
 
 /// `10` to the integer power `k`, as text with Unicode superscripts: 10⁻¹².
 pub fn decade_label(k: i32) -> String {

@@ -16,6 +16,7 @@ use super::complement;
 use super::event::{Direction, Event};
 use super::integrators::any::AnyStepper;
 use super::integrators::{Control, Stats, Stepper};
+pub use super::lead_in::{linear_lead_in, LINEAR_AMPLITUDE};
 use super::outcome::SeparationState;
 use super::rigid::{separation_factor, Ladder, WallPhase};
 use super::run::{integrate_phase, Observer, RunError};
@@ -123,38 +124,6 @@ pub fn wall_release(
             "the wall force did not reach zero by t = {t_end:e} s"
         ))),
     }
-}
-
-/// Amplitude below which the wall phase is linear to f64 precision: sin θ = θ (1 − θ²/6 + …)
-/// and θ²/6 ≤ 1.5e-19 < u/700 for |θ| ≤ 2⁻³⁰, so (5) is θ̈ = Ω² θ there.
-pub const LINEAR_AMPLITUDE: f64 = 9.313_225_746_154_785e-10;
-
-/// For a start (θ0, θ̇0) smaller than [`LINEAR_AMPLITUDE`] (in θ and θ̇/ω), the state where the
-/// motion reaches that amplitude, from the exact solution of the linearised (5):
-/// θ = ½ a e^{ωt} + ½ b e^{−ωt}, a = θ0 + θ̇0/ω, b = θ0 − θ̇0/ω. Integrators cannot start at
-/// subnormal or tiny θ themselves: a relative tolerance there measures nothing (5e-324 has one
-/// significant bit) and a fixed step needs ~ln(1/θ0) growth before anything happens.
-/// Returns (t, θ, θ̇), or None when the start is not tiny or does not move away from 0.
-pub fn linear_lead_in(big_omega2: f64, theta0: f64, rate0: f64) -> Option<(f64, f64, f64)> {
-    let omega = big_omega2.sqrt();
-    // a and b scaled by 2^600 (exact), so that θ̇0/ω cannot underflow for a subnormal θ̇0.
-    let scale = 2f64.powi(600);
-    let (p, q) = (theta0 * scale, rate0 * scale / omega);
-    let amp = LINEAR_AMPLITUDE;
-    if !(p.abs() < amp * scale && q.abs() < amp * scale && omega > 0.0 && omega.is_finite()) {
-        return None;
-    }
-    let (a, b) = ((p + q) / scale, (p - q) / scale);
-    if p + q <= 0.0 || p < 0.0 {
-        return None;
-    }
-    // e^{ωt} = 2A/a, formed through logarithms so that a subnormal a cannot overflow it.
-    let t = ((2.0 * amp * scale).ln() - (p + q).ln()) / omega;
-    if t <= 0.0 {
-        return None;
-    }
-    let back = b * (a / (4.0 * amp)); // ½ b e^{−ωt}
-    Some((t, amp + back, omega * (amp - back)))
 }
 
 /// An observer that sees times shifted by `.1` (a phase integrated in time since a lead-in).

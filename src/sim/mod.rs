@@ -7,11 +7,12 @@
 //! [`rigid`] (phase 1, the note's sec. 2.1), [`floor`] (phase 2, beyond the note), [`exact`]
 //! (reference), [`integrators`], [`event`] (crossings refined on the interpolant), [`run`] (the
 //! phase driver), [`fall`] (a whole scene); the `ladder simulate` command lives in `crate::cli`.
-//! Stiff and extreme cases: [`penalty`] (the ladder on one-sided springs, beyond the note) and
-//! [`penalty_scene`] (scenes with `contact.model = "penalty"`), [`constrained`] (full
-//! coordinates with Lagrange multipliers and their drift), [`extreme`] (the wall phase at the
-//! edges of its domain: equilibrium, immediate release, any scale), [`complement`] (the wall
-//! phase near the floor, in φ = π/2 − θ).
+//! Stiff and extreme cases: [`penalty`] (the ladder on one-sided springs, beyond the note),
+//! [`penalty_confirm`] (when its separation is believed) and [`penalty_scene`] (scenes with
+//! `contact.model = "penalty"`), [`constrained`] (full coordinates with Lagrange multipliers
+//! and their drift), [`extreme`] (the wall phase at the edges of its domain: equilibrium,
+//! immediate release, any scale), [`complement`] (the wall phase near the floor, in
+//! φ = π/2 − θ).
 
 pub mod complement;
 pub mod constrained;
@@ -21,10 +22,12 @@ pub mod extreme;
 pub mod fall;
 pub mod floor;
 pub mod integrators;
+pub mod lead_in;
 pub mod minimum;
 pub mod outcome;
 pub mod output;
 pub mod penalty;
+pub mod penalty_confirm;
 pub mod penalty_scene;
 pub mod penalty_start;
 pub mod rigid;

@@ -66,24 +66,6 @@ pub fn slow_forces(kappa: f64, theta: f64, rate: f64) -> ([f64; 2], [f64; 2]) {
     )
 }
 
-/// Whether a zero of the penalty wall force at (θ, θ̇) is the separation and not a spurious
-/// zero: the slow-manifold wall force there, [`slow_forces`], must vanish within the model's
-/// next term and the integration's error `slack` (m g): |F_w| ≤ 10/κ² + slack, where the caller
-/// states the slack from its error model (10 N τ for N steps of local error τ, and the energy
-/// drift). A zero from an unstable or too loose integration lies where the rigid wall still
-/// pushes by O(1) m g and is refused with the reason.
-pub fn confirm_separation(kappa: f64, theta: f64, rate: f64, slack: f64) -> Result<(), String> {
-    let ([wall, _], _) = slow_forces(kappa, theta, rate);
-    let bound = 10.0 / (kappa * kappa) + slack;
-    if wall.abs() <= bound {
-        Ok(())
-    } else {
-        Err(format!(
-            "the penalty wall force reached zero at θ = {theta}, where the rigid wall still pushes with {wall:.3e} m g (more than the model and integration error {bound:.1e}): a spurious zero from an unstable or too loose integration; use radau5 or a tighter tolerance"
-        ))
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -124,6 +124,73 @@ pub fn simulate_scene(tag: &str, name: &str, text: Option<&str>, extra: &[&str])
 
 /// `base` with its first occurrence of `line` replaced by `replacement` (`line` must occur).
 pub fn replace_line(base: &str, line: &str, replacement: &str) -> String {
-    assert!(base.contains(line), "{line}");
+    assert!(base.contains(line), "{line} not in the scene");
     base.replacen(line, replacement, 1)
+}
+
+/// [`BASE`] with its first occurrence of `line` replaced by `replacement`.
+pub fn with(line: &str, replacement: &str) -> String {
+    replace_line(BASE, line, replacement)
+}
+
+/// `base` with each `(line, replacement)` applied in turn by [`replace_line`].
+pub fn edited(base: &str, edits: &[(&str, &str)]) -> String {
+    edits.iter().fold(base.to_string(), |text, (line, new)| {
+        replace_line(&text, line, new)
+    })
+}
+
+/// The `[ladder]` and `[start]` sections of the test scenes (lines 1-7): m = l = 1 kg, m,
+/// g = 9.81 m/s², θ0 = 0.3 from rest.
+macro_rules! ladder_and_start {
+    () => {
+        "[ladder]\nmass = 1.0\nhalf_length = 1.0\ngravity = 9.81\n[start]\nangle = 0.3\nangular_velocity = 0.0\n"
+    };
+}
+
+/// The valid rigid scene the bad-input tests edit. Lines: 1 [ladder], 2 mass, 3 half_length,
+/// 4 gravity, 5 [start], 6 angle, 7 angular_velocity, 8 [contact], 9 model, 10 [integrator],
+/// 11 method, 12 tolerance, 13 [end], 14 at, 15 [outputs], 16 want.
+pub const BASE: &str = concat!(
+    ladder_and_start!(),
+    "[contact]\nmodel = \"rigid\"\n",
+    "[integrator]\nmethod = \"dop853\"\ntolerance = 1e-12\n",
+    "[end]\nat = \"separation\"\n",
+    "[outputs]\nwant = [\"separation_angle\", \"trajectory\"]\n"
+);
+
+/// A valid penalty scene (κ = k l/(m g) = 1e6, radau5). Lines: 1-7 as [`BASE`], 8 [contact],
+/// 9 model, 10 stiffness, 11 damping, 12 [integrator], 13 method, 14 tolerance, 15 [end], 16 at,
+/// 17 [outputs], 18 want.
+pub const PENALTY: &str = concat!(
+    ladder_and_start!(),
+    "[contact]\nmodel = \"penalty\"\nstiffness = 9.81e6\ndamping = 0.0\n",
+    "[integrator]\nmethod = \"radau5\"\ntolerance = 1e-10\n",
+    "[end]\nat = \"separation\"\n",
+    "[outputs]\nwant = [\"separation_angle\", \"separation_time\"]\n"
+);
+
+/// Assert that a `ladder simulate` run refused a bad scene as the project promises: exit 2,
+/// one line on stderr naming `scene.toml`, the line (when given), the field as `[section] key`
+/// (or `[section]`) and `words` of the message; nothing on stdout and no file written.
+pub fn assert_refused(case: &str, run: &SimRun, line: Option<usize>, field: &str, words: &str) {
+    let (code, err) = (run.code, &run.stderr);
+    assert_eq!(code, 2, "{case}: exit {code}, stderr {err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{case}: {err}");
+    assert!(err.contains("scene.toml"), "{case}: no file name in {err}");
+    if let Some(l) = line {
+        assert!(
+            err.contains(&format!("scene.toml:{l}: ")),
+            "{case}: line {l} not in {err}"
+        );
+    }
+    // Fields are shown as `[section] key` (or `[section]`).
+    let place = match field.split_once('.') {
+        Some((section, key)) => format!("[{section}] {key}"),
+        None => field.to_string(),
+    };
+    assert!(err.contains(&place), "{case}: field {place} not in {err}");
+    assert!(err.contains(words), "{case}: '{words}' not in {err}");
+    assert!(run.stdout.is_empty(), "{case}: stdout {}", run.stdout);
+    assert_eq!(run.files, 0, "{case}: output written");
 }
