@@ -225,3 +225,32 @@ fn tight_and_loose_tolerances_at_kappa_1e12_finish_on_the_rigid_answer() {
     let r = separate_with_ode(&model, &FixedWeights(model), &mut st, 20_000);
     assert!(r.result.is_err(), "{:?}", r.result);
 }
+
+/// radau5 on stiff springs (issue 13 item 4): the error estimate's filtered second form is used
+/// whenever the raw one fails, so a stiff step is no longer rejected first (205 of 208 steps at
+/// κ = 1e12, tolerance 1e-10, before); and the Jacobian and LU are kept across steps while
+/// Newton contracts fast (one Jacobian a step before).
+#[test]
+fn radau5_rejects_few_steps_and_keeps_its_jacobian_on_stiff_springs() {
+    let run = |kappa: f64, tol: f64| {
+        let contact = Contact { kappa, gamma: 0.0 };
+        let control = Control::Tolerance(tol);
+        separation(
+            contact,
+            Law::Switched,
+            THETA0,
+            0.0,
+            "radau5",
+            control,
+            200_000,
+        )
+    };
+    let stiff = run(1e12, 1e-10);
+    assert!(stiff.result.is_ok());
+    let s = stiff.stats;
+    assert!(10 * s.rejected <= s.steps, "{s:?}");
+    let soft = run(1e4, 1e-12);
+    assert!(soft.result.is_ok());
+    let s = soft.stats;
+    assert!(2 * s.jacobians <= s.steps, "{s:?}");
+}

@@ -4,7 +4,7 @@
 
 use sliding_ladder::report::campaign_judge::out_of_tolerance;
 use sliding_ladder::sim::fall;
-use sliding_ladder::sim::scene::parse;
+use sliding_ladder::sim::scene::{parse, Scene};
 use sliding_ladder::sim::scene_work::phase_steps;
 
 const BASE: &str = "[ladder]
@@ -145,14 +145,7 @@ fn the_step_estimate_matches_the_run() {
         .replace("[\"separation_angle\"]", "[\"flat_time\"]"),
     )
     .unwrap();
-    let est = phase_steps(
-        &sc.ladder,
-        (sc.theta0, sc.rate0),
-        &sc.method,
-        sc.control.unwrap(),
-        sc.end,
-        sc.contact,
-    );
+    let est = estimate(&sc);
     let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
     let got = [o.work.wall.steps, o.work.floor.unwrap().steps];
     for (e, g) in est.iter().zip(got) {
@@ -196,18 +189,23 @@ fn explicit_methods_at_tight_tolerances_on_stiff_springs_are_estimated_and_refus
         ("1e6", "dop853", "1e-14"),
     ] {
         let sc = parse("s.toml", &scene(kappa, "0.0", method, tol)).unwrap();
-        let est = phase_steps(
-            &sc.ladder,
-            (sc.theta0, sc.rate0),
-            &sc.method,
-            sc.control.unwrap(),
-            sc.end,
-            sc.contact,
-        )[0];
+        let est = estimate(&sc)[0];
         let got = fall::run(&sc, fall::MAX_STEPS).unwrap().work.wall.steps as f64;
         assert!(
             (0.8..2.5).contains(&(est / got)),
             "{method} κ = {kappa} τ = {tol}: estimated {est:.3e}, took {got:.3e}"
         );
     }
+}
+
+/// The plan's step estimate for each phase of a parsed scene.
+fn estimate(sc: &Scene) -> [f64; 2] {
+    phase_steps(
+        &sc.ladder,
+        (sc.theta0, sc.rate0),
+        &sc.method,
+        sc.control.unwrap(),
+        sc.end,
+        sc.contact,
+    )
 }

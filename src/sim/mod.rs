@@ -6,13 +6,14 @@
 //! scene's own units and the conversions of a run),
 //! [`rigid`] (phase 1, the note's sec. 2.1), [`floor`] (phase 2, beyond the note), [`exact`]
 //! (reference), [`integrators`], [`event`] (crossings refined on the interpolant), [`run`] (the
-//! phase driver), [`fall`] (a whole scene); the `ladder simulate` command lives in `crate::cli`.
+//! phase driver), [`fall`] (a whole scene; what it watches in `fall_observer`); the `ladder
+//! simulate` command lives in `crate::cli`.
 //! Stiff and extreme cases: [`penalty`] (the ladder on one-sided springs, beyond the note),
 //! [`penalty_confirm`] (when its separation is believed) and [`penalty_scene`] (scenes with
 //! `contact.model = "penalty"`), [`constrained`] (full coordinates with Lagrange multipliers
 //! and their drift), [`extreme`] (the wall phase at the edges of its domain: equilibrium,
-//! immediate release, any scale), [`complement`] (the wall phase near the floor, in
-//! φ = π/2 − θ).
+//! immediate release, any scale; a tiny start's linear growth in [`lead_in`]), [`complement`]
+//! (the wall phase near the floor, in φ = π/2 − θ).
 
 pub mod complement;
 pub mod constrained;
@@ -20,6 +21,7 @@ pub mod event;
 pub mod exact;
 pub mod extreme;
 pub mod fall;
+mod fall_observer;
 pub mod floor;
 pub mod integrators;
 pub mod lead_in;
