@@ -10,7 +10,9 @@
 //! `Ode::max_step`), and a sign check at the step ends cannot miss a crossing. This costs no
 //! extra evaluations (unlike sampling the dense output inside every step, which for DOP853
 //! would add three stages per step) and limits steps only where they are a sizeable fraction of
-//! the fall anyway. Events that may touch zero and turn back (lift-off: the floor force) ask for
+//! the fall anyway. The Taylor method, whose steps at tight tolerances are longer than that,
+//! may take |Δθ| up to 2.625 rad < π in the wall phase
+//! ([`super::rigid::taylor_event_safe_step`]): still less than the roots' distance. Events that may touch zero and turn back (lift-off: the floor force) ask for
 //! interior samples of the dense output as well ([`Event::interior_samples`]).
 //!
 //! **Refinement.** The root is found by Brent's method ([`brent`]) on the interpolant of the step
@@ -55,6 +57,12 @@ pub trait Event<const N: usize> {
     /// polynomial, without a transcendental function per iterate.
     fn series(&self, _series: &Series<N>, _out: &mut [f64]) -> bool {
         false
+    }
+    /// [`Event::value`] given (sin, cos) of `y[0]` as the stepper carries them
+    /// ([`crate::sim::integrators::Stepper::trig`]): events that need them override this to
+    /// save a transcendental function per step.
+    fn value_with_trig(&self, t: f64, y: &[f64; N], _trig: (f64, f64)) -> f64 {
+        self.value(t, y)
     }
 }
 

@@ -38,6 +38,10 @@ impl Event<2> for SeparationEvent {
         taylor::separation_factor_series(self.0, &s.cos, &s.y[1], &mut out[..=p]);
         true
     }
+    /// Ω² cos θ − θ̇² with the carried cos θ.
+    fn value_with_trig(&self, _t: f64, y: &[f64; 2], trig: (f64, f64)) -> f64 {
+        self.0 * trig.1 - y[1] * y[1]
+    }
 }
 
 /// Lift-off: the floor force falls through zero (checked inside steps too: it could dip and

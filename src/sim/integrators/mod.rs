@@ -28,6 +28,7 @@ pub mod radau5;
 pub mod rk4;
 pub mod symplectic_euler;
 pub mod taylor;
+pub mod taylor_f64;
 pub mod verlet;
 
 use num_dual::DualNum;
@@ -44,6 +45,12 @@ pub trait Ode<const N: usize> {
     /// The longest step allowed from state `y` (event safety; see `sim::event`).
     fn max_step(&self, _y: &[f64; N]) -> f64 {
         f64::INFINITY
+    }
+
+    /// The longest step the Taylor method may take from `y`: [`Ode::max_step`] unless the model
+    /// proves a wider bound (the wall phase: [`crate::sim::rigid::taylor_event_safe_step`]).
+    fn taylor_max_step(&self, y: &[f64; N]) -> f64 {
+        self.max_step(y)
     }
 
     /// Characteristic magnitude of each component at `y`, used by the error norm
@@ -157,6 +164,12 @@ pub trait Stepper<const N: usize> {
     /// The Taylor method's series of the last step (in τ = t − t_prev), from which an event may
     /// form its own polynomial ([`crate::sim::event::Event::series`]); None for other methods.
     fn step_series(&self) -> Option<&taylor::Series<N>> {
+        None
+    }
+    /// (sin, cos) of y[0] at the current state when the stepper carries them (the Taylor
+    /// method: the values of their own series), so an event needs no sin or cos per step
+    /// ([`crate::sim::event::Event::value_with_trig`]); None for other methods.
+    fn trig(&self) -> Option<(f64, f64)> {
         None
     }
     /// Start again at `(t, y)` (after an event ends a phase).
