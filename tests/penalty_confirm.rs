@@ -12,7 +12,9 @@ use sliding_ladder::sim::integrators::Control;
 use sliding_ladder::sim::penalty::{
     preloaded_start, separate_with, separation, Contact, Law, PenaltyModel, OMEGA2,
 };
-use sliding_ladder::sim::penalty_confirm::{rigid_separation_angle, MODEL_CONSTANT};
+use sliding_ladder::sim::penalty_confirm::{
+    rigid_separation_angle, separation_bound, MODEL_CONSTANT,
+};
 use sliding_ladder::sim::scene::parse;
 use std::f64::consts::FRAC_PI_2;
 use std::process::Command;
@@ -205,4 +207,62 @@ fn ladder_simulate_exits_2_on_an_unresolved_contact() {
         "{err}"
     );
     assert!(out.stdout.is_empty());
+}
+
+/// The campaign's judge holds a penalty separation to the penalty contact's error model
+/// (`separation_bound`), not to the old 10 (1 + γ)/κ: with κ = 1e4 and damping γ = 1e3 that
+/// allowed a whole radian; an angle moved by 1.01 times the stated bound is rejected, one moved
+/// by 0.99 times it is accepted.
+#[test]
+fn the_judge_holds_a_penalty_separation_to_the_contacts_error_model() {
+    let text = scene("0.3", "0.0", ("1e4", "1e3"), "radau5", "1e-10");
+    let sc = parse("s.toml", &text).unwrap();
+    let o = fall::run(&sc, fall::MAX_STEPS).expect("runs");
+    assert!(out_of_tolerance(&sc, &o).is_empty());
+    let rigid = rigid_separation_angle(0.3, 0.0);
+    let bound = separation_bound(1e4, rigid, o.work.wall.steps, 1e-10);
+    assert!(bound < 1e-3 && 10.0 * (1.0 + 1e3) / 1e4 > 1.0);
+    for (factor, flagged) in [(1.01, true), (0.99, false)] {
+        let mut moved = o.clone();
+        moved.separation.as_mut().unwrap().angle = rigid + factor * bound;
+        let problems = out_of_tolerance(&sc, &moved);
+        assert_eq!(!problems.is_empty(), flagged, "{factor}: {problems:?}");
+    }
+}
+
+/// F3 (penalty starts near π/2, campaign seed 1): scenes 69 (κ = 37 at the last float below
+/// π/2), 129 (κ = 1.3e6 at π/2 − 1.4e-9) and 418 (κ = 1.6e6 at π/2 − 2.1e-7: it "separated"
+/// at π/2 + 3.3e-7, inside the model's stated bound but past flat) are refused up front, exit 2
+/// naming the stiffness and why (`sim::penalty_plan`); scene 514 (κ = 1.9e4 at π/2 − 2.1e-4,
+/// whose model shift 7e-5 rad is below the 1.4e-4 rad left) runs, and so do stiffer springs
+/// from 1e-7 below flat: both separate between the start and flat, within the judge's bound.
+#[test]
+fn penalty_starts_near_the_floor_are_refused_or_right() {
+    use sliding_ladder::report::campaign::draw;
+    for i in [69, 129, 418] {
+        let e = parse("s.toml", &draw(1, i)).expect_err("refused");
+        assert_eq!(e.field, "contact.stiffness", "scene {i}");
+        assert!(
+            e.to_string()
+                .contains("cannot tell this start's separation from flat"),
+            "{e}"
+        );
+    }
+    let theta0 = FRAC_PI_2 - 1e-7;
+    let stiff = scene(
+        &format!("{theta0:?}"),
+        "0.0",
+        ("1e12", "0.0"),
+        "radau5",
+        "1e-12",
+    );
+    for sc in [
+        parse("s.toml", &draw(1, 514)).expect("scene 514 runs"),
+        parse("s.toml", &stiff).expect("runs"),
+    ] {
+        let o = fall::run(&sc, fall::MAX_STEPS).expect("separates");
+        let s = o.separation.expect("a separation");
+        assert!(out_of_tolerance(&sc, &o).is_empty());
+        assert!(s.angle > sc.theta0 && s.angle < FRAC_PI_2, "{}", s.angle);
+    }
 }

@@ -66,6 +66,10 @@ impl Ode<2> for ComplementWall {
     fn max_step(&self, y: &[f64; 2]) -> f64 {
         event_safe_step(self.omega, y[1])
     }
+    /// As in `rigid::WallPhase`: |φ̈| = Ω²|cos φ| ≤ Ω² gives the same bound.
+    fn taylor_max_step(&self, y: &[f64; 2]) -> f64 {
+        super::rigid::taylor_event_safe_step(self.omega, y[1])
+    }
     /// φ and φ̇/Ω on one relative scale, as for θ in `rigid::WallPhase`.
     fn scale(&self, y: &[f64; 2]) -> [f64; 2] {
         let s = y[0].abs().max(y[1].abs() / self.omega);
@@ -98,6 +102,10 @@ impl Event<2> for ComplementSeparation {
         let p = s.order;
         separation_factor_series(self.0, &s.sin, &s.y[1], &mut out[..=p]);
         true
+    }
+    /// Ω² sin φ − φ̇² with the carried sin φ.
+    fn value_with_trig(&self, _t: f64, y: &[f64; 2], trig: (f64, f64)) -> f64 {
+        self.0 * trig.0 - y[1] * y[1]
     }
 }
 

@@ -10,13 +10,22 @@
 //! `Ode::max_step`), and a sign check at the step ends cannot miss a crossing. This costs no
 //! extra evaluations (unlike sampling the dense output inside every step, which for DOP853
 //! would add three stages per step) and limits steps only where they are a sizeable fraction of
-//! the fall anyway. Events that may touch zero and turn back (lift-off: the floor force) ask for
+//! the fall anyway. The Taylor method, whose steps at tight tolerances are longer than that,
+//! may take |Δθ| up to 2.625 rad < π in the wall phase
+//! ([`super::rigid::taylor_event_safe_step`]): still less than the roots' distance. Events that may touch zero and turn back (lift-off: the floor force) ask for
 //! interior samples of the dense output as well ([`Event::interior_samples`]).
 //!
 //! **Refinement.** The root is found by Brent's method ([`brent`]) on the interpolant of the step
 //! that brackets it, iterated until the bracket is two adjacent floats (tolerance zero).
 
 use super::integrators::taylor::Series;
+
+/// Most iterations of the root finders: enough to bisect from any positive f64 down to the
+/// smallest (2098 halvings) and resolve the last binade. A bracket [0, h] whose root lies many
+/// binades below h (a separation 1e-137 into a fixed step of 1, from a start 1e-273 rad from
+/// the floor) needs ~440 halvings before Newton or interpolation can take over; with 200 the
+/// finders stopped short and returned a time ~1e-60, far past the root (issue 17, F7).
+const MAX_ITERATIONS: usize = 2200;
 
 /// Which sign changes count.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -49,6 +58,12 @@ pub trait Event<const N: usize> {
     fn series(&self, _series: &Series<N>, _out: &mut [f64]) -> bool {
         false
     }
+    /// [`Event::value`] given (sin, cos) of `y[0]` as the stepper carries them
+    /// ([`crate::sim::integrators::Stepper::trig`]): events that need them override this to
+    /// save a transcendental function per step.
+    fn value_with_trig(&self, t: f64, y: &[f64; N], _trig: (f64, f64)) -> f64 {
+        self.value(t, y)
+    }
 }
 
 /// A root of `f` in the bracket `[a, b]` (`f(a)`, `f(b)` of opposite signs or one zero) by
@@ -74,7 +89,7 @@ pub fn newton_in_bracket(
     let (mut lo, mut hi) = (a, b);
     let mut t = if fa.abs() < fb.abs() { a } else { b };
     let (mut dx, mut dx_old) = ((b - a).abs(), (b - a).abs());
-    for _ in 0..200 {
+    for _ in 0..MAX_ITERATIONS {
         let (v, d) = f(t)?;
         if v == 0.0 {
             return Some(t);
@@ -121,7 +136,7 @@ pub fn crosses(dir: Direction, before: f64, after: f64) -> bool {
 }
 
 /// Brent's root finder on `[a, b]` with `f(a)`, `f(b)` of opposite signs (or one zero).
-/// Iterates until the bracket is as narrow as f64 allows; at most 200 iterations.
+/// Iterates until the bracket is as narrow as f64 allows; at most [`MAX_ITERATIONS`] iterations.
 /// (R. P. Brent, *Algorithms for Minimization without Derivatives*, 1973, ch. 4, `zero`.)
 pub fn brent(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, mut fa: f64, mut fb: f64) -> f64 {
     if fa == 0.0 {
@@ -133,7 +148,7 @@ pub fn brent(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, mut fa: f64, mut fb
     let (mut c, mut fc) = (a, fa);
     let mut d = b - a;
     let mut e = d;
-    for _ in 0..200 {
+    for _ in 0..MAX_ITERATIONS {
         if (fb > 0.0) == (fc > 0.0) {
             c = a;
             fc = fa;

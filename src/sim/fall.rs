@@ -38,6 +38,10 @@ impl Event<2> for SeparationEvent {
         taylor::separation_factor_series(self.0, &s.cos, &s.y[1], &mut out[..=p]);
         true
     }
+    /// Ω² cos θ − θ̇² with the carried cos θ.
+    fn value_with_trig(&self, _t: f64, y: &[f64; 2], trig: (f64, f64)) -> f64 {
+        self.0 * trig.1 - y[1] * y[1]
+    }
 }
 
 /// Lift-off: the floor force falls through zero (checked inside steps too: it could dip and
@@ -210,6 +214,13 @@ fn run_rigid(
         // The floor phase runs in φ = π/2 − θ (see `super::complement`).
         let floor_sys = complement::ComplementFloor::new(&ladder);
         let phi_s = phi_s.unwrap_or_else(|| complement::complement(sep.angle));
+        // The factor's zero has sin φ_s = φ̇_s²/Ω² ≥ 0; a φ_s ≤ 0 (rounding at subnormal sizes)
+        // would leave the floor phase no flat to cross: say so, never run on past flat.
+        if phi_s <= 0.0 {
+            return Err(RunError::Start(format!(
+                "the separation was located at or past flat (π/2 − θ = {phi_s:e} rad): the start is too close to the floor for f64"
+            )));
+        }
         let y_s = complement::floor_state_at_separation(&ladder, phi_s, sep.rate);
         let mut stepper2 =
             AnyStepper::with_order(&scene.method, control, scene.order, sep.time, y_s).ok_or_else(

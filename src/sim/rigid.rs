@@ -90,12 +90,26 @@ pub fn event_safe_step(omega: f64, rate: f64) -> f64 {
     0.5 / (rate.abs() + omega)
 }
 
+/// The Taylor method's longest wall-phase step: h (|θ̇| + Ω) ≤ 3/2 gives a path of
+/// |Δθ| ≤ h|θ̇| + h²Ω²/2 ≤ 3/2 + 9/8 = 2.625 rad < π along the motion (|θ̈| = Ω²|sin θ| ≤ Ω²),
+/// still less than the π between the separation factor's two roots (see `sim::event`), so a
+/// sign check at the step ends cannot miss a crossing. Three times [`event_safe_step`]: at
+/// tolerance 1e-12 the Taylor method's own step (order 15) is longer than 0.5/(|θ̇| + Ω), and
+/// that bound, not the accuracy, set its number of steps. The other methods keep the
+/// narrower bound (their error control rarely reaches it; their tested behaviour is unchanged).
+pub fn taylor_event_safe_step(omega: f64, rate: f64) -> f64 {
+    1.5 / (rate.abs() + omega)
+}
+
 impl Ode<2> for WallPhase {
     fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 2]) -> [D; 2] {
         [y[1], angular_acceleration(self.big_omega2, y[0])]
     }
     fn max_step(&self, y: &[f64; 2]) -> f64 {
         event_safe_step(self.omega, y[1])
+    }
+    fn taylor_max_step(&self, y: &[f64; 2]) -> f64 {
+        taylor_event_safe_step(self.omega, y[1])
     }
     /// θ and θ̇/Ω are both angles: one relative scale for the pair, so that a start at θ = 0
     /// (or θ̇ = 0) is measured against the motion's size, not against an absolute tolerance.

@@ -120,7 +120,10 @@ pub fn integrate_phase<const N: usize, S: Ode<N>, St: Stepper<N>, O: Observer<N>
         // The earliest crossing among the events: (root time, event index).
         let mut first: Option<(f64, usize)> = None;
         for (i, ev) in events.iter().enumerate() {
-            let v1 = ev.value(t1, &y1);
+            let v1 = match stepper.trig() {
+                Some(trig) => ev.value_with_trig(t1, &y1, trig),
+                None => ev.value(t1, &y1),
+            };
             let value_at = |s: &St, t: f64| ev.value(t, &s.interpolate(t));
             let (mut ta, mut va) = (t0, prev[i]);
             let mut bracket = None;
@@ -152,7 +155,14 @@ pub fn integrate_phase<const N: usize, S: Ode<N>, St: Stepper<N>, O: Observer<N>
                 let root = match stepper.step_series().filter(|s| ev.series(s, &mut poly)) {
                     Some(s) => {
                         let (c, t_prev) = (&poly[..=s.order], stepper.t_prev());
-                        let (ia, ib) = (horner(c, a - t_prev), horner(c, b - t_prev));
+                        // a is the step's start (τ = 0: the constant term) unless a sampled
+                        // bracket moved it.
+                        let ia = if a == t_prev {
+                            c[0]
+                        } else {
+                            horner(c, a - t_prev)
+                        };
+                        let ib = horner(c, b - t_prev);
                         let (fa, fb) = if ia * ib <= 0.0 { (ia, ib) } else { (fa, fb) };
                         let on_poly = |t: f64| Some(horner_with_rate(c, t - t_prev));
                         newton_in_bracket(on_poly, a, b, fa, fb).unwrap_or(a)

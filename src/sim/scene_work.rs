@@ -10,6 +10,8 @@
 //!   dashpot's rate); a fixed step must resolve it, h ω ≤ 0.2, or it is unstable or inaccurate
 //!   (the spurious zeros and lift-offs the campaign found). Explicit Euler also gains energy by
 //!   a factor 1 + (h ω)² a step, e^{h ω² t_s} over the phase: it needs h ω² t_s ≤ 0.02.
+//! * **A penalty start the springs cannot tell from flat** (F3): the model's own shift of the
+//!   separation exceeds the rigid separation's distance from flat (`super::penalty_plan`).
 //! * **An explicit adaptive method on penalty springs** takes the most of three counts, more
 //!   than [`MAX_STEPS`] is refused (the campaign's F6: dopri5 at tolerance 1.9e-16 on κ = 1.5e7
 //!   took 1.18e6 steps where the stability count alone said 7.7e3; dop853 at 2.8e-16 on
@@ -57,6 +59,7 @@ use super::integrators::Control;
 use super::lead_in::linear_lead_in;
 use super::penalty::Contact;
 use super::penalty_confirm::{rigid_separation_angle, separation_bound};
+use super::penalty_plan::too_close_to_flat;
 use super::penalty_start::{rigid_forces, OMEGA2};
 use super::rigid::Ladder;
 use super::scene_errors::{Ctx, SceneError};
@@ -235,6 +238,15 @@ pub(super) fn check_work(
                     ));
                 }
             }
+        }
+        // A start near the floor the springs cannot tell from flat (F3, `super::penalty_plan`).
+        if let Some(m) = too_close_to_flat(kappa, (start.0, start.1 * unit)) {
+            let line = cx
+                .text
+                .lines()
+                .position(|l| l.trim_start().starts_with("stiffness"))
+                .map_or(1, |i| i + 1);
+            return Err(cx.err_at_line(line, "contact.stiffness", m));
         }
     }
     let Control::Fixed(h) = control else {

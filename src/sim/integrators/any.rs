@@ -112,6 +112,9 @@ impl<const N: usize> Stepper<N> for AnyStepper<N> {
     fn step_series(&self) -> Option<&super::taylor::Series<N>> {
         each!(self, s => s.step_series())
     }
+    fn trig(&self) -> Option<(f64, f64)> {
+        each!(self, s => s.trig())
+    }
     fn restart(&mut self, t: f64, y: [f64; N]) {
         each!(self, s => s.restart(t, y))
     }

@@ -28,6 +28,7 @@ pub mod radau5;
 pub mod rk4;
 pub mod symplectic_euler;
 pub mod taylor;
+pub mod taylor_f64;
 pub mod verlet;
 
 use num_dual::DualNum;
@@ -44,6 +45,12 @@ pub trait Ode<const N: usize> {
     /// The longest step allowed from state `y` (event safety; see `sim::event`).
     fn max_step(&self, _y: &[f64; N]) -> f64 {
         f64::INFINITY
+    }
+
+    /// The longest step the Taylor method may take from `y`: [`Ode::max_step`] unless the model
+    /// proves a wider bound (the wall phase: [`crate::sim::rigid::taylor_event_safe_step`]).
+    fn taylor_max_step(&self, y: &[f64; N]) -> f64 {
+        self.max_step(y)
     }
 
     /// Characteristic magnitude of each component at `y`, used by the error norm
@@ -159,6 +166,12 @@ pub trait Stepper<const N: usize> {
     fn step_series(&self) -> Option<&taylor::Series<N>> {
         None
     }
+    /// (sin, cos) of y[0] at the current state when the stepper carries them (the Taylor
+    /// method: the values of their own series), so an event needs no sin or cos per step
+    /// ([`crate::sim::event::Event::value_with_trig`]); None for other methods.
+    fn trig(&self) -> Option<(f64, f64)> {
+        None
+    }
     /// Start again at `(t, y)` (after an event ends a phase).
     fn restart(&mut self, t: f64, y: [f64; N]);
     /// Counters so far.
@@ -174,13 +187,26 @@ pub fn error_norm<const N: usize, S: Ode<N>>(
     rtol: f64,
 ) -> f64 {
     let (s0, s1) = (sys.scale(y0), sys.scale(y1));
-    let mut sum = 0.0;
-    for i in 0..N {
-        // The floor keeps the weight positive at an exact equilibrium (all scales zero).
-        let sk = (rtol * s0[i].max(s1[i])).max(f64::MIN_POSITIVE);
-        sum += (err[i] / sk).powi(2);
+    // The floor keeps the weight positive at an exact equilibrium (all scales zero).
+    let ratio: [f64; N] =
+        std::array::from_fn(|i| err[i] / (rtol * s0[i].max(s1[i])).max(f64::MIN_POSITIVE));
+    rms(&ratio)
+}
+
+/// The root mean square of `ratio`, without overflow: a state of size 1e-273 (a start that
+/// close to the floor) has error ratios ~1e284 whose squares overflow, and an infinite norm
+/// made the first step 0 (issue 17, F7). NaN stays NaN.
+pub fn rms<const N: usize>(ratio: &[f64; N]) -> f64 {
+    let sum: f64 = ratio.iter().map(|r| r * r).sum();
+    if sum.is_finite() || sum.is_nan() {
+        return (sum / N as f64).sqrt();
     }
-    (sum / N as f64).sqrt()
+    let big = ratio.iter().fold(0.0f64, |m, r| m.max(r.abs()));
+    if big.is_infinite() {
+        return big;
+    }
+    let sum: f64 = ratio.iter().map(|r| (r / big).powi(2)).sum();
+    big * (sum / N as f64).sqrt()
 }
 
 /// Initial step size (Hairer, Nørsett & Wanner, *Solving ODEs I*, sec. II.4, "Starting step

@@ -23,7 +23,12 @@
 //! h = min_{m ∈ {p−1, p}} (ε / e_m)^{1/m} · exp(−0.7/(p−1)), where e_m is the largest
 //! coefficient of order m in units of the model's scale ([`Ode::scale`]). The last two orders
 //! are used because one of them may vanish by symmetry (from rest, θ's odd coefficients do).
-//! There is no rejected step: the step is chosen before it is taken.
+//! There is no rejected step: the step is chosen before it is taken. It is capped by the
+//! model's [`Ode::taylor_max_step`] (event safety; wider than other methods' in the wall phase).
+//!
+//! **Speed.** The wall phase's recursion runs in f64 through [`super::taylor_f64`] (same sums,
+//! same bits, no bounds checks); events read sin/cos as carried ([`Stepper::trig`]) instead of
+//! calling them per step.
 //!
 //! Models opt in through [`Ode::taylor_series`]; the rigid wall phase ([`wall_series`]) and the
 //! floor phase ([`floor_series`]) do. Others (penalty, Lagrange multipliers) return `false` and
@@ -72,27 +77,28 @@ pub fn order_for(tol: f64) -> usize {
 
 /// Σ_{j=0}^{k} a_j b_{k−j}, the k-th coefficient of a product of series.
 ///
-/// Even and odd j are summed apart: in f64 the loop is bound by the latency of the additions,
-/// and two independent chains halve it (the order of summation is the only change; exact
-/// scalars give the same value).
+/// Order of summation (the only freedom; exact scalars give the same value in any order): the
+/// inner terms 0 < j < k in two chains by parity, then a_k b_0, then a_0 b_k. In a recursion the
+/// end terms hold the newest coefficients (b_k was computed just before), so in f64 they are
+/// added last and the inner sums, on older coefficients, run ahead of them: the recursion's
+/// critical path is one product and two additions per order. The f64 fast path
+/// ([`super::taylor_f64`]) sums in exactly this order, so both give the same bits.
 #[inline(always)]
-fn product<S: Scalar>(k: usize, a: &[S], b: &[S]) -> S {
+pub fn product<S: Scalar>(k: usize, a: &[S], b: &[S]) -> S {
     let (a, b) = (&a[..=k], &b[..=k]);
-    let mut even = a[0].clone() * b[k].clone();
     if k == 0 {
-        return even;
+        return a[0].clone() * b[0].clone();
     }
-    let mut odd = a[1].clone() * b[k - 1].clone();
-    let mut j = 2;
-    while j < k {
-        even = even + a[j].clone() * b[k - j].clone();
-        odd = odd + a[j + 1].clone() * b[k - j - 1].clone();
-        j += 2;
+    let (mut odd, mut even) = (S::int(0), S::int(0));
+    for j in 1..k {
+        let t = a[j].clone() * b[k - j].clone();
+        if j % 2 == 1 {
+            odd = odd + t;
+        } else {
+            even = even + t;
+        }
     }
-    if j == k {
-        even = even + a[k].clone() * b[0].clone();
-    }
-    even + odd
+    ((odd + even) + a[k].clone() * b[0].clone()) + a[0].clone() * b[k].clone()
 }
 
 /// The k-th coefficients (k ≥ 1) of s = sin θ and c = cos θ from the series `d` of θ' and the
@@ -126,7 +132,7 @@ pub fn wall_series<S: Scalar>(
         }
         if k < p {
             theta[k + 1] = rate[k].clone() * inv[k + 1].clone();
-            rate[k + 1] = big_omega2.clone() * sin[k].clone() * inv[k + 1].clone();
+            rate[k + 1] = sin[k].clone() * (big_omega2.clone() * inv[k + 1].clone());
         }
     }
 }
@@ -243,7 +249,8 @@ pub struct Series<const N: usize> {
 }
 
 impl<const N: usize> Series<N> {
-    fn new(order: usize) -> Self {
+    /// Zeroed series of order `order` (at most [`MAX_ORDER`]).
+    pub fn new(order: usize) -> Self {
         Series {
             order,
             y: [[0.0; MAX_ORDER + 1]; N],
@@ -317,15 +324,20 @@ fn square(k: usize, r: &[f64]) -> f64 {
     acc
 }
 
-/// The wall phase's series in f64, for `WallPhase::taylor_series`.
+/// The wall phase's series in f64, for `WallPhase::taylor_series`: [`wall_series`]'s sums in
+/// its order by the fast path [`super::taylor_f64::wall_series`] (same bits).
 pub fn wall_series_f64(big_omega2: f64, s: &mut Series<2>) {
+    fast_wall_series(false, big_omega2, s);
+}
+
+fn fast_wall_series(complement: bool, big_omega2: f64, s: &mut Series<2>) {
     let p = s.order;
-    let inv = &INV[..p + 2];
-    let [theta, rate] = &mut s.y;
-    wall_series(
-        &big_omega2,
-        inv,
-        &mut theta[..=p],
+    let [angle, rate] = &mut s.y;
+    super::taylor_f64::wall_series(
+        complement,
+        big_omega2,
+        &INV[..p + 2],
+        &mut angle[..=p],
         &mut rate[..=p],
         &mut s.sin[..=p],
         &mut s.cos[..=p],
@@ -352,24 +364,15 @@ pub fn complement_series<S: Scalar>(
         }
         if k < p {
             phi[k + 1] = rate[k].clone() * inv[k + 1].clone();
-            rate[k + 1] = -(big_omega2.clone() * cos[k].clone() * inv[k + 1].clone());
+            rate[k + 1] = -(cos[k].clone() * (big_omega2.clone() * inv[k + 1].clone()));
         }
     }
 }
 
-/// The complement wall phase's series in f64, for `ComplementWall::taylor_series`.
+/// The complement wall phase's series in f64, for `ComplementWall::taylor_series`: as
+/// [`wall_series_f64`], [`complement_series`]'s sums by the fast path (same bits).
 pub fn complement_series_f64(big_omega2: f64, s: &mut Series<2>) {
-    let p = s.order;
-    let inv = &INV[..p + 2];
-    let [phi, rate] = &mut s.y;
-    complement_series(
-        &big_omega2,
-        inv,
-        &mut phi[..=p],
-        &mut rate[..=p],
-        &mut s.sin[..=p],
-        &mut s.cos[..=p],
-    );
+    fast_wall_series(true, big_omega2, s);
 }
 
 /// The floor phase's series in f64, for `FloorPhase::taylor_series`
@@ -494,7 +497,7 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
         }
         // One pass of the recursion per order: counted as one evaluation each.
         self.stats.rhs_evals += p as u64;
-        let h_max = sys.max_step(&self.y);
+        let h_max = sys.taylor_max_step(&self.y);
         let h_jz = self.step_size(&sys.scale(&self.y));
         if h_jz.is_nan() {
             return Err(StepError::NotFinite { t });
@@ -523,6 +526,10 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
 
     fn step_series(&self) -> Option<&Series<N>> {
         Some(&self.series)
+    }
+
+    fn trig(&self) -> Option<(f64, f64)> {
+        Some(self.trig)
     }
 
     fn interpolate(&self, t: f64) -> [f64; N] {

@@ -1,0 +1,86 @@
+//! The f64 fast path of the wall phase's Taylor recursion (`sim::integrators::taylor_f64`) gives
+//! the same bits as the generic recursion run in f64 (whose coefficients `tests/taylor.rs` checks
+//! exactly in rationals): same sums, same order of summation. A changed input changes the bits,
+//! so the comparison is not blind.
+
+use sliding_ladder::sim::integrators::taylor::{
+    complement_series, complement_series_f64, wall_series, wall_series_f64, Series,
+};
+
+/// (angle, rate, sin, cos) series to order p by the generic recursion in f64.
+fn generic(complement: bool, big_omega2: f64, y0: [f64; 2], p: usize) -> [Vec<f64>; 4] {
+    let inv: Vec<f64> = (0..p + 2)
+        .map(|k| if k == 0 { 0.0 } else { 1.0 / k as f64 })
+        .collect();
+    let mut v = [
+        vec![0.0; p + 1],
+        vec![0.0; p + 1],
+        vec![0.0; p + 1],
+        vec![0.0; p + 1],
+    ];
+    let [a, r, s, c] = &mut v;
+    (a[0], r[0]) = (y0[0], y0[1]);
+    (s[0], c[0]) = y0[0].sin_cos();
+    if complement {
+        complement_series(&big_omega2, &inv, a, r, s, c);
+    } else {
+        wall_series(&big_omega2, &inv, a, r, s, c);
+    }
+    v
+}
+
+fn fast(complement: bool, big_omega2: f64, y0: [f64; 2], p: usize) -> [Vec<f64>; 4] {
+    let mut s = Series::<2>::new(p);
+    (s.y[0][0], s.y[1][0]) = (y0[0], y0[1]);
+    (s.sin[0], s.cos[0]) = y0[0].sin_cos();
+    if complement {
+        complement_series_f64(big_omega2, &mut s);
+    } else {
+        wall_series_f64(big_omega2, &mut s);
+    }
+    [
+        s.y[0][..=p].to_vec(),
+        s.y[1][..=p].to_vec(),
+        s.sin[..=p].to_vec(),
+        s.cos[..=p].to_vec(),
+    ]
+}
+
+fn bits(v: &[Vec<f64>; 4]) -> Vec<Vec<u64>> {
+    v.iter()
+        .map(|c| c.iter().map(|x| x.to_bits()).collect())
+        .collect()
+}
+
+#[test]
+fn the_fast_recursion_gives_the_generic_bits_at_every_order() {
+    for complement in [false, true] {
+        for y0 in [[0.3, 0.0], [0.1, 0.02], [1.2, -0.7], [1e-9, 1e-6]] {
+            for p in [2, 3, 5, 8, 15, 16, 17, 40] {
+                let (g, f) = (
+                    generic(complement, 0.75, y0, p),
+                    fast(complement, 0.75, y0, p),
+                );
+                assert_eq!(
+                    bits(&f),
+                    bits(&g),
+                    "complement {complement}, {y0:?}, p = {p}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_changed_input_changes_the_bits() {
+    // Ω² one ulp larger: the comparison above would see it.
+    let om = 0.75f64;
+    let up = f64::from_bits(om.to_bits() + 1);
+    for complement in [false, true] {
+        let (g, f) = (
+            generic(complement, om, [0.3, 0.1], 15),
+            fast(complement, up, [0.3, 0.1], 15),
+        );
+        assert_ne!(bits(&f), bits(&g));
+    }
+}
