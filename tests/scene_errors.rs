@@ -163,7 +163,7 @@ fn cases() -> Vec<(&'static str, String, String)> {
         (
             "no start angle",
             with("angle = 0.3\n", ""),
-            s("scene.toml:5: [start]: no start angle; allowed: one of angle (θ0 in [0, π/2) rad) or angle_from_floor (π/2 − θ0 in (0, π/2] rad)"),
+            s("scene.toml:5: [start]: no start angle; allowed: one of angle (θ0 in [0, π/2) rad) or angle_from_floor (π/2 − θ0 in [2.2e-308, π/2] rad)"),
         ),
         (
             "penalty springs too soft",
