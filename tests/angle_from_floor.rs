@@ -67,15 +67,16 @@ fn the_start_keys_are_exclusive_and_checked() {
         e.starts_with("floor.toml:5: [start]: no start angle; allowed: one of angle"),
         "{e}"
     );
-    // Out of range: φ0 = 0 is flat (never on the wall), φ0 > π/2 is past the wall.
-    for bad in ["0.0", "-1e-12", "1.6", "nan"] {
+    // Out of range: φ0 = 0 is flat (never on the wall), φ0 > π/2 is past the wall, and a
+    // subnormal φ0 has too few significant bits (F7 of the campaign).
+    for bad in ["0.0", "-1e-12", "1.6", "nan", "5e-324", "2e-308"] {
         let e = error(&format!("angle_from_floor = {bad}"), "dop853", tol);
         assert!(
             e.starts_with("floor.toml:6: [start] angle_from_floor: "),
             "{bad}: {e}"
         );
         assert!(
-            e.contains("allowed: π/2 − θ0 in (0, π/2] rad"),
+            e.contains("allowed: π/2 − θ0 in [2.2250738585072014e-308, π/2] rad"),
             "{bad}: {e}"
         );
     }

@@ -19,6 +19,7 @@ fn the_draw_covers_the_domain_and_every_scene_is_read_as_written() {
     assert_ne!(draw(7, 5), draw(8, 5));
     let (mut methods, mut ends, mut outputs) = (BTreeSet::new(), BTreeSet::new(), BTreeSet::new());
     let (mut penalty, mut zero, mut subnormal, mut near_flat, mut pushed) = (0, 0, 0, 0, 0);
+    let mut from_floor = 0;
     for i in 0..3000 {
         let text = draw(7, i);
         match parse("drawn.toml", &text) {
@@ -32,11 +33,18 @@ fn the_draw_covers_the_domain_and_every_scene_is_read_as_written() {
                 near_flat += usize::from(s.theta0 > FRAC_PI_2 - 1e-3);
                 pushed += usize::from(s.rate0 > 0.0);
                 // The numbers are read back as drawn (shortest round-trip form).
-                let angle = text
-                    .lines()
-                    .find_map(|l| l.strip_prefix("angle = "))
-                    .unwrap();
-                assert_eq!(angle.parse::<f64>().unwrap(), s.theta0);
+                let value = |key: &str| {
+                    text.lines()
+                        .find_map(|l| l.strip_prefix(key))
+                        .map(|v| v.parse::<f64>().unwrap())
+                };
+                match value("angle = ") {
+                    Some(theta0) => assert_eq!(theta0, s.theta0),
+                    None => {
+                        assert_eq!(value("angle_from_floor = "), s.phi0);
+                        from_floor += 1;
+                    }
+                }
             }
             // A refusal names a field: never a syntax error of the drawn text.
             Err(e) => assert!(
@@ -58,6 +66,7 @@ fn the_draw_covers_the_domain_and_every_scene_is_read_as_written() {
         ("subnormal θ0", subnormal),
         ("θ0 near π/2", near_flat),
         ("pushed", pushed),
+        ("θ0 from the floor", from_floor),
     ] {
         assert!(n >= 30, "{what}: {n} of 3000");
     }
@@ -155,8 +164,8 @@ fn the_judge_rejects_wrong_results() {
     assert_eq!(flagged(&sc, &o), ["energy_error", "energy_error"]);
 }
 
-/// A penalty run is held to the rigid angle within 10 (1 + γ)/κ + 10 N (τ + u): at κ = 1e8 an
-/// angle moved by 1e-6 is rejected.
+/// A penalty run is held to the rigid angle within the penalty contact's error model
+/// (`sim::penalty_confirm::separation_bound`): at κ = 1e8 an angle moved by 1e-6 is rejected.
 #[test]
 fn the_judge_holds_penalty_runs_to_the_rigid_angle() {
     let mut sc = scene(0.3, 1e-10, End::Separation, vec![Output::SeparationAngle]);
@@ -179,7 +188,9 @@ fn the_judge_holds_penalty_runs_to_the_rigid_angle() {
 #[test]
 fn the_contact_filter_leaves_out_exactly_one_model() {
     let (mut rigid, mut penalty) = (0, 0);
-    for i in 0..1000 {
+    // 1500 scenes: the plan refuses many penalty scenes up front (soft springs, loose explicit
+    // tolerances, starts the springs cannot tell from flat), so fewer of them stay valid.
+    for i in 0..1500 {
         let Ok(s) = parse("drawn.toml", &draw(1, i)) else {
             continue;
         };
@@ -198,15 +209,23 @@ fn the_contact_filter_leaves_out_exactly_one_model() {
         rigid += usize::from(!is_penalty);
         penalty += usize::from(is_penalty);
     }
+    // About 1 in 4 scenes is drawn with penalty springs; the plan refuses most of them (94 of
+    // 1000 are accepted: a floor, so that the filter is seen to keep enough of each model).
     assert!(
-        rigid > 500 && penalty > 100,
+        rigid > 500 && penalty > 50,
         "{rigid} rigid, {penalty} penalty"
     );
     // Scene 857 (dop853 at a tolerance of 2.8e-16 on stiff springs, finding F6) is now refused
     // up front: the plan counts the accuracy-bound steps.
     let refused = parse("drawn.toml", &draw(1, 857)).expect_err("F6 is refused");
     assert_eq!(refused.field, "integrator.method");
-    for i in [69, 129, 328, 418, 427, 514, 769, 858] {
+    // F3's scenes 69, 129 and 418 (starts near π/2 whose springs cannot tell separation from
+    // flat) are refused up front too (`sim::penalty_plan`).
+    for i in [69, 129, 418] {
+        let refused = parse("drawn.toml", &draw(1, i)).expect_err("F3 is refused");
+        assert_eq!(refused.field, "contact.stiffness", "scene {i}");
+    }
+    for i in [328, 427, 514, 769, 858] {
         let s = parse("drawn.toml", &draw(1, i)).expect("a valid scene");
         assert!(!selected(&s.contact, Some("rigid")), "scene {i}");
         assert!(selected(&s.contact, Some("penalty")), "scene {i}");

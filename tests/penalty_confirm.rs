@@ -12,7 +12,9 @@ use sliding_ladder::sim::integrators::Control;
 use sliding_ladder::sim::penalty::{
     preloaded_start, separate_with, separation, Contact, Law, PenaltyModel, OMEGA2,
 };
-use sliding_ladder::sim::penalty_confirm::{rigid_separation_angle, MODEL_CONSTANT};
+use sliding_ladder::sim::penalty_confirm::{
+    rigid_separation_angle, separation_bound, MODEL_CONSTANT,
+};
 use sliding_ladder::sim::scene::parse;
 use std::f64::consts::FRAC_PI_2;
 use std::process::Command;
@@ -138,18 +140,19 @@ fn scene(angle: &str, rate: &str, springs: (&str, &str), method: &str, tol: &str
 }
 
 /// F1 (dop853, θ0 = 1e-12, κ = 1e6, tolerance 1e-10 reported θ_s = 1.4e-12 with exit 0, then
-/// was refused up front) and F4 (radau5 from θ0 = 2.5e-315 with a push, refused as a
+/// was refused up front; at 1e-10 it is refused up front again since the plan holds explicit
+/// methods to τ ≤ F_w0/40 = 1.7e-11 at a tiny start, `sim::scene_work`: run here at 1e-11) and F4 (radau5 from θ0 = 2.5e-315 with a push, refused as a
 /// spurious zero although right) run and separate within the campaign judge's tolerance.
 #[test]
 fn the_campaign_findings_f1_and_f4_separate_where_the_rigid_ladder_does() {
     for (name, text) in [
         (
             "F1",
-            scene("1e-12", "0.0", ("1e6", "0.0"), "dop853", "1e-10"),
+            scene("1e-12", "0.0", ("1e6", "0.0"), "dop853", "1e-11"),
         ),
         (
             "F1'",
-            scene("1e-20", "0.0", ("1e6", "0.0"), "dopri5", "1e-10"),
+            scene("1e-20", "0.0", ("1e6", "0.0"), "dopri5", "1e-11"),
         ),
         // F4 in the scene's own units: κ = 4430, γ = 51.6, θ̇0 √(l/g) = 0.49.
         (
@@ -179,7 +182,9 @@ fn the_campaign_findings_f1_and_f4_separate_where_the_rigid_ladder_does() {
 }
 
 /// `ladder simulate` on a scene whose contact the integration does not resolve: exit 2, one
-/// line on stderr saying so, nothing on stdout.
+/// line on stderr saying so, nothing on stdout. The plan now refuses this scene up front (the
+/// starting wall force 7e-10 m g is below 40 τ, `sim::scene_work`); the run's own check behind
+/// it is shown above on the library.
 #[test]
 fn ladder_simulate_exits_2_on_an_unresolved_contact() {
     let dir = std::env::temp_dir().join(format!("ladder-penalty-confirm-{}", std::process::id()));
@@ -196,8 +201,68 @@ fn ladder_simulate_exits_2_on_an_unresolved_contact() {
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(
-        err.contains("the penalty contact was not resolved"),
+        err.contains(
+            "loose.toml:14: [integrator] tolerance: the wall force where the integration starts"
+        ) && err.contains("(a spurious separation)"),
         "{err}"
     );
     assert!(out.stdout.is_empty());
+}
+
+/// The campaign's judge holds a penalty separation to the penalty contact's error model
+/// (`separation_bound`), not to the old 10 (1 + γ)/κ: with κ = 1e4 and damping γ = 1e3 that
+/// allowed a whole radian; an angle moved by 1.01 times the stated bound is rejected, one moved
+/// by 0.99 times it is accepted.
+#[test]
+fn the_judge_holds_a_penalty_separation_to_the_contacts_error_model() {
+    let text = scene("0.3", "0.0", ("1e4", "1e3"), "radau5", "1e-10");
+    let sc = parse("s.toml", &text).unwrap();
+    let o = fall::run(&sc, fall::MAX_STEPS).expect("runs");
+    assert!(out_of_tolerance(&sc, &o).is_empty());
+    let rigid = rigid_separation_angle(0.3, 0.0);
+    let bound = separation_bound(1e4, rigid, o.work.wall.steps, 1e-10);
+    assert!(bound < 1e-3 && 10.0 * (1.0 + 1e3) / 1e4 > 1.0);
+    for (factor, flagged) in [(1.01, true), (0.99, false)] {
+        let mut moved = o.clone();
+        moved.separation.as_mut().unwrap().angle = rigid + factor * bound;
+        let problems = out_of_tolerance(&sc, &moved);
+        assert_eq!(!problems.is_empty(), flagged, "{factor}: {problems:?}");
+    }
+}
+
+/// F3 (penalty starts near π/2, campaign seed 1): scenes 69 (κ = 37 at the last float below
+/// π/2), 129 (κ = 1.3e6 at π/2 − 1.4e-9) and 418 (κ = 1.6e6 at π/2 − 2.1e-7: it "separated"
+/// at π/2 + 3.3e-7, inside the model's stated bound but past flat) are refused up front, exit 2
+/// naming the stiffness and why (`sim::penalty_plan`); scene 514 (κ = 1.9e4 at π/2 − 2.1e-4,
+/// whose model shift 7e-5 rad is below the 1.4e-4 rad left) runs, and so do stiffer springs
+/// from 1e-7 below flat: both separate between the start and flat, within the judge's bound.
+#[test]
+fn penalty_starts_near_the_floor_are_refused_or_right() {
+    use sliding_ladder::report::campaign::draw;
+    for i in [69, 129, 418] {
+        let e = parse("s.toml", &draw(1, i)).expect_err("refused");
+        assert_eq!(e.field, "contact.stiffness", "scene {i}");
+        assert!(
+            e.to_string()
+                .contains("cannot tell this start's separation from flat"),
+            "{e}"
+        );
+    }
+    let theta0 = FRAC_PI_2 - 1e-7;
+    let stiff = scene(
+        &format!("{theta0:?}"),
+        "0.0",
+        ("1e12", "0.0"),
+        "radau5",
+        "1e-12",
+    );
+    for sc in [
+        parse("s.toml", &draw(1, 514)).expect("scene 514 runs"),
+        parse("s.toml", &stiff).expect("runs"),
+    ] {
+        let o = fall::run(&sc, fall::MAX_STEPS).expect("separates");
+        let s = o.separation.expect("a separation");
+        assert!(out_of_tolerance(&sc, &o).is_empty());
+        assert!(s.angle > sc.theta0 && s.angle < FRAC_PI_2, "{}", s.angle);
+    }
 }

@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{with, BASE};
+use common::{with, BASE, PENALTY};
 use sliding_ladder::sim::output::Output;
 use sliding_ladder::sim::scene::{load, parse};
 
@@ -159,6 +159,11 @@ fn cases() -> Vec<(&'static str, String, String)> {
             "stiffness for rigid contact",
             with("model = \"rigid\"", "model = \"rigid\"\nstiffness = 1e8"),
             s("scene.toml:10: [contact] stiffness: only for model = \"penalty\"; allowed: no stiffness or damping with model = \"rigid\""),
+        ),
+        (
+            "penalty springs too soft",
+            PENALTY.replace("stiffness = 9.81e6", "stiffness = 19.62"),
+            s("scene.toml:10: [contact] stiffness: k l/(m g) = 2e0 is too soft: the springs sink by about m g/k = 0.500 l and their bounce lifts the foot off the floor before the wall lets go, which the penalty model does not follow; allowed: k l/(m g) ≥ 5 (k ≥ 4.9050e1 N/m)"),
         ),
         (
             "equilibrium",

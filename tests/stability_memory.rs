@@ -5,7 +5,7 @@
 //! must not run beside other tests. 1e3 and 1e5 steps always; 1e7 with `LADDER_SLOW=1`
 //! (`LADDER_SLOW=1 cargo test --release --test stability_memory -- --nocapture` prints them).
 
-use sliding_ladder::report::stability_extreme::memory_scene;
+use sliding_ladder::report::stability_long::memory_scene;
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::output::Output;
 use std::alloc::{GlobalAlloc, Layout, System};

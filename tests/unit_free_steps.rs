@@ -84,10 +84,10 @@ fn scene(ladder: Ladder, theta0: f64, method: &str, end: End) -> Scene {
         rate0: 0.0,
         method: method.into(),
         control,
+        order: None,
         end,
         outputs: vec![Output::SeparationAngle, Output::SeparationTime],
         contact: ContactModel::Rigid,
-        order: None,
     }
 }
 

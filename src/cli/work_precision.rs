@@ -90,9 +90,15 @@ pub fn work_precision(scene_paths: &[PathBuf], json: bool, out: Option<&Path>) -
 
 /// The table of one scene on stdout.
 fn print_report(rep: &SceneReport) {
+    // A built-in scene's name is its start, which the line gives anyway.
+    let name = if rep.scene.starts_with("(built in") {
+        "a built-in scene"
+    } else {
+        rep.scene.as_str()
+    };
     println!(
         "\nwork-precision for {} (θ0 = {}, θ̇0 = {}{})",
-        rep.scene,
+        name,
         rep.start.0,
         rep.start.1,
         if rep.to_flat {

@@ -1,5 +1,6 @@
 //! Reports: the work-precision sweep, output files written all-or-nothing, SVG plots.
 
+pub mod axis;
 pub mod campaign;
 pub mod campaign_judge;
 pub mod chart;
@@ -12,7 +13,9 @@ pub mod files;
 pub mod plot;
 pub mod stability;
 pub mod stability_case;
+pub mod stability_corners;
 pub mod stability_extreme;
+pub mod stability_long;
 pub mod stability_scale;
 pub mod stability_stiff;
 pub mod svg_chart;

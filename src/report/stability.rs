@@ -33,9 +33,9 @@ pub fn all_cases(mut tick: impl FnMut(&str, u64)) -> (Vec<Case>, stability_stiff
     cases.extend(stiff);
     cases.extend(stability_stiff::lagrange_cases(&mut tick));
     cases.extend(stability_extreme::extreme_cases(&mut tick));
-    cases.extend(stability_extreme::scale_cases(&mut tick));
+    cases.extend(super::stability_corners::scale_cases(&mut tick));
     cases.extend(super::stability_scale::sweep_cases(&mut tick));
-    cases.extend(stability_extreme::long_cases(&mut tick));
+    cases.extend(super::stability_long::long_cases(&mut tick));
     (cases, conv)
 }
 

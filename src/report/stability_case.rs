@@ -1,6 +1,10 @@
 //! One case of the stability report ([`super::stability`]) and its verdict: the types every
 //! group of cases (stiff, extreme, scale) builds, below the report that gathers them.
 
+use crate::sim::integrators::Control;
+use crate::sim::output::Output;
+use crate::sim::rigid::Ladder;
+use crate::sim::scene::{ContactModel, End, Scene};
 use serde::Serialize;
 
 /// `ok` or `fail`.
@@ -105,3 +109,36 @@ pub fn blank(group: &'static str, case: String, method: String, expected: String
 
 /// Unit roundoff u = 2⁻⁵³.
 pub const U: f64 = f64::EPSILON / 2.0;
+
+/// The tolerance of the built-in rigid scenes (dop853).
+pub const TOL: f64 = 1e-13;
+
+/// The unit ladder m = l = g = 1.
+pub const UNIT: Ladder = Ladder {
+    mass: 1.0,
+    half_length: 1.0,
+    gravity: 1.0,
+};
+
+/// A built-in rigid scene of the report: dop853 at [`TOL`] from (θ0, θ̇0) to `end`.
+pub fn built_in_scene(
+    ladder: Ladder,
+    theta0: f64,
+    rate0: f64,
+    end: End,
+    outputs: Vec<Output>,
+) -> Scene {
+    Scene {
+        file: "(built in: stability)".into(),
+        ladder,
+        theta0,
+        phi0: None,
+        rate0,
+        method: "dop853".into(),
+        control: Some(Control::Tolerance(TOL)),
+        order: None,
+        end,
+        outputs,
+        contact: ContactModel::Rigid,
+    }
+}

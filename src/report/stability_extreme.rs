@@ -1,5 +1,6 @@
-//! The extreme cases of `ladder stability`: the edges of the start domain, the equilibrium,
-//! m, l, g at 1e-30 and 1e30, and a 1e7-step run with nothing stored.
+//! The extreme cases of `ladder stability`: the edges of the start domain and the equilibrium
+//! (the corners of m, l, g are in [`super::stability_corners`], the 1e7-step run in
+//! [`super::stability_long`]).
 //!
 //! **Error measures and models.** Angles are judged by |cos θ_s − cos θ_s,theory| (absolute):
 //! well conditioned everywhere, whereas θ_s itself cannot be resolved better than an ulp of
@@ -11,7 +12,7 @@
 //! the time bound is then 10 N τ φ_s / (θ_s − θ0), about 20 N τ, even 1e-9 below flat (where
 //! the ladder moves only 3e-10 rad before it leaves; in θ the bound was 5e-3 there).
 
-use super::stability_case::{blank, Case, Verdict, U};
+use super::stability_case::{blank, built_in_scene as scene, Case, Verdict, TOL, U, UNIT};
 use crate::sim::complement;
 use crate::sim::exact::PhaseOne;
 use crate::sim::extreme::{wall_release, WallRelease};
@@ -19,17 +20,10 @@ use crate::sim::fall;
 use crate::sim::integrators::Control;
 use crate::sim::output::Output;
 use crate::sim::penalty::{separation, Contact, Law};
-use crate::sim::rigid::{floor_force, Ladder};
-use crate::sim::scene::{ContactModel, End, Scene};
+use crate::sim::rigid::Ladder;
+use crate::sim::scene::End;
 use std::f64::consts::FRAC_PI_2;
 use std::time::Instant;
-
-const TOL: f64 = 1e-13;
-const UNIT: Ladder = Ladder {
-    mass: 1.0,
-    half_length: 1.0,
-    gravity: 1.0,
-};
 
 /// cos θ_s from the energy integral (footnote 4 generalised, see `rigid::separation_cosine`),
 /// written out here in the form of the issue: 2/3 cos θ0 + 4 l θ̇0²/(9 g).
@@ -257,197 +251,4 @@ pub fn extreme_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
     }
     cases.push(s);
     cases
-}
-
-fn scene(ladder: Ladder, theta0: f64, rate0: f64, end: End, outputs: Vec<Output>) -> Scene {
-    Scene {
-        file: "(built in: stability)".into(),
-        ladder,
-        theta0,
-        phi0: None,
-        rate0,
-        method: "dop853".into(),
-        control: Some(Control::Tolerance(TOL)),
-        order: None,
-        end,
-        outputs,
-        contact: ContactModel::Rigid,
-    }
-}
-
-/// The scaled answers of a scene: (θ_s, t_s/√(l/g), θ̇_s √(l/g), F_f(θ_s)/(m g)).
-fn scaled(sc: &Scene) -> Result<([f64; 4], u64, u64), String> {
-    let o = fall::run(sc, 1_000_000).map_err(|e| e.to_string())?;
-    let s = o.separation.ok_or("no separation")?;
-    let l = &sc.ladder;
-    let unit = (l.half_length / l.gravity).sqrt();
-    let f = floor_force(l, s.angle, s.rate) / (l.mass * l.gravity);
-    let w = o.work.wall;
-    Ok((
-        [s.angle, s.time / unit, s.rate * unit, f],
-        w.steps,
-        w.rhs_evals,
-    ))
-}
-
-/// m, l, g at the corners of 1e-30..1e30: the unit-scale answers, scaled, to 1e-12.
-pub fn scale_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
-    let (theta0, push) = (0.3, 0.1);
-    let outputs = vec![Output::SeparationAngle, Output::SeparationTime];
-    let unit_scene = scene(
-        UNIT,
-        theta0,
-        push * UNIT.big_omega2().sqrt(),
-        End::Separation,
-        outputs.clone(),
-    );
-    let reference = scaled(&unit_scene);
-    let mut cases = Vec::new();
-    let (lo, hi) = (1e-30, 1e30);
-    let mut corners = Vec::new();
-    for m in [lo, hi] {
-        for l in [lo, hi] {
-            for g in [lo, hi] {
-                corners.push((m, l, g, false));
-            }
-        }
-    }
-    corners.extend([
-        (1.0, hi, lo, false),
-        (1.0, lo, hi, false),
-        (75.0, 2.0, 9.81, false),
-        (hi, 1.0, 1.0, false),
-        (lo, hi, lo, true),
-        (hi, lo, hi, true),
-    ]);
-    let penalty = |sc: &mut Scene| {
-        let l = sc.ladder;
-        // κ = k l/(m g) = 1e4, formed as (1e4 m)(g/l) to stay within range; κ tol = 1e-9
-        // keeps an explicit method accurate (see `stability_stiff`).
-        sc.contact = ContactModel::Penalty {
-            stiffness: 1e4 * l.mass * (l.gravity / l.half_length),
-            damping: 0.0,
-        };
-    };
-    let mut unit_penalty = unit_scene.clone();
-    penalty(&mut unit_penalty);
-    let penalty_reference = scaled(&unit_penalty);
-    for (m, l, g, with_penalty) in corners {
-        tick("scale", 1);
-        let ladder = Ladder {
-            mass: m,
-            half_length: l,
-            gravity: g,
-        };
-        let mut c = blank(
-            "scale",
-            format!("m={m:e} l={l:e} g={g:e}"),
-            "dop853 tol 1e-13".into(),
-            "unit-scale θ_s, t_s·√(l/g), θ̇_s/√(l/g), F_f·m g".into(),
-        );
-        let rate0 = push * ladder.big_omega2().sqrt();
-        let mut sc = scene(ladder, theta0, rate0, End::Separation, outputs.clone());
-        let mut reference = &reference;
-        if with_penalty {
-            penalty(&mut sc);
-            reference = &penalty_reference;
-            c.case += ", penalty κ=1e4";
-        }
-        let t = Instant::now();
-        let got = scaled(&sc);
-        c.seconds = t.elapsed().as_secs_f64();
-        match (reference, &got) {
-            (Ok((r, ..)), Ok((v, steps, rhs))) => {
-                let (steps, rhs) = (*steps, *rhs);
-                (c.steps, c.rhs_evals) = (steps, rhs);
-                c.value = format!("θ_s = {:.15}, t_s/√(l/g) = {:.15}", v[0], v[1]);
-                let err = (0..4)
-                    .map(|i| ((v[i] - r[i]) / r[i]).abs())
-                    .fold(0.0, f64::max);
-                // Rigid: the issue's 1e-12. Penalty: κ = (k/m)(l/g) and θ̇0 √(l/g) are rounded
-                // differently at each scale, which changes the adaptive step sequence; both runs
-                // then agree to their integration error, 2 × 10 N τ.
-                let bound = if with_penalty {
-                    (20.0 * steps as f64 * TOL).max(1e-12)
-                } else {
-                    1e-12
-                };
-                c.judge(err, bound);
-            }
-            (Err(e), _) | (_, Err(e)) => c.reason = e.clone(),
-        }
-        cases.push(c);
-    }
-    cases
-}
-
-/// Peak resident memory of this process (Linux `VmHWM`), kB; None elsewhere.
-pub fn peak_rss_kb() -> Option<u64> {
-    let s = std::fs::read_to_string("/proc/self/status").ok()?;
-    let line = s.lines().find(|l| l.starts_with("VmHWM:"))?;
-    line.split_whitespace().nth(1)?.parse().ok()
-}
-
-/// The scalar-only scene of the memory runs: rk4 at 1e-6 s on a 20 km ladder (its wall phase
-/// lasts ~70 s), to `seconds`, asking only for the final state: `seconds`·1e6 steps.
-pub fn memory_scene(seconds: f64) -> Scene {
-    let mut sc = scene(
-        Ladder {
-            mass: 1.0,
-            half_length: 1e4,
-            gravity: 9.81,
-        },
-        0.3,
-        0.0,
-        End::Time(seconds),
-        vec![Output::FinalState],
-    );
-    sc.method = "rk4".into();
-    sc.control = Some(Control::Fixed(1e-6));
-    sc
-}
-
-/// 1e7 steps with nothing stored: the angle against the exact reference, the memory flat.
-pub fn long_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
-    tick("long run 1e7 steps", 2);
-    let mut c = blank(
-        "long",
-        "scalar-only scene, 1e7 steps".into(),
-        "rk4 h 1e-6 s".into(),
-        "θ(10 s) of the exact reference; peak memory flat".into(),
-    );
-    let before = peak_rss_kb();
-    let t = Instant::now();
-    let run = fall::run(&memory_scene(10.0), 20_000_000);
-    c.seconds = t.elapsed().as_secs_f64();
-    let after = peak_rss_kb();
-    match run {
-        Err(e) => c.reason = e.to_string(),
-        Ok(o) => {
-            let sc = memory_scene(10.0);
-            c.steps = o.work.wall.steps;
-            c.rhs_evals = o.work.wall.rhs_evals;
-            let reference = PhaseOne::new(0.3, 0.0, sc.ladder.big_omega2()).map(|p| p.theta(10.0));
-            let growth = before.zip(after).map(|(b, a)| a.saturating_sub(b));
-            c.value = format!(
-                "θ = {:.15}, samples kept {}, peak RSS growth {} kB (from {} kB)",
-                o.last.1,
-                o.work.stored_samples,
-                growth.map_or("n/a".into(), |g| g.to_string()),
-                before.map_or("n/a".into(), |b| b.to_string())
-            );
-            match reference {
-                // Rounding: N steps each adding ~u θ, worst case without cancellation; the
-                // truncation error h⁵ per step is far below it.
-                Ok(r) => c.judge((o.last.1 - r).abs(), 10.0 * c.steps as f64 * U * r),
-                Err(e) => c.reason = e,
-            }
-            // Storing the 1e7 states would take ≥ 80 MB; 1 MB of growth is the budget.
-            if growth.is_some_and(|g| g > 1024) || o.work.stored_samples > 0 {
-                c.verdict = Verdict::Fail;
-                c.reason = "memory grew with the number of steps".into();
-            }
-        }
-    }
-    vec![c]
 }

@@ -8,6 +8,7 @@
 //! axes label mantissas (1, 2, 5) rather than decades. A chart is a few hundred lines of SVG
 //! text, and owning it keeps the palette and layout the same in every figure.
 
+pub use super::axis::{decade_label, Axis};
 use super::chart::{Chart, Series};
 use super::svg_text::esc;
 use std::fmt::Write;
@@ -25,106 +26,63 @@ const LEFT: f64 = 84.0;
 const RIGHT: f64 = 200.0;
 const TOP: f64 = 44.0;
 const BOTTOM: f64 = 58.0;
-
-/// `10` to the integer power `k`, as text with Unicode superscripts: 10⁻¹².
-pub fn decade_label(k: i32) -> String {
-    const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
-    let mut s = String::from("10");
-    if k < 0 {
-        s.push('⁻');
-    }
-    for d in k.unsigned_abs().to_string().bytes() {
-        s.push(SUP[(d - b'0') as usize]);
-    }
-    s
-}
-
-/// One axis: its range in plotted units (log10 of the data on a log axis) and its ticks.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Axis {
-    /// Lower end, plotted units.
-    pub lo: f64,
-    /// Upper end, plotted units.
-    pub hi: f64,
-    /// Ticks: (position in plotted units, label).
-    pub ticks: Vec<(f64, String)>,
-    /// Logarithmic.
-    pub log: bool,
-}
-
-impl Axis {
-    /// The axis through `values` (data units; non-positive values are left out on a log axis).
-    pub fn fit(values: impl Iterator<Item = f64>, log: bool) -> Axis {
-        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-        for v in values.filter(|v| v.is_finite() && (!log || *v > 0.0)) {
-            let v = if log { v.log10() } else { v };
-            lo = lo.min(v);
-            hi = hi.max(v);
-        }
-        if !lo.is_finite() {
-            (lo, hi) = (0.0, 1.0);
-        }
-        if log {
-            let (a, b) = (lo.floor(), hi.ceil().max(lo.floor() + 1.0));
-            let every = ((b - a) / 8.0).ceil().max(1.0);
-            let first = (a / every).ceil() * every;
-            let ticks = (0..)
-                .map(|i| first + i as f64 * every)
-                .take_while(|&k| k <= b + 1e-9)
-                .map(|k| (k, decade_label(k as i32)))
-                .collect();
-            return Axis {
-                lo: a,
-                hi: b,
-                ticks,
-                log,
-            };
-        }
-        if hi - lo < 1e-300 {
-            let pad = 0.5 * lo.abs().max(1.0);
-            (lo, hi) = (lo - pad, hi + pad);
-        }
-        let pad = 0.04 * (hi - lo);
-        let (lo, hi) = (lo - pad, hi + pad);
-        let raw = (hi - lo) / 6.0;
-        let mag = 10f64.powf(raw.log10().floor());
-        let step = [1.0, 2.0, 5.0, 10.0]
-            .iter()
-            .map(|m| m * mag)
-            .find(|s| *s >= raw)
-            .unwrap_or(10.0 * mag);
-        let decimals = (-step.log10().floor()).max(0.0) as usize;
-        let first = (lo / step).ceil();
-        let ticks = (0..)
-            .map(|i| (first + i as f64) * step)
-            .take_while(|&v| v <= hi)
-            .map(|v| {
-                let v = if v.abs() < step * 1e-9 { 0.0 } else { v };
-                (v, format!("{v:.decimals$}").replace('-', "−"))
-            })
-            .collect();
-        Axis { lo, hi, ticks, log }
-    }
-
-    /// A data value in plotted units (None when it cannot be shown on this axis).
-    pub fn map(&self, v: f64) -> Option<f64> {
-        match (self.log, v.is_finite()) {
-            (true, true) if v > 0.0 => Some(v.log10()),
-            (false, true) => Some(v),
-            _ => None,
-        }
-    }
-}
+/// The right margin of a panel whose legend is the figure's shared one.
+const SHARED_RIGHT: f64 = 28.0;
 
 /// Draw `chart` with `series` as an SVG group of size `w` × `h`; `id` makes clip ids unique.
 pub fn chart_svg(chart: &Chart, series: &[Series], w: f64, h: f64, id: &str) -> String {
+    panel_svg(chart, series, w, h, id, None)
+}
+
+/// (colour and marker index, dashed, markers) of `ser` in `chart`: a peer borrows its partner's
+/// colour. `shared` is the figure's legend order when several panels share one legend, so a
+/// method keeps its colour in every panel; otherwise a series' colour is its place in `series`.
+fn style(
+    chart: &Chart,
+    series: &[Series],
+    shared: Option<&[String]>,
+    i: usize,
+    ser: &Series,
+) -> (usize, &'static str, bool) {
+    let slot = |name: &str| match shared {
+        Some(names) => names.iter().position(|n| n == name),
+        None => series.iter().position(|s| s.name == name),
+    };
+    let partner = chart
+        .peers
+        .iter()
+        .find(|(p, _)| *p == ser.name)
+        .and_then(|(_, of)| slot(of));
+    let own = shared.and_then(|_| slot(&ser.name)).unwrap_or(i);
+    match partner {
+        Some(j) => (j, " stroke-dasharray=\"7 4\"", chart.markers),
+        None if chart.dashed.contains(&ser.name) => (own, " stroke-dasharray=\"7 4\"", false),
+        None => (own, "", chart.markers),
+    }
+}
+
+/// The chart as [`chart_svg`] draws it; with `shared` (see [`style`]) it leaves out its own
+/// legend column, since the figure draws one legend for all its panels.
+fn panel_svg(
+    chart: &Chart,
+    series: &[Series],
+    w: f64,
+    h: f64,
+    id: &str,
+    shared: Option<&[String]>,
+) -> String {
     let s = &chart.spec;
     let xs = series.iter().flat_map(|p| p.points.iter().map(|q| q.0));
     let marks = chart.marks.iter().map(|m| m.x);
     let x = Axis::fit(xs.chain(s.vlines.iter().copied()).chain(marks), chart.log_x);
     let ys = series.iter().flat_map(|p| p.points.iter().map(|q| q.1));
     let y = Axis::fit(ys.chain(s.hlines.iter().copied()), chart.log_y);
-    let (x0, x1, y0, y1) = (LEFT, w - RIGHT, TOP, h - BOTTOM);
+    let right = if shared.is_some() {
+        SHARED_RIGHT
+    } else {
+        RIGHT
+    };
+    let (x0, x1, y0, y1) = (LEFT, w - right, TOP, h - BOTTOM);
     let px = |v: f64| x0 + (v - x.lo) / (x.hi - x.lo) * (x1 - x0);
     let py = |v: f64| y1 - (v - y.lo) / (y.hi - y.lo) * (y1 - y0);
     let mut o = String::new();
@@ -201,36 +159,29 @@ pub fn chart_svg(chart: &Chart, series: &[Series], w: f64, h: f64, id: &str) -> 
     // The front first, under every method's line.
     let front = |ser: &&Series| chart.front.as_deref() == Some(ser.name.as_str());
     for ser in series.iter().filter(front) {
-        let line: Vec<String> = ser
+        let pts: Vec<(f64, f64)> = ser
             .points
             .iter()
             .filter_map(|&(a, b)| Some((px(x.map(a)?), py(y.map(b)?))))
+            .collect();
+        let line: Vec<String> = thin(&pts)
+            .iter()
             .map(|(a, b)| format!("{a:.2},{b:.2}"))
             .collect();
         let _ = write!(o, "<polyline fill=\"none\" stroke=\"{FRONT}\" stroke-width=\"9\" stroke-linejoin=\"round\" stroke-linecap=\"round\" points=\"{}\"/>", line.join(" "));
     }
-    // (colour and marker index, dashed, markers) of each series: a peer borrows its partner's.
-    let style = |i: usize, ser: &Series| {
-        let partner = chart
-            .peers
-            .iter()
-            .find(|(p, _)| *p == ser.name)
-            .and_then(|(_, of)| series.iter().position(|s| s.name == *of));
-        match partner {
-            Some(j) => (j, " stroke-dasharray=\"7 4\"", chart.markers),
-            None if chart.dashed.contains(&ser.name) => (i, " stroke-dasharray=\"7 4\"", false),
-            None => (i, "", chart.markers),
-        }
-    };
     for (i, ser) in series.iter().enumerate().filter(|(_, s)| !front(s)) {
-        let (k, dash, markers) = style(i, ser);
+        let (k, dash, markers) = style(chart, series, shared, i, ser);
         let color = PALETTE[k % PALETTE.len()];
         let pts: Vec<(f64, f64)> = ser
             .points
             .iter()
             .filter_map(|&(a, b)| Some((px(x.map(a)?), py(y.map(b)?))))
             .collect();
-        let line: Vec<String> = pts.iter().map(|(a, b)| format!("{a:.2},{b:.2}")).collect();
+        let line: Vec<String> = thin(&pts)
+            .iter()
+            .map(|(a, b)| format!("{a:.2},{b:.2}"))
+            .collect();
         let _ = write!(o, "<polyline fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"{dash} stroke-linejoin=\"round\" points=\"{}\"/>", line.join(" "));
         if markers {
             for (a, b) in &pts {
@@ -239,29 +190,89 @@ pub fn chart_svg(chart: &Chart, series: &[Series], w: f64, h: f64, id: &str) -> 
         }
     }
     o.push_str("</g>");
-    // The legend, in its own column.
-    let lx = x1 + 14.0;
-    for (i, ser) in series.iter().enumerate() {
-        let (k, dash, markers) = style(i, ser);
-        let color = PALETTE[k % PALETTE.len()];
-        let ly = y0 + 10.0 + 20.0 * i as f64;
-        if front(&ser) {
-            let _ = write!(o, "<line x1=\"{lx:.1}\" y1=\"{ly:.1}\" x2=\"{:.1}\" y2=\"{ly:.1}\" stroke=\"{FRONT}\" stroke-width=\"9\" stroke-linecap=\"round\"/><text x=\"{:.1}\" y=\"{:.1}\" font-size=\"13\">{}</text>", lx + 26.0, lx + 32.0, ly + 4.0, esc(&ser.name));
-            continue;
+    if shared.is_none() {
+        // The legend, in its own column.
+        for (i, ser) in series.iter().enumerate() {
+            let ly = y0 + 10.0 + 20.0 * i as f64;
+            legend_entry(
+                &mut o,
+                x1 + 14.0,
+                ly,
+                ser,
+                front(&ser),
+                style(chart, series, None, i, ser),
+            );
         }
+    }
+    o
+}
+
+/// One legend entry at (`lx`, `ly`): a short stretch of the series' line (or the front's band)
+/// with its marker, then its name.
+fn legend_entry(
+    o: &mut String,
+    lx: f64,
+    ly: f64,
+    ser: &Series,
+    front: bool,
+    st: (usize, &str, bool),
+) {
+    let (k, dash, markers) = st;
+    let color = PALETTE[k % PALETTE.len()];
+    if front {
+        let _ = write!(o, "<line x1=\"{lx:.1}\" y1=\"{ly:.1}\" x2=\"{:.1}\" y2=\"{ly:.1}\" stroke=\"{FRONT}\" stroke-width=\"9\" stroke-linecap=\"round\"/>", lx + 26.0);
+    } else {
         let _ = write!(o, "<line x1=\"{lx:.1}\" y1=\"{ly:.1}\" x2=\"{:.1}\" y2=\"{ly:.1}\" stroke=\"{color}\" stroke-width=\"2\"{dash}/>", lx + 26.0);
         if markers {
             o.push_str(&marker(k, lx + 13.0, ly, color));
         }
-        let _ = write!(
-            o,
-            "<text x=\"{:.1}\" y=\"{:.1}\" font-size=\"13\">{}</text>",
-            lx + 32.0,
-            ly + 4.0,
-            esc(&ser.name)
-        );
     }
-    o
+    let _ = write!(
+        o,
+        "<text x=\"{:.1}\" y=\"{:.1}\" font-size=\"13\">{}</text>",
+        lx + 32.0,
+        ly + 4.0,
+        esc(&ser.name)
+    );
+}
+
+/// The points of a polyline (pixels) worth drawing: of each run of consecutive points in one
+/// half-pixel column, the first, the lowest, the highest and the last, in their order. The line
+/// looks the same at this resolution, and a trace of 1e5 steps stays a few thousand points
+/// (one point per step made 20 MB files).
+pub fn thin(pts: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let mut out = Vec::with_capacity(pts.len().min(4096));
+    let mut i = 0;
+    while i < pts.len() {
+        let col = (2.0 * pts[i].0).floor();
+        let mut j = i;
+        while j + 1 < pts.len() && (2.0 * pts[j + 1].0).floor() == col {
+            j += 1;
+        }
+        let run = &pts[i..=j];
+        let by_y = |a: &&(f64, f64), b: &&(f64, f64)| a.1.total_cmp(&b.1);
+        let lo = run
+            .iter()
+            .enumerate()
+            .min_by(|a, b| by_y(&a.1, &b.1))
+            .map_or(0, |m| m.0);
+        let hi = run
+            .iter()
+            .enumerate()
+            .max_by(|a, b| by_y(&a.1, &b.1))
+            .map_or(0, |m| m.0);
+        let mut keep = [0, lo, hi, run.len() - 1];
+        keep.sort_unstable();
+        let mut last = usize::MAX;
+        for k in keep {
+            if k != last {
+                out.push(run[k]);
+                last = k;
+            }
+        }
+        i = j + 1;
+    }
+    out
 }
 
 /// A marker whose shape, like the colour, tells the series apart (also in grey print).
@@ -274,11 +285,33 @@ fn marker(i: usize, x: f64, y: f64, color: &str) -> String {
     }
 }
 
-/// A whole SVG document of `panels` in a grid two wide, each `pw` × `ph`.
+/// Width of one entry of a figure's shared legend, px.
+const ENTRY: f64 = 210.0;
+
+/// A whole SVG document of `panels` in a grid two wide, each `pw` × `ph`. Several panels share
+/// one legend, in rows under the grid, rather than each giving a quarter of its width to a copy.
 pub fn document(panels: &[(Chart, Vec<Series>)], pw: f64, ph: f64) -> String {
     let cols = panels.len().clamp(1, 2);
     let rows = panels.len().div_ceil(cols).max(1);
-    let (w, h) = (pw * cols as f64, ph * rows as f64);
+    // The figure's series in first-seen order, each with the panel that styles its entry.
+    let mut names: Vec<String> = Vec::new();
+    let mut owner: Vec<(usize, usize)> = Vec::new();
+    for (k, (_, series)) in panels.iter().enumerate() {
+        for (i, ser) in series.iter().enumerate() {
+            if !names.contains(&ser.name) {
+                names.push(ser.name.clone());
+                owner.push((k, i));
+            }
+        }
+    }
+    let shared = (panels.len() > 1).then_some(names.as_slice());
+    let w = pw * cols as f64;
+    let per_row = ((w - 2.0 * LEFT) / ENTRY).floor().max(1.0) as usize;
+    let strip = match shared {
+        Some(n) => 20.0 + 22.0 * n.len().div_ceil(per_row) as f64,
+        None => 0.0,
+    };
+    let h = ph * rows as f64 + strip;
     let mut o = format!(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" \
 font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n"
@@ -290,8 +323,32 @@ font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n"
             "<g transform=\"translate({},{})\">{}</g>",
             pw * c as f64,
             ph * r as f64,
-            chart_svg(chart, series, pw, ph, &format!("p{k}"))
+            panel_svg(chart, series, pw, ph, &format!("p{k}"), shared)
         );
+    }
+    if let Some(n) = shared {
+        let top = ph * rows as f64;
+        let _ = write!(
+            o,
+            "<rect x=\"0\" y=\"{top}\" width=\"{w}\" height=\"{strip}\" fill=\"white\"/>"
+        );
+        for (e, &(k, i)) in owner.iter().enumerate() {
+            let (chart, series) = &panels[k];
+            let ser = &series[i];
+            let front = chart.front.as_deref() == Some(ser.name.as_str());
+            let (lx, ly) = (
+                LEFT + ENTRY * (e % per_row) as f64,
+                top + 14.0 + 22.0 * (e / per_row) as f64,
+            );
+            legend_entry(
+                &mut o,
+                lx,
+                ly,
+                ser,
+                front,
+                style(chart, series, Some(n), i, ser),
+            );
+        }
     }
     o.push_str("</svg>\n");
     o

@@ -20,6 +20,13 @@
 
 use super::integrators::taylor::Series;
 
+/// Most iterations of the root finders: enough to bisect from any positive f64 down to the
+/// smallest (2098 halvings) and resolve the last binade. A bracket [0, h] whose root lies many
+/// binades below h (a separation 1e-137 into a fixed step of 1, from a start 1e-273 rad from
+/// the floor) needs ~440 halvings before Newton or interpolation can take over; with 200 the
+/// finders stopped short and returned a time ~1e-60, far past the root (issue 17, F7).
+const MAX_ITERATIONS: usize = 2200;
+
 /// Which sign changes count.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Direction {
@@ -91,7 +98,7 @@ pub fn newton_in_bracket(
         b
     };
     let (mut dx, mut dx_old) = ((b - a).abs(), (b - a).abs());
-    for _ in 0..200 {
+    for _ in 0..MAX_ITERATIONS {
         let (v, d) = f(t)?;
         if v == 0.0 {
             return Some(t);
@@ -138,7 +145,7 @@ pub fn crosses(dir: Direction, before: f64, after: f64) -> bool {
 }
 
 /// Brent's root finder on `[a, b]` with `f(a)`, `f(b)` of opposite signs (or one zero).
-/// Iterates until the bracket is as narrow as f64 allows; at most 200 iterations.
+/// Iterates until the bracket is as narrow as f64 allows; at most [`MAX_ITERATIONS`] iterations.
 /// (R. P. Brent, *Algorithms for Minimization without Derivatives*, 1973, ch. 4, `zero`.)
 pub fn brent(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, mut fa: f64, mut fb: f64) -> f64 {
     if fa == 0.0 {
@@ -150,7 +157,7 @@ pub fn brent(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, mut fa: f64, mut fb
     let (mut c, mut fc) = (a, fa);
     let mut d = b - a;
     let mut e = d;
-    for _ in 0..200 {
+    for _ in 0..MAX_ITERATIONS {
         if (fb > 0.0) == (fc > 0.0) {
             c = a;
             fc = fa;

@@ -215,6 +215,13 @@ fn run_rigid(
         // The floor phase runs in φ = π/2 − θ (see `super::complement`).
         let floor_sys = complement::ComplementFloor::new(&ladder);
         let phi_s = phi_s.unwrap_or_else(|| complement::complement(sep.angle));
+        // The factor's zero has sin φ_s = φ̇_s²/Ω² ≥ 0; a φ_s ≤ 0 (rounding at subnormal sizes)
+        // would leave the floor phase no flat to cross: say so, never run on past flat.
+        if phi_s <= 0.0 {
+            return Err(RunError::Start(format!(
+                "the separation was located at or past flat (π/2 − θ = {phi_s:e} rad): the start is too close to the floor for f64"
+            )));
+        }
         let y_s = complement::floor_state_at_separation(&ladder, phi_s, sep.rate);
         let mut stepper2 =
             AnyStepper::with_order(&scene.method, control, scene.order, sep.time, y_s).ok_or_else(

@@ -9,7 +9,8 @@
 //! phase driver), [`fall`] (a whole scene; what it watches in `fall_observer`); the `ladder
 //! simulate` command lives in `crate::cli`.
 //! Stiff and extreme cases: [`penalty`] (the ladder on one-sided springs, beyond the note),
-//! [`penalty_confirm`] (when its separation is believed) and [`penalty_scene`] (scenes with
+//! [`penalty_confirm`] (when its separation is believed), [`penalty_plan`] (which it could not
+//! tell, refused up front) and [`penalty_scene`] (scenes with
 //! `contact.model = "penalty"`), [`constrained`] (full coordinates with Lagrange multipliers
 //! and their drift), [`extreme`] (the wall phase at the edges of its domain: equilibrium,
 //! immediate release, any scale; a tiny start's linear growth in [`lead_in`]), [`complement`]
@@ -30,6 +31,7 @@ pub mod outcome;
 pub mod output;
 pub mod penalty;
 pub mod penalty_confirm;
+pub mod penalty_plan;
 pub mod penalty_scene;
 pub mod penalty_start;
 pub mod rigid;

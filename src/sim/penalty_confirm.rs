@@ -26,9 +26,9 @@
 //!   beyond the O(1) factors that the 10 covers. The u term is F2's: many small fixed steps;
 //! * **rounding** of the reported angle and of θ_r: 10 u.
 //!
-//! |θ_s − θ_r| ≤ 4/(κ sin θ_r) + 10 N (τ + u) + 10 u. The integration term is the error
-//! model of the campaign's judge (`report::campaign_judge`) and `ladder stability`; their
-//! model term 10 (1 + γ)/κ is wider than this one except where θ_r is small. A zero outside it is spurious: an unstable or too loose integration whose force
+//! |θ_s − θ_r| ≤ 4/(κ sin θ_r) + 10 N (τ + u) + 10 u. The campaign's judge
+//! (`report::campaign_judge`) holds the reported angle to this same bound. A zero outside it is
+//! spurious: an unstable or too loose integration whose force
 //! error (~ τ m g a step) swamped the wall force (~ (3/4) θ m g near θ = 0, ~ (3/4) φ m g near
 //! π/2), as at a tiny start with an explicit method (the campaign's F1: θ_s ≈ θ0). What this
 //! check cannot see is a zero within the bound: when the bound is wide (small κ, many loose

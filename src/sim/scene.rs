@@ -9,6 +9,7 @@
 use super::integrators::Control;
 use super::output::Output;
 use super::rigid::Ladder;
+pub use super::scene_checks::SOFTEST_CONTACT;
 use super::scene_checks::{
     check_contact, check_end, check_integrator, check_outputs, check_penalty,
 };

@@ -10,6 +10,8 @@
 //!   dashpot's rate); a fixed step must resolve it, h ω ≤ 0.2, or it is unstable or inaccurate
 //!   (the spurious zeros and lift-offs the campaign found). Explicit Euler also gains energy by
 //!   a factor 1 + (h ω)² a step, e^{h ω² t_s} over the phase: it needs h ω² t_s ≤ 0.02.
+//! * **A penalty start the springs cannot tell from flat** (F3): the model's own shift of the
+//!   separation exceeds the rigid separation's distance from flat (`super::penalty_plan`).
 //! * **An explicit adaptive method on penalty springs** takes the most of three counts, more
 //!   than [`MAX_STEPS`] is refused (the campaign's F6: dopri5 at tolerance 1.9e-16 on κ = 1.5e7
 //!   took 1.18e6 steps where the stability count alone said 7.7e3; dop853 at 2.8e-16 on
@@ -30,10 +32,35 @@
 //!   accuracy and rounding counts meet (dop853, κ = 1e4, τ = 1e-15: 4.6e3 for 2.25e3);
 //!   `tests/scene_work.rs` holds it against runs. radau5 is not held: its steps follow its
 //!   tolerance (the lead-in and its controller keep them to thousands up to κ = 1e12).
+//! * **An explicit adaptive method whose tolerance exceeds the starting wall force, far from
+//!   the separation**: its error control holds each spring force to τ m g a step (absolute:
+//!   `PenaltyModel::scale`), so a wall force F_w0 of the order of τ where the integration
+//!   starts (the lead-in's hand-over at θ ≈ 9.3e-10 for a tiny start) is not resolved: the
+//!   force errors excite the contact's vibration by about the wall force itself and it
+//!   crosses zero at once (the campaign's scenes 714, 1031, 1502 of seed 1: zeros near
+//!   θ = 1e-9, 0.84 rad from the rigid separation). Measured with dopri5 and dop853 (8,405
+//!   random runs: κ = 3..1e9, γ = 0 or 1e-3..10 √κ, tiny, ordinary and near-π/2 starts,
+//!   pushes, F_w0/τ = 10^U(−1.5, 3); and a grid of τ = 1e-1..1e-14): spurious zeros up to
+//!   F_w0/τ = 12.1 (dop853, κ = 3.6e4, θ0 = 1e-20, τ = 5.8e-11; dopri5 up to 3.6), none in
+//!   the 3,310 runs above it (3,034 separated within the bound, 276 stopped at the sweeps'
+//!   step caps; `tests/penalty_refusals.rs` reruns it). Above F_w0/τ ≈ 1 the spurious
+//!   zeros are isolated (a 1% change of κ or τ removes each), chance failures of the error
+//!   estimate rather than a region: hence the margin. Refused below
+//!   F_w0/τ = [`RESOLVED_WALL_FORCE`] = 40, a margin of 3.3, where a zero at the start would
+//!   lie outside the stated bound of the rigid separation angle θ_r
+//!   (`penalty_confirm::separation_bound` with N = 1 step). Near π/2, or pushed to the wall's
+//!   limit, F_w0 is small because the separation is near (θ_r ≈ θ0): an early zero is then
+//!   within what the tolerance promised (1,378 such runs with F_w0/τ < 20, all within the
+//!   bound), and those are not refused. radau5 is not held: it damps the vibration in every
+//!   step (L-stable, stiffly accurate) and had no spurious zero in the same sweep.
 
 use super::exact::{flat::floor_duration, PhaseOne};
 use super::integrators::Control;
+use super::lead_in::linear_lead_in;
 use super::penalty::Contact;
+use super::penalty_confirm::{rigid_separation_angle, separation_bound};
+use super::penalty_plan::too_close_to_flat;
+use super::penalty_start::{rigid_forces, OMEGA2};
 use super::rigid::Ladder;
 use super::scene_errors::{Ctx, SceneError};
 use super::scene_parts::{ContactModel, End, RawIntegrator, MAX_STEPS};
@@ -47,6 +74,16 @@ const MAX_STEP_FREQUENCY: f64 = 0.2;
 /// (method, q + 1 of its error estimate, a, b).
 const EXPLICIT_FITS: [(&str, f64, f64, f64); 2] =
     [("dopri5", 5.0, 0.3, 0.05), ("dop853", 8.0, 0.3, 2.5)];
+/// Least F_w0/τ an explicit adaptive method needs on penalty springs (module docs).
+pub const RESOLVED_WALL_FORCE: f64 = 40.0;
+
+/// The angle (rad) where a penalty run's integration starts from (θ0, θ̇0) (dimensionless) and
+/// the rigid wall force (m g) there: at the lead-in's hand-over for a tiny start
+/// (`sim::lead_in`), as `penalty::separation` does.
+pub fn starting_wall_force(theta0: f64, rate0: f64) -> (f64, f64) {
+    let (_, theta, rate) = linear_lead_in(OMEGA2, theta0, rate0).unwrap_or((0.0, theta0, rate0));
+    (theta, rigid_forces(theta, rate).0)
+}
 
 /// Steps of an explicit adaptive `method` at tolerance `tol` over `t` (units of √(l/g)) on
 /// springs of stiffness κ vibrating at up to ω: the most of the stability, accuracy and
@@ -181,7 +218,35 @@ pub(super) fn check_work(
                     ),
                 ));
             }
-            Control::Tolerance(_) => {}
+            Control::Tolerance(tol) => {
+                let rate = start.1 * unit;
+                let (theta_i, fw0) = starting_wall_force(start.0, rate);
+                let rigid = rigid_separation_angle(start.0, rate);
+                let to_go = (rigid - theta_i).abs();
+                let (least, largest) = (RESOLVED_WALL_FORCE * tol, fw0 / RESOLVED_WALL_FORCE);
+                if method != "radau5"
+                    && fw0 > 0.0
+                    && tol > largest
+                    && to_go > separation_bound(kappa, rigid, 1, tol)
+                {
+                    return Err(cx.err(
+                        i.tolerance.as_ref().map(|t| t.span()),
+                        "integrator.tolerance",
+                        format!(
+                            "the wall force where the integration starts is {fw0:.3e} m g, below {RESOLVED_WALL_FORCE} times the tolerance ({least:.3e} m g), {to_go:.3e} rad before the separation: \"{method}\" holds the spring forces to the tolerance a step, so its errors excite the contact's vibration (κ = {kappa:e}) by about the wall force and the force crosses zero at once (a spurious separation); allowed: tolerance ≤ {largest:e}, or method = \"radau5\""
+                        ),
+                    ));
+                }
+            }
+        }
+        // A start near the floor the springs cannot tell from flat (F3, `super::penalty_plan`).
+        if let Some(m) = too_close_to_flat(kappa, (start.0, start.1 * unit)) {
+            let line = cx
+                .text
+                .lines()
+                .position(|l| l.trim_start().starts_with("stiffness"))
+                .map_or(1, |i| i + 1);
+            return Err(cx.err_at_line(line, "contact.stiffness", m));
         }
     }
     let Control::Fixed(h) = control else {

@@ -35,7 +35,7 @@ impl StartAngle {
 }
 
 const ALLOWED: &str =
-    "one of angle (θ0 in [0, π/2) rad) or angle_from_floor (π/2 − θ0 in (0, π/2] rad)";
+    "one of angle (θ0 in [0, π/2) rad) or angle_from_floor (π/2 − θ0 in [2.2e-308, π/2] rad)";
 
 /// The line of the `[start]` header (for an error about the section as a whole).
 fn header_line(cx: &Ctx) -> usize {
@@ -72,8 +72,8 @@ pub(super) fn start_angle(cx: &Ctx, s: &RawStart) -> Result<StartAngle, SceneErr
             let phi0 = cx.number(
                 b,
                 "start.angle_from_floor",
-                |x| x > 0.0 && x <= FRAC_PI_2,
-                "π/2 − θ0 in (0, π/2] rad, e.g. 1e-12",
+                |x| (f64::MIN_POSITIVE..=FRAC_PI_2).contains(&x),
+                "π/2 − θ0 in [2.2250738585072014e-308, π/2] rad (a subnormal φ0 has too few significant bits for the separation at (2/3) φ0), e.g. 1e-12",
             )?;
             // θ0 = π/2 − φ0 (one rounding; π/2's low part included), kept below π/2.
             let theta0 = complement(phi0).min(f64::from_bits(FRAC_PI_2.to_bits() - 1));

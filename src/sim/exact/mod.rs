@@ -100,6 +100,7 @@
 mod carlson;
 pub mod flat;
 pub mod jacobi;
+pub mod near_flat;
 mod phase_one;
 pub mod twofold;
 

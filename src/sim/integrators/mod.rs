@@ -189,13 +189,26 @@ pub fn error_norm<const N: usize, S: Ode<N>>(
     rtol: f64,
 ) -> f64 {
     let (s0, s1) = (sys.scale(y0), sys.scale(y1));
-    let mut sum = 0.0;
-    for i in 0..N {
-        // The floor keeps the weight positive at an exact equilibrium (all scales zero).
-        let sk = (rtol * s0[i].max(s1[i])).max(f64::MIN_POSITIVE);
-        sum += (err[i] / sk).powi(2);
+    // The floor keeps the weight positive at an exact equilibrium (all scales zero).
+    let ratio: [f64; N] =
+        std::array::from_fn(|i| err[i] / (rtol * s0[i].max(s1[i])).max(f64::MIN_POSITIVE));
+    rms(&ratio)
+}
+
+/// The root mean square of `ratio`, without overflow: a state of size 1e-273 (a start that
+/// close to the floor) has error ratios ~1e284 whose squares overflow, and an infinite norm
+/// made the first step 0 (issue 17, F7). NaN stays NaN.
+pub fn rms<const N: usize>(ratio: &[f64; N]) -> f64 {
+    let sum: f64 = ratio.iter().map(|r| r * r).sum();
+    if sum.is_finite() || sum.is_nan() {
+        return (sum / N as f64).sqrt();
     }
-    (sum / N as f64).sqrt()
+    let big = ratio.iter().fold(0.0f64, |m, r| m.max(r.abs()));
+    if big.is_infinite() {
+        return big;
+    }
+    let sum: f64 = ratio.iter().map(|r| (r / big).powi(2)).sum();
+    big * (sum / N as f64).sqrt()
 }
 
 /// Initial step size (Hairer, Nørsett & Wanner, *Solving ODEs I*, sec. II.4, "Starting step

@@ -121,16 +121,15 @@ fn step_norm<const N: usize, S: Ode<N>>(
 ) -> f64 {
     let (s0, s1, idx2) = (sys.scale(y0), sys.scale(y1), sys.index2());
     let hfac = h.abs().min(1.0);
-    let mut sum = 0.0;
-    for i in 0..N {
+    let ratio: [f64; N] = std::array::from_fn(|i| {
         let mut sk = rtol * s0[i].max(s1[i]);
         if idx2[i] {
             sk /= hfac;
         }
         // The floor keeps the weight positive at an exact equilibrium (all scales zero).
-        sum += (err[i] / sk.max(f64::MIN_POSITIVE)).powi(2);
-    }
-    (sum / N as f64).sqrt()
+        err[i] / sk.max(f64::MIN_POSITIVE)
+    });
+    super::rms(&ratio)
 }
 
 /// The Radau IIA(5) integrator.

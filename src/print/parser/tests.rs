@@ -1,0 +1,60 @@
+use super::*;
+
+fn sym(s: &str) -> Box<Expr> {
+    Box::new(Expr::Sym(s.into()))
+}
+
+#[test]
+fn implicit_products_powers_and_trig() {
+    let e = parse_expr(r"2ml^2\cos^2\theta\ddot{\theta}").unwrap();
+    let want = Expr::Mul(
+        Box::new(Expr::Mul(
+            Box::new(Expr::Mul(
+                Box::new(Expr::Mul(Box::new(Expr::Int(2)), sym("m"))),
+                Box::new(Expr::Pow(sym("l"), 2)),
+            )),
+            Box::new(Expr::Pow(Box::new(Expr::Cos(sym("\\theta"))), 2)),
+        )),
+        sym("\\ddot{\\theta}"),
+    );
+    assert_eq!(e, want);
+    // A different coefficient parses to a different tree.
+    assert_ne!(parse_expr(r"3ml^2\cos^2\theta\ddot{\theta}").unwrap(), want);
+}
+
+#[test]
+fn derivatives_and_symbols() {
+    assert_eq!(
+        parse_expr(r"\frac{dL_A}{dt}").unwrap(),
+        Expr::Deriv(sym("L_{A}"))
+    );
+    assert_eq!(
+        parse_expr(r"\frac{\partial \mathcal{L}}{\partial \dot{\theta}}").unwrap(),
+        Expr::Partial(sym("\\mathcal{L}"), "\\dot{\\theta}".into())
+    );
+    assert_eq!(
+        parse_expr(r"\mathbf{L}'_P").unwrap(),
+        Expr::Sym("\\mathbf{L}'_{P}".into())
+    );
+    assert_eq!(
+        parse_expr(r"\mathbf{H}_r(O)").unwrap(),
+        Expr::Sym("\\mathbf{H}_{r}(O)".into())
+    );
+    assert_eq!(
+        parse_expr(r"\frac{ml^2}{3}").unwrap(),
+        Expr::Div(
+            Box::new(Expr::Mul(sym("m"), Box::new(Expr::Pow(sym("l"), 2)))),
+            Box::new(Expr::Int(3))
+        )
+    );
+}
+
+#[test]
+fn displays_split_into_statements() {
+    let d = parse_display(r"x = l \sin \theta, \quad \text{Milne : } y = 2").unwrap();
+    assert_eq!(d.statements.len(), 2);
+    assert!(d.statements[1].milne && !d.statements[0].milne);
+    let d = parse_display(r"\mathbf{F} = 0 \Rightarrow \mathbf{P} = \text{const}").unwrap();
+    assert!(d.statements[0].implies.is_some());
+    assert!(parse_display(r"a = (b").is_err());
+}

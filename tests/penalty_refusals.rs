@@ -1,0 +1,159 @@
+//! Two refusals of penalty scenes and the sweeps that set their thresholds:
+//! * explicit methods whose tolerance exceeds the starting wall force (`sim::scene_work`,
+//!   [`RESOLVED_WALL_FORCE`]): below it a run can end at a spurious zero of the wall force,
+//!   above it none was seen;
+//! * springs softer than [`SOFTEST_CONTACT`] (`sim::scene_checks`): the foot lifts off first.
+//!
+//! The fast test shows runs on each side of the first; the sweeps run with
+//! `LADDER_SLOW=1 cargo test --profile test --test penalty_refusals` (about a minute each).
+
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use sliding_ladder::sim::integrators::Control;
+use sliding_ladder::sim::penalty::{separation, Contact, Law, OMEGA2};
+use sliding_ladder::sim::scene::SOFTEST_CONTACT;
+use sliding_ladder::sim::scene_work::{starting_wall_force, RESOLVED_WALL_FORCE};
+use std::f64::consts::FRAC_PI_2;
+
+/// What became of a run: separated within the bound, a spurious zero (the run's own check
+/// against the rigid separation), the foot lifted off, or another stop (the step cap).
+#[derive(Debug, PartialEq)]
+enum Seen {
+    Fine,
+    Spurious,
+    LiftOff,
+    Other,
+}
+
+fn run(method: &str, contact: Contact, theta0: f64, rate0: f64, tol: f64, cap: u64) -> Seen {
+    let r = separation(
+        contact,
+        Law::Switched,
+        theta0,
+        rate0,
+        method,
+        Control::Tolerance(tol),
+        cap,
+    );
+    match r.result {
+        Ok(_) => Seen::Fine,
+        Err(e) if format!("{e:?}").contains("not resolved") => Seen::Spurious,
+        Err(e) if format!("{e:?}").contains("LiftOff") => Seen::LiftOff,
+        Err(_) => Seen::Other,
+    }
+}
+
+/// dopri5 from θ0 = 1e-20 (F_w0 = 7e-10 m g at the lead-in's hand-over): at τ = 10 F_w0 the
+/// wall force crosses zero within the first steps, far from the rigid separation; at the
+/// plan's limit τ = F_w0/40 each run separates within the bound.
+#[test]
+fn a_tolerance_above_the_starting_wall_force_gives_a_spurious_zero_and_the_limit_does_not() {
+    let (_, fw0) = starting_wall_force(1e-20, 0.0);
+    for kappa in [1e2, 1e3, 1e4] {
+        let contact = Contact { kappa, gamma: 0.0 };
+        let seen = |tol| run("dopri5", contact, 1e-20, 0.0, tol, 100_000);
+        assert_eq!(seen(10.0 * fw0), Seen::Spurious, "κ = {kappa}");
+        assert_eq!(seen(fw0 / RESOLVED_WALL_FORCE), Seen::Fine, "κ = {kappa}");
+    }
+}
+
+/// The sweep (module docs of `sim::scene_work`): random κ, γ, starts and pushes with τ around
+/// F_w0; the largest F_w0/τ with a spurious zero must stay a factor 3 below the plan's limit.
+#[test]
+fn no_spurious_zero_within_a_factor_3_of_the_limit() {
+    if std::env::var("LADDER_SLOW").is_err() {
+        eprintln!("skipped: set LADDER_SLOW=1");
+        return;
+    }
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let (mut worst, mut above, mut fine) = (0.0f64, 0, 0);
+    for _ in 0..3000 {
+        let method = ["dopri5", "dop853"][rng.gen_range(0..2)];
+        let kappa = 10f64.powf(rng.gen_range(0.5..9.0));
+        let gamma = match rng.gen_bool(0.5) {
+            true => 0.0,
+            false => 10f64.powf(rng.gen_range(-3.0..1.0)) * kappa.sqrt(),
+        };
+        let theta0 = match rng.gen_range(0..3) {
+            0 => 10f64.powf(rng.gen_range(-300.0..-9.0)),
+            1 => 10f64.powf(rng.gen_range(-9.0..-1.0)),
+            _ => FRAC_PI_2 - 10f64.powf(rng.gen_range(-9.0..-1.0)),
+        };
+        let rate0 = match rng.gen_bool(0.7) {
+            true => 0.0,
+            false => rng.gen_range(0.0..1.0) * (OMEGA2 * theta0.cos()).sqrt(),
+        };
+        let (_, fw0) = starting_wall_force(theta0, rate0);
+        let ratio = 10f64.powf(rng.gen_range(-1.5..3.0));
+        let tol = (fw0 / ratio).min(0.1);
+        if tol < 1e-16 {
+            continue;
+        }
+        let seen = run(
+            method,
+            Contact { kappa, gamma },
+            theta0,
+            rate0,
+            tol,
+            100_000,
+        );
+        if seen == Seen::Spurious {
+            worst = worst.max(fw0 / tol);
+        }
+        if fw0 / tol >= RESOLVED_WALL_FORCE / 3.0 {
+            above += 1;
+            fine += usize::from(seen == Seen::Fine);
+        }
+    }
+    eprintln!("largest F_w0/τ with a spurious zero: {worst:.2}; {fine} of {above} runs above the limit/3 separated");
+    assert!(
+        worst > 1.0,
+        "the sweep found no spurious zero: it shows nothing"
+    );
+    assert!(worst < RESOLVED_WALL_FORCE / 3.0, "{worst}");
+    assert!(fine * 10 >= above * 8, "{fine} of {above}");
+}
+
+/// Random soft springs (κ = 1..10, γ = 0 or 1e-3..10 √κ) from tiny, ordinary and near-π/2
+/// starts with pushes up to the wall's limit, radau5 at 1e-10: the foot lifts off at some
+/// (κ ≤ 2.5 when the threshold was set), never above half of [`SOFTEST_CONTACT`].
+#[test]
+fn soft_springs_lift_the_foot_only_well_below_the_least_stiffness() {
+    if std::env::var("LADDER_SLOW").is_err() {
+        eprintln!("skipped: set LADDER_SLOW=1");
+        return;
+    }
+    let mut rng = ChaCha8Rng::seed_from_u64(3);
+    let (mut stiffest, mut lifted) = (0.0f64, 0);
+    for _ in 0..6000 {
+        let kappa = 10f64.powf(rng.gen_range(0.0..1.0));
+        let gamma = match rng.gen_bool(0.7) {
+            true => 0.0,
+            false => 10f64.powf(rng.gen_range(-3.0..1.0)) * kappa.sqrt(),
+        };
+        let theta0 = match rng.gen_range(0..3) {
+            0 => 10f64.powf(rng.gen_range(-300.0..-2.0)),
+            1 => rng.gen_range(0.0..FRAC_PI_2),
+            _ => FRAC_PI_2 - 10f64.powf(rng.gen_range(-9.0..-1.0)),
+        };
+        let rate0 = match rng.gen_bool(0.4) {
+            true => 0.0,
+            false => rng.gen_range(0.0..1.0f64).sqrt() * (OMEGA2 * theta0.cos()).sqrt(),
+        };
+        if run(
+            "radau5",
+            Contact { kappa, gamma },
+            theta0,
+            rate0,
+            1e-10,
+            1_000_000,
+        ) == Seen::LiftOff
+        {
+            stiffest = stiffest.max(kappa);
+            lifted += 1;
+        }
+    }
+    eprintln!("{lifted} of 6000 runs lifted the foot, the stiffest at κ = {stiffest:.3}");
+    assert!(lifted > 0, "no lift-off: the sweep shows nothing");
+    assert!(stiffest < SOFTEST_CONTACT / 2.0, "{stiffest}");
+}
