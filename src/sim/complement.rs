@@ -19,7 +19,7 @@
 //! of π/2 that FRAC_PI_2 misses ([`HALF_PI_LO`]) is added with one rounding.
 
 use super::event::{Direction, Event};
-use super::integrators::taylor::{separation_factor_series, Series};
+use super::integrators::taylor::{separation_factor_on, Series};
 use super::integrators::Ode;
 use super::rigid::{event_safe_step, Ladder};
 use super::run::Observer;
@@ -98,10 +98,9 @@ impl Event<2> for ComplementSeparation {
     fn rate(&self, _t: f64, y: &[f64; 2], dy: &[f64; 2]) -> Option<f64> {
         Some(self.0 * y[0].cos() * dy[0] - 2.0 * y[1] * dy[1])
     }
-    fn series(&self, s: &Series<2>, out: &mut [f64]) -> bool {
-        let p = s.order;
-        separation_factor_series(self.0, &s.sin, &s.y[1], &mut out[..=p]);
-        true
+    /// Ω² sin φ − φ̇² and its rate on the step's polynomials of sin φ and φ̇.
+    fn on_series(&self, s: &Series<2>, tau: f64) -> Option<(f64, f64)> {
+        Some(separation_factor_on(self.0, &s.sin, &s.y[1], s.order, tau))
     }
     /// Ω² sin φ − φ̇² with the carried sin φ.
     fn value_with_trig(&self, _t: f64, y: &[f64; 2], trig: (f64, f64)) -> f64 {

@@ -51,12 +51,12 @@ pub trait Event<const N: usize> {
     fn rate(&self, _t: f64, _y: &[f64; N], _dy: &[f64; N]) -> Option<f64> {
         None
     }
-    /// The Taylor coefficients of [`Event::value`] over a step of the Taylor method, formed from
-    /// the step's series into `out[..=series.order]`; false when the event has none (it is then
-    /// evaluated on the interpolant). With them the root is found by Newton's method on one
-    /// polynomial, without a transcendental function per iterate.
-    fn series(&self, _series: &Series<N>, _out: &mut [f64]) -> bool {
-        false
+    /// [`Event::value`] and its time derivative at τ into a step of the Taylor method, from the
+    /// step's polynomials (the state's and those of sin and cos of `y[0]`); None when the event
+    /// cannot (it is then evaluated on the interpolant). With it the root is found by Newton's
+    /// method without a transcendental function per iterate.
+    fn on_series(&self, _series: &Series<N>, _tau: f64) -> Option<(f64, f64)> {
+        None
     }
     /// [`Event::value`] given (sin, cos) of `y[0]` as the stepper carries them
     /// ([`crate::sim::integrators::Stepper::trig`]): events that need them override this to
@@ -87,7 +87,16 @@ pub fn newton_in_bracket(
     // Recipes*, sec. 9.4): bisect when Newton would leave the bracket or is not halving the
     // step, so a poor derivative costs speed, never the root.
     let (mut lo, mut hi) = (a, b);
-    let mut t = if fa.abs() < fb.abs() { a } else { b };
+    // Start at the secant's root (regula falsi) when it lies inside: on a smooth event it is
+    // much nearer the root than either end, which saves Newton iterations.
+    let secant = a - fa * ((b - a) / (fb - fa));
+    let mut t = if secant > a.min(b) && secant < a.max(b) {
+        secant
+    } else if fa.abs() < fb.abs() {
+        a
+    } else {
+        b
+    };
     let (mut dx, mut dx_old) = ((b - a).abs(), (b - a).abs());
     for _ in 0..MAX_ITERATIONS {
         let (v, d) = f(t)?;

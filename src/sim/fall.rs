@@ -33,10 +33,11 @@ impl Event<2> for SeparationEvent {
     fn rate(&self, _t: f64, y: &[f64; 2], dy: &[f64; 2]) -> Option<f64> {
         Some(-self.0 * y[0].sin() * dy[0] - 2.0 * y[1] * dy[1])
     }
-    fn series(&self, s: &taylor::Series<2>, out: &mut [f64]) -> bool {
-        let p = s.order;
-        taylor::separation_factor_series(self.0, &s.cos, &s.y[1], &mut out[..=p]);
-        true
+    /// Ω² cos θ − θ̇² and its rate on the step's polynomials of cos θ and θ̇.
+    fn on_series(&self, s: &taylor::Series<2>, tau: f64) -> Option<(f64, f64)> {
+        Some(taylor::separation_factor_on(
+            self.0, &s.cos, &s.y[1], s.order, tau,
+        ))
     }
     /// Ω² cos θ − θ̇² with the carried cos θ.
     fn value_with_trig(&self, _t: f64, y: &[f64; 2], trig: (f64, f64)) -> f64 {

@@ -3,7 +3,6 @@
 //! that asks for nothing but the separation keeps O(1) memory.
 
 use super::event::{brent, crosses, newton_in_bracket, Event};
-use super::integrators::taylor::{horner, horner_with_rate, MAX_ORDER};
 use super::integrators::{Ode, StepError, Stepper};
 use std::fmt;
 
@@ -149,24 +148,28 @@ pub fn integrate_phase<const N: usize, S: Ode<N>, St: Stepper<N>, O: Observer<N>
                     continue;
                 }
                 stepper.prepare_dense(sys);
-                // The Taylor method with an event that has its own series: Newton on the
-                // event's polynomial over the step (no transcendental function per iterate).
-                let mut poly = [0.0; MAX_ORDER + 1];
-                let root = match stepper.step_series().filter(|s| ev.series(s, &mut poly)) {
-                    Some(s) => {
-                        let (c, t_prev) = (&poly[..=s.order], stepper.t_prev());
-                        // a is the step's start (τ = 0: the constant term) unless a sampled
-                        // bracket moved it.
-                        let ia = if a == t_prev {
-                            c[0]
-                        } else {
-                            horner(c, a - t_prev)
-                        };
-                        let ib = horner(c, b - t_prev);
-                        let (fa, fb) = if ia * ib <= 0.0 { (ia, ib) } else { (fa, fb) };
-                        let on_poly = |t: f64| Some(horner_with_rate(c, t - t_prev));
-                        newton_in_bracket(on_poly, a, b, fa, fb).unwrap_or(a)
+                // The Taylor method with an event it can evaluate on the step's polynomials:
+                // Newton on them (no transcendental function per iterate). At the step's ends
+                // fa and fb are already the polynomials' values (the stepper's end values come
+                // from the same polynomials); a sampled end is evaluated on them again.
+                let t_prev = stepper.t_prev();
+                let on_series = |t: f64| ev.on_series(stepper.step_series()?, t - t_prev);
+                let at = |t: f64, v: f64, end: f64| {
+                    if t == end {
+                        Some(v)
+                    } else {
+                        on_series(t).map(|(v, _)| v)
                     }
+                };
+                let on_poly = match (at(a, fa, t_prev), at(b, fb, t1)) {
+                    (Some(ia), Some(ib)) if ia * ib <= 0.0 => Some((ia, ib)),
+                    (Some(_), Some(_)) => Some((fa, fb)),
+                    _ => None,
+                };
+                // None when the event or the stepper has no polynomials.
+                let root = on_poly.and_then(|(fa, fb)| newton_in_bracket(on_series, a, b, fa, fb));
+                let root = match root {
+                    Some(r) => r,
                     None => {
                         // Refine on the interpolant; its end values may differ from the
                         // step's by a rounding, so fall back to the step's values where they

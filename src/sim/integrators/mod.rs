@@ -29,6 +29,8 @@ pub mod rk4;
 pub mod symplectic_euler;
 pub mod taylor;
 pub mod taylor_f64;
+pub mod taylor_poly;
+pub mod taylor_series;
 pub mod verlet;
 
 use num_dual::DualNum;

@@ -1,0 +1,163 @@
+//! The f64 series of one Taylor step ([`Series`]): the state's coefficients and those of sin and
+//! cos of the angle, filled by the models' recursions ([`super::taylor_series`] in f64, the
+//! wall phase by [`super::taylor_f64`]), and read as polynomials: end values, dense output and
+//! the separation factor on which events are refined ([`separation_factor_on`]).
+
+use super::taylor_series::{floor_series_in, FloorScratch};
+
+/// Highest order the f64 stepper stores.
+pub const MAX_ORDER: usize = 40;
+
+/// 1/k for k = 0..=MAX_ORDER+1 (entry 0 unused), so the f64 recursions multiply, never divide.
+const INV: [f64; MAX_ORDER + 2] = {
+    let mut t = [0.0; MAX_ORDER + 2];
+    let mut k = 1;
+    while k < MAX_ORDER + 2 {
+        t[k] = 1.0 / k as f64;
+        k += 1;
+    }
+    t
+};
+
+/// The f64 series of one step: state components, and sin/cos of the angle `y[0]`.
+#[derive(Clone, Debug)]
+pub struct Series<const N: usize> {
+    /// The order p (coefficients 0..=p are valid).
+    pub order: usize,
+    /// `y[i][k]`: coefficient k of component i.
+    pub y: [[f64; MAX_ORDER + 1]; N],
+    /// Coefficients of sin y[0].
+    pub sin: [f64; MAX_ORDER + 1],
+    /// Coefficients of cos y[0].
+    pub cos: [f64; MAX_ORDER + 1],
+    /// Scratch of the f64 fast path ([`super::taylor_f64`]): (cos, sin) of each order.
+    pairs: [super::taylor_f64::Pair; MAX_ORDER + 1],
+}
+
+impl<const N: usize> Series<N> {
+    /// Zeroed series of order `order` (at most [`MAX_ORDER`]).
+    pub fn new(order: usize) -> Self {
+        Series {
+            order,
+            y: [[0.0; MAX_ORDER + 1]; N],
+            sin: [0.0; MAX_ORDER + 1],
+            cos: [0.0; MAX_ORDER + 1],
+            pairs: [[0.0; 2]; MAX_ORDER + 1],
+        }
+    }
+
+    /// The state and (sin, cos) of y[0] at τ = h: Horner's rule on every series in one loop
+    /// (the N + 2 chains run side by side; each gives the value of its own [`horner`]).
+    pub(super) fn end_values(&self, h: f64) -> ([f64; N], (f64, f64)) {
+        let p = self.order;
+        let (mut y, mut s, mut c) = ([0.0; N], 0.0, 0.0);
+        for k in (0..=p).rev() {
+            for i in 0..N {
+                y[i] = y[i] * h + self.y[i][k];
+            }
+            s = s * h + self.sin[k];
+            c = c * h + self.cos[k];
+        }
+        (y, (s, c))
+    }
+
+    /// 1/k for k = 0..=p+1 in f64 (for models' [`Ode::taylor_series`]).
+    pub fn inv(&self) -> &'static [f64] {
+        &INV[..self.order + 2]
+    }
+}
+
+/// Σ c_k τ^k by Horner's rule.
+#[inline(always)]
+pub fn horner(c: &[f64], tau: f64) -> f64 {
+    let mut acc = 0.0;
+    for &ck in c.iter().rev() {
+        acc = acc * tau + ck;
+    }
+    acc
+}
+
+/// The separation factor Ω² t(τ) − r(τ)² and its τ-derivative on a step's polynomials, each
+/// to order `p`: `trig` that of cos θ (in the complement, of sin φ), `rate` that of θ̇ (φ̇).
+/// Its root is the separation event of the Taylor method. The four Horner chains (t, t', r,
+/// r') are independent, so one loop costs about the latency of one.
+pub fn separation_factor_on(
+    big_omega2: f64,
+    trig: &[f64],
+    rate: &[f64],
+    p: usize,
+    tau: f64,
+) -> (f64, f64) {
+    let (mut t, mut dt, mut r, mut dr) = (0.0, 0.0, 0.0, 0.0);
+    for (ct, cr) in trig[..=p].iter().zip(&rate[..=p]).rev() {
+        dt = dt * tau + t;
+        t = t * tau + ct;
+        dr = dr * tau + r;
+        r = r * tau + cr;
+    }
+    (big_omega2 * t - r * r, big_omega2 * dt - 2.0 * r * dr)
+}
+
+/// The wall phase's series in f64, for `WallPhase::taylor_series`: [`super::taylor_series::wall_series`]'s sums in
+/// its order by the fast path [`super::taylor_f64::wall_series`] (same bits).
+pub fn wall_series_f64(big_omega2: f64, s: &mut Series<2>) {
+    fast_wall_series(false, big_omega2, s);
+}
+
+fn fast_wall_series(complement: bool, big_omega2: f64, s: &mut Series<2>) {
+    let p = s.order;
+    let [angle, rate] = &mut s.y;
+    super::taylor_f64::wall_series(
+        complement,
+        big_omega2,
+        &INV[..p + 2],
+        &mut angle[..=p],
+        &mut rate[..=p],
+        &mut s.sin[..=p],
+        &mut s.cos[..=p],
+        &mut s.pairs[..=p],
+    );
+}
+
+/// The complement wall phase's series in f64, for `ComplementWall::taylor_series`: as
+/// [`wall_series_f64`], [`super::taylor_series::complement_series`]'s sums by the fast path (same bits).
+pub fn complement_series_f64(big_omega2: f64, s: &mut Series<2>) {
+    fast_wall_series(true, big_omega2, s);
+}
+
+/// The floor phase's series in f64, for `FloorPhase::taylor_series`
+pub fn floor_series_f64(g_over_l: f64, s: &mut Series<4>) {
+    floor_series_f64_in(false, g_over_l, s);
+}
+
+/// The complement floor phase's series in f64, for `ComplementFloor::taylor_series`.
+pub fn complement_floor_series_f64(g_over_l: f64, s: &mut Series<4>) {
+    floor_series_f64_in(true, g_over_l, s);
+}
+
+fn floor_series_f64_in(complement: bool, g_over_l: f64, s: &mut Series<4>) {
+    let p = s.order;
+    let inv = &INV[..p + 2];
+    let mut scratch = [[0.0; MAX_ORDER + 1]; 4];
+    let [a, b, c, d] = &mut scratch;
+    let [theta, x, rate, xdot] = &mut s.y;
+    floor_series_in(
+        complement,
+        &g_over_l,
+        inv,
+        [
+            &mut theta[..=p],
+            &mut x[..=p],
+            &mut rate[..=p],
+            &mut xdot[..=p],
+        ],
+        &mut s.sin[..=p],
+        &mut s.cos[..=p],
+        FloorScratch {
+            rate_sq: &mut a[..=p],
+            cos_rate_sq: &mut b[..=p],
+            inertia: &mut c[..=p],
+            accel: &mut d[..=p],
+        },
+    );
+}

@@ -1,0 +1,205 @@
+//! The Taylor method's coefficient recursions, generic over the scalar ([`Scalar`]): f64,
+//! exact rationals (for the tests' exact coefficients), the error-bound scalar. The recurrences
+//! for sin and cos of an angle and the laws of the wall and floor phases are derived in
+//! [`super::taylor`]'s module docs; the f64 stepper runs the wall phase through the fast path
+//! [`super::taylor_f64`] (same sums, same bits) and the floor phase through these.
+
+use crate::scalar::Scalar;
+
+/// The reciprocals 1/k, k = 0..n (entry 0 is 0), in any scalar.
+pub fn reciprocals<S: Scalar>(n: usize) -> Vec<S> {
+    (0..n)
+        .map(|k| {
+            if k == 0 {
+                S::int(0)
+            } else {
+                S::ratio(1, k as i64)
+            }
+        })
+        .collect()
+}
+
+/// Σ_{j=0}^{k} a_j b_{k−j}, the k-th coefficient of a product of series.
+///
+/// Order of summation (the only freedom; exact scalars give the same value in any order): the
+/// inner terms 0 < j < k in two chains by parity, then a_k b_0, then a_0 b_k. In a recursion the
+/// end terms hold the newest coefficients (b_k was computed just before), so in f64 they are
+/// added last and the inner sums, on older coefficients, run ahead of them: the recursion's
+/// critical path is one product and two additions per order. The f64 fast path
+/// ([`super::taylor_f64`]) sums in exactly this order, so both give the same bits.
+#[inline(always)]
+pub fn product<S: Scalar>(k: usize, a: &[S], b: &[S]) -> S {
+    let (a, b) = (&a[..=k], &b[..=k]);
+    if k == 0 {
+        return a[0].clone() * b[0].clone();
+    }
+    let (mut odd, mut even) = (S::int(0), S::int(0));
+    for j in 1..k {
+        let t = a[j].clone() * b[k - j].clone();
+        if j % 2 == 1 {
+            odd = odd + t;
+        } else {
+            even = even + t;
+        }
+    }
+    ((odd + even) + a[k].clone() * b[0].clone()) + a[0].clone() * b[k].clone()
+}
+
+/// The k-th coefficients (k ≥ 1) of s = sin θ and c = cos θ from the series `d` of θ' and the
+/// lower orders of s and c: k s_k = Σ d_j c_{k−1−j}, k c_k = −Σ d_j s_{k−1−j}. `inv_k` = 1/k.
+#[inline(always)]
+pub fn sin_cos_coefficient<S: Scalar>(inv_k: &S, d: &[S], sin: &[S], cos: &[S]) -> (S, S) {
+    let k = d.len();
+    let s = product(k - 1, d, cos);
+    let c = product(k - 1, d, sin);
+    (s * inv_k.clone(), -(c * inv_k.clone()))
+}
+
+/// Taylor coefficients of the wall phase, eq. (5) θ̈ = Ω² sin θ, to order p = `theta.len() − 1`.
+///
+/// On entry `theta[0]`, `rate[0]`, `sin[0] = sin θ0`, `cos[0] = cos θ0` hold the start; on return
+/// every slice holds its series to order p. `inv[k] = 1/k` for k ≤ p.
+pub fn wall_series<S: Scalar>(
+    big_omega2: &S,
+    inv: &[S],
+    theta: &mut [S],
+    rate: &mut [S],
+    sin: &mut [S],
+    cos: &mut [S],
+) {
+    let p = theta.len() - 1;
+    for k in 0..=p {
+        if k > 0 {
+            let (s, c) = sin_cos_coefficient(&inv[k], &rate[..k], &sin[..k], &cos[..k]);
+            sin[k] = s;
+            cos[k] = c;
+        }
+        if k < p {
+            theta[k + 1] = rate[k].clone() * inv[k + 1].clone();
+            rate[k + 1] = sin[k].clone() * (big_omega2.clone() * inv[k + 1].clone());
+        }
+    }
+}
+
+/// Taylor coefficients of the wall phase in the complement φ = π/2 − θ, φ̈ = −Ω² cos φ (eq. (5)
+/// with sin θ = cos φ), to order p = `phi.len() − 1`; `sin`, `cos` are those of φ. Same entry
+/// and return conventions as [`wall_series`].
+pub fn complement_series<S: Scalar>(
+    big_omega2: &S,
+    inv: &[S],
+    phi: &mut [S],
+    rate: &mut [S],
+    sin: &mut [S],
+    cos: &mut [S],
+) {
+    let p = phi.len() - 1;
+    for k in 0..=p {
+        if k > 0 {
+            let (s, c) = sin_cos_coefficient(&inv[k], &rate[..k], &sin[..k], &cos[..k]);
+            sin[k] = s;
+            cos[k] = c;
+        }
+        if k < p {
+            phi[k + 1] = rate[k].clone() * inv[k + 1].clone();
+            rate[k + 1] = -(cos[k].clone() * (big_omega2.clone() * inv[k + 1].clone()));
+        }
+    }
+}
+
+/// Scratch series the floor phase needs besides the state: θ̇², c θ̇², the denominator
+/// sin² θ + 1/3 and the acceleration.
+pub struct FloorScratch<'a, S> {
+    /// θ̇².
+    pub rate_sq: &'a mut [S],
+    /// cos θ θ̇².
+    pub cos_rate_sq: &'a mut [S],
+    /// sin² θ + 1/3.
+    pub inertia: &'a mut [S],
+    /// θ̈.
+    pub accel: &'a mut [S],
+}
+
+/// Taylor coefficients of the floor phase ([`crate::sim::floor`]):
+/// θ̈ = sin θ (g/l − cos θ θ̇²) / (sin² θ + 1/3), Ẍ = 0, to order p = `theta.len() − 1`.
+///
+/// State series `y = [θ, X, θ̇, Ẋ]` and `sin`, `cos` hold their start values in entry 0; the
+/// quotient is the series division a_k = (n_k − Σ_{j≥1} q_j a_{k−j}) / q_0 with q = sin² θ + 1/3.
+pub fn floor_series<S: Scalar>(
+    g_over_l: &S,
+    inv: &[S],
+    y: [&mut [S]; 4],
+    sin: &mut [S],
+    cos: &mut [S],
+    w: FloorScratch<'_, S>,
+) {
+    floor_series_in(false, g_over_l, inv, y, sin, cos, w);
+}
+
+/// The floor phase in the complement φ = π/2 − θ (`crate::sim::complement`): state series
+/// `y = [φ, X, φ̇, Ẋ]`, `sin`, `cos` those of φ; φ̈ = −θ̈ with sin θ = cos φ, cos θ = sin φ.
+pub fn complement_floor_series<S: Scalar>(
+    g_over_l: &S,
+    inv: &[S],
+    y: [&mut [S]; 4],
+    sin: &mut [S],
+    cos: &mut [S],
+    w: FloorScratch<'_, S>,
+) {
+    floor_series_in(true, g_over_l, inv, y, sin, cos, w);
+}
+
+pub(super) fn floor_series_in<S: Scalar>(
+    complement: bool,
+    g_over_l: &S,
+    inv: &[S],
+    y: [&mut [S]; 4],
+    sin: &mut [S],
+    cos: &mut [S],
+    w: FloorScratch<'_, S>,
+) {
+    let [angle, x, rate, xdot] = y;
+    let p = angle.len() - 1;
+    let third = S::ratio(1, 3);
+    let mut inv_q0 = S::int(0);
+    for k in 0..=p {
+        if k > 0 {
+            let (s, c) = sin_cos_coefficient(&inv[k], &rate[..k], &sin[..k], &cos[..k]);
+            sin[k] = s;
+            cos[k] = c;
+        }
+        if k == p {
+            break;
+        }
+        // sin θ and cos θ: those of the angle carried, or swapped in the complement.
+        let (st, ct): (&[S], &[S]) = if complement {
+            (&cos[..], &sin[..])
+        } else {
+            (&sin[..], &cos[..])
+        };
+        w.rate_sq[k] = product(k, rate, rate);
+        w.cos_rate_sq[k] = product(k, ct, w.rate_sq);
+        // Numerator n = s (g/l − c θ̇²).
+        let n = g_over_l.clone() * st[k].clone() - product(k, st, w.cos_rate_sq);
+        w.inertia[k] = product(k, st, st);
+        if k == 0 {
+            w.inertia[0] = w.inertia[0].clone() + third.clone();
+            inv_q0 = S::int(1) / w.inertia[0].clone();
+            w.accel[0] = n * inv_q0.clone();
+        } else {
+            let mut r = n;
+            for j in 1..=k {
+                r = r - w.inertia[j].clone() * w.accel[k - j].clone();
+            }
+            w.accel[k] = r * inv_q0.clone();
+        }
+        angle[k + 1] = rate[k].clone() * inv[k + 1].clone();
+        x[k + 1] = xdot[k].clone() * inv[k + 1].clone();
+        // θ̈'s series; φ̈ = −θ̈.
+        rate[k + 1] = if complement {
+            -(w.accel[k].clone() * inv[k + 1].clone())
+        } else {
+            w.accel[k].clone() * inv[k + 1].clone()
+        };
+        xdot[k + 1] = S::int(0);
+    }
+}
