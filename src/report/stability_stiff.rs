@@ -227,8 +227,8 @@ pub const ULP_SPREAD_LIMIT: f64 = 1e-9;
 /// Why the separation angles (lowest, highest) over κ ± 2 ulp fail [`ULP_SPREAD_LIMIT`], if they do.
 pub fn spread_failure((lowest, highest): (f64, f64)) -> Option<String> {
     let width = highest - lowest;
-    // `!(width <= limit)` also fails a NaN spread.
-    (!(width <= ULP_SPREAD_LIMIT))
+    // A NaN spread fails too.
+    (width.is_nan() || width > ULP_SPREAD_LIMIT)
         .then(|| format!("θ_s moves by {width:.1e} over κ ± 2 ulp (> {ULP_SPREAD_LIMIT:.0e})"))
 }
 
