@@ -109,7 +109,8 @@ impl<const N: usize> Taylor<N> {
     }
 
     /// Jorba-Zou step for the current series: min over m ∈ {p−1, p} of (tol/e_m)^{1/m}, times
-    /// exp(−0.7/(p−1)); infinite when both orders vanish (e.g. at an equilibrium).
+    /// exp(−0.7/(p−1)), in the series' unit H (e_m is the scaled coefficient: the step in σ);
+    /// infinite when both orders vanish (e.g. at an equilibrium).
     fn step_size(&self, scale: &[f64; N]) -> f64 {
         let p = self.series.order;
         // The smaller of (tol/e_m)^{1/m} is the smaller of ln(tol/e_m)/m: one exp, no pow.
@@ -123,7 +124,7 @@ impl<const N: usize> Taylor<N> {
                 ln_h = ln_h.min((self.tol / e).ln() / m as f64);
             }
         }
-        (ln_h - 0.7 / (p - 1) as f64).exp()
+        (ln_h - 0.7 / (p - 1) as f64).exp() * self.series.unit()
     }
 }
 
@@ -145,12 +146,14 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
             self.series.y[i][0] = self.y[i];
         }
         (self.series.sin[0], self.series.cos[0]) = self.trig;
+        // The coefficients' time unit: the model's longest step, the scale of its motion.
+        let h_max = sys.taylor_max_step(&self.y);
+        self.series.set_unit(h_max);
         if !sys.taylor_series(&mut self.series) {
             return Err(StepError::NoTaylorSeries { t });
         }
         // One pass of the recursion per order: counted as one evaluation each.
         self.stats.rhs_evals += p as u64;
-        let h_max = sys.taylor_max_step(&self.y);
         let h_jz = self.step_size(&sys.scale(&self.y));
         if h_jz.is_nan() {
             return Err(StepError::NotFinite { t });
@@ -186,13 +189,14 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
     }
 
     fn interpolate(&self, t: f64) -> [f64; N] {
-        let tau = t - self.t_prev;
+        let tau = (t - self.t_prev) * self.series.inv_unit();
         let p = self.series.order;
         std::array::from_fn(|i| horner(&self.series.y[i][..=p], tau))
     }
 
     fn interpolate_rate(&self, t: f64) -> Option<[f64; N]> {
-        let tau = t - self.t_prev;
+        let inv_unit = self.series.inv_unit();
+        let tau = (t - self.t_prev) * inv_unit;
         let p = self.series.order;
         Some(std::array::from_fn(|i| {
             let c = &self.series.y[i];
@@ -200,7 +204,7 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
             for k in (1..=p).rev() {
                 acc = acc * tau + k as f64 * c[k];
             }
-            acc
+            acc * inv_unit
         }))
     }
 
