@@ -8,7 +8,7 @@
 //!
 //! The fast test shows runs on each side of the first (`tests/scene_work.rs` of the second);
 //! the sweeps run with `LADDER_SLOW=1 cargo test --profile test --test penalty_refusals`
-//! (about a minute each on a quiet machine).
+//! (about a minute each on a quiet machine; the θ0 = 0 sweep took 457 s at a load of 11).
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -124,7 +124,9 @@ fn no_spurious_zero_within_a_factor_3_of_the_limit() {
 /// random method, κ, γ and push, τ = Ḟ_w0/10^U(−1, 3.5); only starts whose separation is far
 /// (the rule's own condition). For each method the largest Ḟ_w0/τ with a spurious zero must
 /// stay a factor 3 below its [`RESOLVED_WALL_FORCE_RATE`]; it prints how many runs below the
-/// limit (which the plan refuses) would have been fine: the rule's cost.
+/// limit (which the plan refuses) would have been fine: the rule's cost. Last run (seed 8):
+/// dopri5 114 spurious zeros in 1,828 runs, the largest at 10.5; dop853 87 in 1,769, the
+/// largest at 7.1 (its tail up to 1,164 needs the longer sweeps of the module docs).
 #[test]
 fn pushes_from_zero_give_no_spurious_zero_within_a_factor_3_of_the_limit() {
     if std::env::var("LADDER_SLOW").is_err() {

@@ -274,7 +274,7 @@ fn a_push_from_zero_looser_than_the_wall_force_rate_is_refused() {
         .unwrap_err()
         .to_string();
     assert!(
-        e.starts_with("s.toml:14: [integrator] tolerance: the wall force starts at 0 (θ0 = 0) and grows by 7.500e-6 m g in the first √(l/g), below 75 times the tolerance")
+        e.starts_with("s.toml:14: [integrator] tolerance: the wall force starts at 0 m g (θ0 = 0e0) and grows by 7.500e-6 m g in the first √(l/g), below 75 times the tolerance")
             && e.contains("8.411e-1 rad before the separation"),
         "{e}"
     );
@@ -308,7 +308,9 @@ fn the_campaigns_pushes_from_zero_are_refused_up_front() {
         let scene = sliding_ladder::report::campaign::draw(1, index);
         let e = parse("s.toml", &scene).unwrap_err().to_string();
         assert!(
-            e.starts_with("s.toml:14: [integrator] tolerance: the wall force starts at 0"),
+            e.starts_with(
+                "s.toml:14: [integrator] tolerance: the wall force starts at 0 m g (θ0 = 0e0)"
+            ),
             "{index}: {e}"
         );
     }

@@ -267,7 +267,8 @@ pub(super) fn check_work(
                         ),
                     ));
                 }
-                // θ0 = 0 with a push (F8): no wall force at the start, only its rate.
+                // θ0 = 0 with a push (F8; or a subnormal θ0, where the force underflows to 0):
+                // no wall force at the start, only its rate.
                 let need = RESOLVED_WALL_FORCE_RATE.iter().find(|r| r.0 == method);
                 if let Some(&(_, need)) = need.filter(|_| far && fw0 == 0.0) {
                     let growth = wall_force_rate(theta_i, rate);
@@ -277,7 +278,7 @@ pub(super) fn check_work(
                             tol_span,
                             "integrator.tolerance",
                             format!(
-                                "the wall force starts at 0 (θ0 = 0) and grows by {growth:.3e} m g in the first √(l/g), below {need} times the tolerance ({:.3e} m g), {to_go:.3e} rad before the separation: \"{method}\" holds the spring forces to the tolerance a step, so while the wall force is that small its errors excite the contact's vibration (κ = {kappa:e}) by more and the force crosses zero early (a spurious separation); allowed: tolerance ≤ {largest:e}, or method = \"radau5\"",
+                                "the wall force starts at 0 m g (θ0 = {theta_i:e}) and grows by {growth:.3e} m g in the first √(l/g), below {need} times the tolerance ({:.3e} m g), {to_go:.3e} rad before the separation: \"{method}\" holds the spring forces to the tolerance a step, so while the wall force is that small its errors excite the contact's vibration (κ = {kappa:e}) by more and the force crosses zero early (a spurious separation); allowed: tolerance ≤ {largest:e}, or method = \"radau5\"",
                                 need * tol
                             ),
                         ));
