@@ -94,7 +94,7 @@ fn the_schwartz_zippel_bound_of_100_points_prints_as_a_power_of_ten() {
     let at = line.find("Schwartz-Zippel bound ≤ 1e").expect("the bound")
         + "Schwartz-Zippel bound ≤ 1e".len();
     let power: f64 = line[at..]
-        .split(|c: char| c == ';' || c == ' ')
+        .split([';', ' '])
         .next()
         .and_then(|s| s.parse().ok())
         .expect("a power of ten");
