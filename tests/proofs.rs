@@ -63,3 +63,41 @@ fn a_planted_false_identity_is_not_proved_and_its_difference_prints() {
     assert_eq!(text(&diff), "1/3 m l^2 θ̇^2");
     assert_eq!(latex(&diff), "\\frac{1}{3} m l^{2} \\dot\\theta^{2}");
 }
+
+/// Issue 10: with 100 exact points the Schwartz-Zippel bound is far below the smallest f64
+/// (about 1e-1400 for these checks), so it is carried as a power of ten; the summary line
+/// prints that power, not the 0.0e0 the underflowed number gives.
+#[test]
+fn the_schwartz_zippel_bound_of_100_points_prints_as_a_power_of_ten() {
+    use sliding_ladder::registry::check::{Config, EXACT_SET_SIZE};
+    use sliding_ladder::verify::{summary::summary_line, verify_equations};
+    let cfg = Config {
+        float_cases: 2,
+        exact_points: 100,
+        ..Config::default()
+    };
+    let e12: Vec<_> = equations().into_iter().filter(|e| e.number == 12).collect();
+    let rows = verify_equations(e12, &cfg);
+    let r = &rows[0];
+    // The float underflows: what a plain print of it would say.
+    assert_eq!(r.sz_bound, 0.0);
+    assert_eq!(format!("{:.1e}", r.sz_bound), "0.0e0");
+    // Each point contributes at least log10(EXACT_SET_SIZE) − log10(degree) decades; a degree
+    // below 100 leaves at least (log10 N − 2) × 100.
+    let most = -(EXACT_SET_SIZE.log10() - 2.0) * 100.0;
+    assert!(
+        r.sz_bound_log10.is_finite() && r.sz_bound_log10 <= most,
+        "{}",
+        r.sz_bound_log10
+    );
+    let line = summary_line(&rows, &cfg, 0.0);
+    let at = line.find("Schwartz-Zippel bound ≤ 1e").expect("the bound")
+        + "Schwartz-Zippel bound ≤ 1e".len();
+    let power: f64 = line[at..]
+        .split([';', ' '])
+        .next()
+        .and_then(|s| s.parse().ok())
+        .expect("a power of ten");
+    assert_eq!(power, r.sz_bound_log10.ceil(), "{line}");
+    assert!(power < -308.0, "{line}");
+}

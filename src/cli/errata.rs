@@ -54,6 +54,13 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
             if let Some((printed, corrected)) = c.erratum {
                 println!("  {:<16}   printed: {printed}   corrected: {corrected}", "");
             }
+            if let Some(d) = &c.difference_latex {
+                println!(
+                    "  {:<16}   printed − corrected = {}   (for any state; the correction is proved symbolically)",
+                    "",
+                    crate::print::unicode::unicode(d)
+                );
+            }
         }
     }
     if !json_out {

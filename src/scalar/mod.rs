@@ -29,6 +29,7 @@ mod jet;
 mod modp;
 pub mod poly;
 mod si_unit;
+mod sym_factor;
 mod sym_print;
 mod symbolic;
 
@@ -37,6 +38,7 @@ pub use degree::Degree;
 pub use dimension::{Clash, Dim, Dimension, Exponent, Inconsistency};
 pub use jet::Jet;
 pub use modp::{Modp, MODULUS};
+pub use sym_factor::{factored_latex, factored_text};
 pub use sym_print::{latex, text};
 pub use symbolic::{Den, Sym};
 

@@ -8,7 +8,7 @@ use super::poly::{var_names, Mono, Poly};
 use super::{Rational, Sym};
 use num_traits::{One, Signed};
 
-fn mono_str(m: &Mono, latex: bool) -> String {
+pub(super) fn mono_str(m: &Mono, latex: bool) -> String {
     m.iter()
         .map(|&(v, e)| {
             let (t, l) = var_names(v);
@@ -33,7 +33,7 @@ fn coef_str(q: &Rational, latex: bool) -> String {
     }
 }
 
-fn ordered(p: &Poly) -> Vec<(&Mono, &Rational)> {
+pub(super) fn ordered(p: &Poly) -> Vec<(&Mono, &Rational)> {
     let mut terms: Vec<_> = p.terms.iter().collect();
     let deg = |m: &Mono| m.iter().map(|x| x.1).sum::<u32>();
     terms.sort_by(|a, b| deg(b.0).cmp(&deg(a.0)).then_with(|| a.0.cmp(b.0)));
@@ -42,11 +42,33 @@ fn ordered(p: &Poly) -> Vec<(&Mono, &Rational)> {
 
 /// A polynomial as text or LaTeX.
 pub fn poly_str(p: &Poly, latex: bool) -> String {
-    if p.is_zero() {
+    terms_str(ordered(p), latex)
+}
+
+/// The terms of a factor in print order: by degree, c before s (c² − s², as the note writes
+/// cos²θ − sin²θ), then as [`ordered`].
+pub(super) fn factor_ordered(p: &Poly) -> Vec<(&Mono, &Rational)> {
+    let mut terms = ordered(p);
+    let deg = |m: &Mono| m.iter().map(|x| x.1).sum::<u32>();
+    let c = |m: &Mono| super::poly::exponent(m, super::poly::C);
+    terms.sort_by(|a, b| deg(b.0).cmp(&deg(a.0)).then_with(|| c(b.0).cmp(&c(a.0))));
+    terms
+}
+
+/// [`poly_str`] of a factor: [`factor_ordered`], positive terms first (a factor whose sign was
+/// turned reads `c θ̈ − s θ̇²`, not `−s θ̇² + c θ̈`).
+pub(super) fn factor_str(p: &Poly, latex: bool) -> String {
+    let mut terms = factor_ordered(p);
+    terms.sort_by_key(|t| t.1.is_negative());
+    terms_str(terms, latex)
+}
+
+fn terms_str(terms: Vec<(&Mono, &Rational)>, latex: bool) -> String {
+    if terms.is_empty() {
         return "0".into();
     }
     let mut out = String::new();
-    for (i, (m, q)) in ordered(p).into_iter().enumerate() {
+    for (i, (m, q)) in terms.into_iter().enumerate() {
         let neg = q.is_negative();
         let a = q.abs();
         if i == 0 {

@@ -35,6 +35,27 @@ pub struct Claim {
     /// For an erratum: whether the printed version fails at every exact point.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub printed_fails: Option<bool>,
+    /// For a quantitative prose erratum: printed − corrected in the symbolic scalar, factored,
+    /// as LaTeX (θ, θ̇ free), when the corrected form is also proved equal to the model's value.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub difference_latex: Option<String>,
+}
+
+/// The prose L_A of sec. A.5 with l to the given power: −(2/3) m lᵏ θ̇ (printed k = 1, right k = 2).
+fn la_prose<S: Scalar>(l: &Ladder<S>, s: &State<S>, k: u32) -> S {
+    let lk = (0..k).fold(S::int(1), |p, _| p * l.l.clone());
+    -(S::ratio(2, 3) * l.m.clone() * lk * s.rate.clone())
+}
+
+/// printed − corrected of the A.5 prose slip, factored LaTeX, if the corrected form is proved
+/// to be the model's L_A (12) symbolically (else `None`: no difference to show).
+pub fn la_prose_difference() -> Option<String> {
+    let (l, s, _) = crate::registry::prove::symbolic_ladder(LadderSample::Kinematic);
+    let corrected = la_prose(&l, &s, 2);
+    let model = angular_momentum_about_a(&l, &s);
+    (corrected.clone() - model)
+        .is_zero()
+        .then(|| crate::scalar::factored_latex(&(la_prose(&l, &s, 1) - corrected)))
 }
 
 /// Three exact ladder states of the given sort (fixed integers: reproducible).
@@ -109,6 +130,7 @@ pub fn claims() -> Vec<Claim> {
         erratum: None,
         holds,
         printed_fails: None,
+        difference_latex: None,
     };
     let erratum = |location, claim, printed, corrected, holds, printed_fails| Claim {
         location,
@@ -116,6 +138,7 @@ pub fn claims() -> Vec<Claim> {
         erratum: Some((printed, corrected)),
         holds,
         printed_fails: Some(printed_fails),
+        difference_latex: None,
     };
     let on_circle = all(Kinematic, |l, s| {
         corner_position(Corner::B, l, s).dot(&corner_position(Corner::B, l, s)) == sq(&l.l)
@@ -189,12 +212,10 @@ pub fn claims() -> Vec<Claim> {
             )
     });
     let la_prose_printed_fails = all(Kinematic, |l, s| {
-        angular_momentum_about_a(l, s)
-            != -(Q::ratio(2, 3) * l.m.clone() * l.l.clone() * s.rate.clone())
+        angular_momentum_about_a(l, s) != la_prose(l, s, 1)
     });
     let la_prose_corrected = all(Kinematic, |l, s| {
-        angular_momentum_about_a(l, s)
-            == -(Q::ratio(2, 3) * l.m.clone() * sq(&l.l) * s.rate.clone())
+        angular_momentum_about_a(l, s) == la_prose(l, s, 2)
     });
     vec![
         ok("sec. 2.1", "the centre of mass B moves on a circle of radius l about A", on_circle),
@@ -215,8 +236,12 @@ pub fn claims() -> Vec<Claim> {
             erratum: Some(("about point C", "about point D")),
             holds: d_label_printed,
             printed_fails: None,
+            difference_latex: None,
         },
-        erratum("sec. A.5", "L = L_A written as −(2/3) m l θ̇: a factor l is missing", r"-\frac{2}{3}m l \dot{\theta}", r"-\frac{2}{3}m l^2 \dot{\theta}", la_prose_corrected, la_prose_printed_fails),
+        Claim {
+            difference_latex: la_prose_difference(),
+            ..erratum("sec. A.5", "L = L_A written as −(2/3) m l θ̇: a factor l is missing", r"-\frac{2}{3}m l \dot{\theta}", r"-\frac{2}{3}m l^2 \dot{\theta}", la_prose_corrected, la_prose_printed_fails)
+        },
     ]
 }
 

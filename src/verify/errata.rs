@@ -43,7 +43,7 @@ pub struct ErratumReport {
     pub corrected_residual: String,
     /// printed − corrected as a function of free variables (s = sin θ, c = cos θ, θ̇, θ̈, …;
     /// for a sum over particles, the summand of particle 1), simplified modulo s² + c² = 1, as
-    /// plain text; a vector is (x, y, z).
+    /// plain text, factored for reading ([`crate::scalar::factored_text`]); a vector is (x, y, z).
     pub difference_text: String,
     /// The same difference as LaTeX.
     pub difference_latex: String,
@@ -60,19 +60,22 @@ pub fn difference(e: &crate::registry::Equation) -> (String, String) {
         .find(|d| !d.is_empty())
         .unwrap_or_default();
     match d.as_slice() {
-        [one] => (crate::scalar::text(one), crate::scalar::latex(one)),
+        [one] => (
+            crate::scalar::factored_text(one),
+            crate::scalar::factored_latex(one),
+        ),
         many => (
             format!(
                 "({})",
                 many.iter()
-                    .map(crate::scalar::text)
+                    .map(crate::scalar::factored_text)
                     .collect::<Vec<_>>()
                     .join(", ")
             ),
             format!(
                 "\\left({}\\right)",
                 many.iter()
-                    .map(crate::scalar::latex)
+                    .map(crate::scalar::factored_latex)
                     .collect::<Vec<_>>()
                     .join(",\\ ")
             ),
