@@ -281,3 +281,90 @@ fn chromium_renders_the_book() {
         bytes.len()
     );
 }
+
+/// What `ladder verify --json` must say for issues 10 and 14: every display proved (its checks
+/// and its print), every display a units verdict, inconsistent only where an erratum drops a
+/// dimensional factor ((49), (62), (68)), no display sampled only, every residual with its unit.
+fn proof_and_units_problems(json: &serde_json::Value) -> Vec<String> {
+    let mut out = Vec::new();
+    let rows = json["equations"].as_array().cloned().unwrap_or_default();
+    let ext = json["extensions"].as_array().cloned().unwrap_or_default();
+    for r in rows.iter().chain(&ext) {
+        let label = r["label"].as_str().unwrap_or("?");
+        let note = r["number"].as_u64().is_some_and(|n| n <= 90);
+        if r["proved"] != true {
+            out.push(format!("{label}: not proved"));
+        }
+        if !matches!(
+            r["proof"].as_str(),
+            Some("proved" | "erratum" | "definition")
+        ) {
+            out.push(format!("{label}: proof {}", r["proof"]));
+        }
+        if note && r["print_proved"] != true {
+            out.push(format!("{label}: print not proved"));
+        }
+        let units = r["units"].as_str().unwrap_or("missing");
+        let inconsistent = r["number"]
+            .as_u64()
+            .is_some_and(|n| [49, 62, 68].contains(&n));
+        match (units, inconsistent) {
+            ("consistent" | "dimensionless", false) => {}
+            ("inconsistent", true) if r["units_detail"].is_string() && r["proof"] == "erratum" => {}
+            _ => out.push(format!("{label}: units {units}")),
+        }
+        if !r["max_residual_unit"]
+            .as_str()
+            .is_some_and(|u| u.contains("u = 2^-53"))
+        {
+            out.push(format!("{label}: residual without its unit"));
+        }
+    }
+    let s = &json["summary"];
+    if s["proved"] != 90 || s["sampled_only"] != 0 {
+        out.push(format!(
+            "summary: {} proved, {} sampled only",
+            s["proved"], s["sampled_only"]
+        ));
+    }
+    if s["print"]["displays_proved"] != 90 || s["print"]["forms_proved"] != 345 {
+        out.push(format!("summary: print {}", s["print"]));
+    }
+    out
+}
+
+#[test]
+fn the_json_proves_every_display_with_its_units_and_a_lapse_is_caught() {
+    let (_, json) = book();
+    let problems = proof_and_units_problems(json);
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+    // Each property can fail: plant one lapse of each kind.
+    let plant = |f: &dyn Fn(&mut serde_json::Value)| {
+        let mut j = json.clone();
+        f(&mut j);
+        proof_and_units_problems(&j)
+    };
+    fn row(j: &mut serde_json::Value, n: usize) -> &mut serde_json::Value {
+        &mut j["equations"][n - 1]
+    }
+    assert_eq!(
+        plant(&|j| row(j, 12)["proved"] = false.into()),
+        ["(12): not proved"]
+    );
+    assert_eq!(
+        plant(&|j| row(j, 12)["print_proved"] = false.into()),
+        ["(12): print not proved"]
+    );
+    assert_eq!(
+        plant(&|j| row(j, 28)["units"] = "inconsistent".into()),
+        ["(28): units inconsistent"]
+    );
+    assert_eq!(
+        plant(&|j| row(j, 49)["units"] = "consistent".into()),
+        ["(49): units consistent"]
+    );
+    assert_eq!(
+        plant(&|j| j["summary"]["sampled_only"] = 1.into()),
+        ["summary: 90 proved, 1 sampled only"]
+    );
+}

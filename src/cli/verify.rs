@@ -1,7 +1,9 @@
 //! `ladder verify`: every equation checked, printed as a table or JSON, and the exit code.
 
 use crate::registry::check::Config;
-use crate::verify::summary::{proof_counts, schwartz_zippel_sentence, summary_line};
+use crate::verify::summary::{
+    print_proof_counts, proof_counts, schwartz_zippel_sentence, summary_line,
+};
 use crate::verify::table::render;
 use crate::verify::{counts, print_coverage, verify_all, EquationResult};
 use clap::Args;
@@ -98,8 +100,9 @@ pub fn verify(json_out: bool, cfg: &Config, only: Option<&str>, wide: bool) -> E
         println!("{}", summary_line(&results, cfg, seconds));
         println!("  {}", schwartz_zippel_sentence(&results));
         let (pd, nd, pf, nf, pm) = print_coverage(&results);
+        let (pp, ppf) = print_proof_counts(&results);
         println!(
-            "print: {pd} of {nd} displays parsed in full, {pf} of {nf} printed forms parsed and checked, {pm} displays with every Rust form matching the print (equations/symbols.toml)"
+            "print: {pd} of {nd} displays parsed in full, {pf} of {nf} printed forms parsed and checked, {pm} displays with every Rust form matching the print (equations/symbols.toml); {pp} of {nd} displays proved symbolically as printed ({ppf} forms)"
         );
         print!("{}", crate::verify::legend::legend(cfg));
         print!("{}", crate::verify::legend::law_lines(&results));
@@ -142,5 +145,7 @@ pub fn verify(json_out: bool, cfg: &Config, only: Option<&str>, wide: bool) -> E
 
 fn print_summary(results: &[EquationResult]) -> serde_json::Value {
     let (pd, nd, pf, nf, pm) = print_coverage(results);
-    json!({"displays_parsed": pd, "displays": nd, "forms_parsed": pf, "forms": nf, "displays_matching_code": pm})
+    let (pp, ppf) = print_proof_counts(results);
+    json!({"displays_parsed": pd, "displays": nd, "forms_parsed": pf, "forms": nf, "displays_matching_code": pm,
+           "displays_proved": pp, "forms_proved": ppf})
 }

@@ -111,6 +111,7 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
         proved: false,
         proof: "not attempted".into(),
         proof_seconds: 0.0,
+        print_proved: None,
         units,
         units_detail: units_detail.clone(),
         units_code: units,

@@ -107,6 +107,10 @@ pub struct EquationResult {
     pub proof: String,
     /// Seconds spent on the symbolic proofs of this equation.
     pub proof_seconds: f64,
+    /// Every printed form proved symbolically against its chain (misprints shown to differ);
+    /// absent for an extension beyond the note (no print). Part of `proved`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub print_proved: Option<bool>,
     /// Dimensional analysis of every printed form ([`crate::registry::print_check::units`]);
     /// for an extension beyond the note (no print), of its Rust forms.
     pub units: Units,
@@ -155,6 +159,7 @@ pub fn add_proof_verdict(r: &mut EquationResult, v: proof::ProofVerdict) {
     r.proved = v.proved;
     r.proof = v.proof;
     r.proof_seconds = v.seconds;
+    r.print_proved = v.print_proved;
 }
 
 /// Run every check of every equation (on two threads) and judge each equation.

@@ -1,7 +1,10 @@
-//! The proof verdict of one equation: its checks evaluated symbolically ([`crate::registry::prove`]).
+//! The proof verdict of one equation: its checks evaluated symbolically ([`crate::registry::prove`])
+//! and, for a display of the note, its parsed print too
+//! ([`crate::registry::print_check::prove`]): a display is proved only when both are.
 
+use crate::registry::print_check::prove::{prove_print, PrintProof};
 use crate::registry::prove::{prove_check, CheckProof};
-use crate::registry::{Equation, Kind};
+use crate::registry::{Equation, Kind, EXTENSION_BASE};
 
 /// The proof column of one equation.
 #[derive(Clone, Debug)]
@@ -14,12 +17,34 @@ pub struct ProofVerdict {
     pub problem: Option<String>,
     /// Seconds spent on the proofs.
     pub seconds: f64,
+    /// The print proved symbolically (every printed form equals its chain for all values of the
+    /// variables, every misprint differs); `None` for an extension beyond the note (no print).
+    pub print_proved: Option<bool>,
+    /// Printed forms of the display (all proved when `print_proved`).
+    pub print_forms: usize,
 }
 
-/// Prove every check of an equation.
+/// Prove every check of an equation, and its print.
 pub fn prove_equation(e: &Equation) -> (ProofVerdict, Vec<CheckProof>) {
     let proofs: Vec<CheckProof> = e.checks.iter().map(prove_check).collect();
-    (verdict(e, &proofs), proofs)
+    let print = (e.number <= EXTENSION_BASE).then(|| prove_print(e, e.latex()));
+    (with_print(verdict(e, &proofs), print), proofs)
+}
+
+/// Add the proof of the print to a verdict on the checks: a print not proved fails the display.
+pub fn with_print(mut v: ProofVerdict, print: Option<PrintProof>) -> ProofVerdict {
+    let Some(p) = print else {
+        return v;
+    };
+    v.seconds += p.seconds;
+    v.print_proved = Some(p.proved);
+    v.print_forms = p.forms;
+    if let (true, Some(problem)) = (v.proved, p.problem) {
+        v.proved = false;
+        v.proof = "not proved".into();
+        v.problem = Some(problem);
+    }
+    v
 }
 
 /// Judge an equation from its check proofs.
@@ -32,6 +57,8 @@ pub fn verdict(e: &Equation, proofs: &[CheckProof]) -> ProofVerdict {
             proof: format!("sampled only: {}: {why}", p.name),
             problem: None,
             seconds,
+            print_proved: None,
+            print_forms: 0,
         };
     }
     let mut problem = None;
@@ -69,5 +96,7 @@ pub fn verdict(e: &Equation, proofs: &[CheckProof]) -> ProofVerdict {
         proof,
         problem,
         seconds,
+        print_proved: None,
+        print_forms: 0,
     }
 }

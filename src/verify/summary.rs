@@ -39,6 +39,15 @@ pub fn proof_counts(results: &[EquationResult]) -> (usize, usize, f64) {
     )
 }
 
+/// (displays of the note whose print is proved symbolically, printed forms in them).
+pub fn print_proof_counts(results: &[EquationResult]) -> (usize, usize) {
+    let proved: Vec<_> = results
+        .iter()
+        .filter(|r| r.print_proved == Some(true))
+        .collect();
+    (proved.len(), proved.iter().map(|r| r.print_forms).sum())
+}
+
 /// The Schwartz-Zippel bound of the summary line in one plain sentence.
 pub fn schwartz_zippel_sentence(results: &[EquationResult]) -> String {
     let worst = |f: fn(&EquationResult) -> f64| {

@@ -288,6 +288,7 @@ pub(crate) fn form_text<'a>(chains: &'a [Vec<Form>], label: &str) -> &'a str {
 }
 
 mod inject;
+pub mod prove;
 mod run;
 pub mod units;
 pub use inject::{injections, run_injection, Injection, Outcome, Typo};
