@@ -253,7 +253,7 @@ pub(super) fn check_order(
     let Some(o) = &i.order else {
         return Ok(None);
     };
-    let allowed = format!("a whole number in [{MIN_ORDER}, {MAX_ORDER}] (default: from the tolerance, about −ln(tol)/2)");
+    let allowed = format!("a whole number in [{MIN_ORDER}, {MAX_ORDER}] (default: from the tolerance, the least work per unit time)");
     if method != TAYLOR {
         return Err(cx.err(
             Some(o.span()),
