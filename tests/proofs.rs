@@ -101,3 +101,48 @@ fn the_schwartz_zippel_bound_of_100_points_prints_as_a_power_of_ten() {
     assert_eq!(power, r.sz_bound_log10.ceil(), "{line}");
     assert!(power < -308.0, "{line}");
 }
+
+/// A planted identity about particles that holds for up to three particles and not for four:
+/// Σ mᵢ over all particles against the same sum over the first three.
+fn first_three<S: Scalar>(
+    sys: &sliding_ladder::system::System<S>,
+    _p: &sliding_ladder::system::Point<S>,
+) -> Vec<Chain<S>> {
+    let mass = |k: usize| {
+        sys.particles
+            .iter()
+            .take(k)
+            .fold(S::int(0), |a, q| a + q.m.clone())
+    };
+    vec![vec![
+        printed("planted: Σ_{i≤3} m_i", mass(3)),
+        reference("Σ m_i", mass(usize::MAX)),
+    ]]
+}
+
+/// Issue 10 item 2: identities about particles are proved for exactly the counts the legend
+/// states (1, 2, 3 and 4, written here by hand); an identity false only at four particles is
+/// caught, so the fourth count is really evaluated.
+#[test]
+fn particle_identities_are_proved_for_the_counts_the_legend_states() {
+    use sliding_ladder::registry::sample::ParticleSample;
+    use sliding_ladder::verify::legend::{legend, proved_particle_counts};
+    assert_eq!(PARTICLE_COUNTS.collect::<Vec<_>>(), vec![1, 2, 3, 4]);
+    assert_eq!(proved_particle_counts(), "1, 2, 3 and 4 particles");
+    let cfg = sliding_ladder::registry::check::Config::default();
+    assert!(legend(&cfg).contains("identities about particles: for 1, 2, 3 and 4 particles"));
+    let check = Check {
+        name: "planted",
+        eval: Eval::Particles(
+            ParticleSample::General,
+            sliding_ladder::particle_fns!(first_three),
+        ),
+    };
+    let p = prove_check(&check);
+    assert!(
+        !p.proved,
+        "a sum over three of four particles passed as proved"
+    );
+    let (_, diff) = p.failure.expect("a nonzero difference");
+    assert_eq!(text(&diff), "m_4");
+}
