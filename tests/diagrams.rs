@@ -15,6 +15,7 @@ use sliding_ladder::ladder::particles::{
 use sliding_ladder::report::diagram::{arm_symbol, arrow_scale, diagram, to_px, window, Diagram};
 use sliding_ladder::report::diagram_svg::draw_svg;
 use sliding_ladder::report::svg_text::n3;
+use sliding_ladder::report::svg_text::plain;
 
 fn about(k: Corner) -> Diagram {
     let (ladder, st) = example_state(true);
@@ -137,7 +138,10 @@ fn the_svg_draws_each_arrow_where_the_model_puts_it() {
             );
             // The legend states the force's components as the model has them.
             let row = format!("{} = ({}, {}) N", a.symbol, n3(a.force.0), n3(a.force.1));
-            assert!(svg.contains(&row), "about {k:?}: no legend row '{row}'");
+            assert!(
+                plain(&svg).contains(&row),
+                "about {k:?}: no legend row '{row}'"
+            );
         }
         // A wrong force would not be found: lengthen F_w by 1 % and look for its shaft.
         let f = &d.arrows[0];
@@ -283,7 +287,7 @@ fn ladder_diagram_draws_the_books_figures_and_any_point() {
     );
     let row = format!("F_P = ({}, {}) N", n3(f.0), n3(f.1));
     assert!(
-        svg.contains(&row),
+        plain(&svg).contains(&row),
         "no '{row}' in the diagram about ladder:1/4"
     );
     assert!(svg.contains("the point of the ladder 1/4 of the way from C to D"));

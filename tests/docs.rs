@@ -178,6 +178,8 @@ fn worked_examples_are_what_the_code_generates() {
         "04-point-c.md",
         "05-point-d.md",
         "06-point-e.md",
+        "A1-method-1.md",
+        "A5-method-5.md",
     ] {
         let path = default_dir().join(f);
         let text = std::fs::read_to_string(&path).expect("section file");
@@ -192,7 +194,9 @@ fn worked_examples_are_what_the_code_generates() {
         }
         found += blocks(&fresh).len();
     }
-    assert_eq!(found, 5, "one worked example per torque-analysis section");
+    // Secs. 2.2-2.6, and the torque analyses about C of Appendix A: Jensen's method 1 (53) and
+    // Hu's method (59).
+    assert_eq!(found, 7, "one worked example per torque-analysis section");
 }
 
 /// The harness reports a worked example whose numbers no longer match the code.

@@ -224,3 +224,27 @@ fn errata_md_names_the_form_the_residual_and_the_point_as_the_code_has_them() {
         "ERRATA.md does not state the point {stated:?}"
     );
 }
+
+#[test]
+fn the_whole_terminal_output_of_ladder_errata_is_unicode() {
+    // Every formula the terminal shows, the prose errata's included, is read into Unicode
+    // (issue 16, item 4); the LaTeX stays in --json. Before, the prose erratum of sec. A.5
+    // printed `-\frac{2}{3}m l \dot{\theta}` in the terminal.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .arg("errata")
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&out.stdout);
+    let latex: Vec<&str> = text.lines().filter(|l| l.contains('\\')).collect();
+    assert!(latex.is_empty(), "LaTeX in the terminal: {latex:#?}");
+    let a5 = sliding_ladder::print::unicode::unicode(r"-\frac{2}{3}m l^2 \dot{\theta}");
+    assert!(text.contains(&format!("corrected: {a5}")), "{text}");
+    // Plain words pass through unchanged.
+    assert!(text.contains("printed: about point C   corrected: about point D"));
+    let json = std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(["errata", "--json"])
+        .output()
+        .expect("runs");
+    assert!(String::from_utf8_lossy(&json.stdout).contains(r"-\\frac{2}{3}m l^2 \\dot{\\theta}"));
+}

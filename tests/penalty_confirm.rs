@@ -142,7 +142,8 @@ fn scene(angle: &str, rate: &str, springs: (&str, &str), method: &str, tol: &str
 /// F1 (dop853, θ0 = 1e-12, κ = 1e6, tolerance 1e-10 reported θ_s = 1.4e-12 with exit 0, then
 /// was refused up front; at 1e-10 it is refused up front again since the plan holds explicit
 /// methods to τ ≤ F_w0/40 = 1.7e-11 at a tiny start, `sim::scene_work`: run here at 1e-11) and F4 (radau5 from θ0 = 2.5e-315 with a push, refused as a
-/// spurious zero although right) run and separate within the campaign judge's tolerance.
+/// spurious zero although right) run and separate within the campaign judge's tolerance; so
+/// does F9 (a subnormal θ0 pushed near the wall's limit reported θ_s = θ0 with exit 0).
 #[test]
 fn the_campaign_findings_f1_and_f4_separate_where_the_rigid_ladder_does() {
     for (name, text) in [
@@ -168,6 +169,16 @@ fn the_campaign_findings_f1_and_f4_separate_where_the_rigid_ladder_does() {
         (
             "rest",
             scene("5e-324", "0.0", ("1e4", "0.0"), "radau5", "1e-12"),
+        ),
+        // F9 (seed 1 scene 213403 in its own units): sin θ0 (Ω² − θ̇0²) underflows to 0, and
+        // the run said "left at once" (θ_s = θ0, exit 0) where θ_r = 0.152.
+        (
+            "F9",
+            scene("6e-323", "0.851", ("3.4e4", "2.0"), "dop853", "2.47e-6"),
+        ),
+        (
+            "F9 radau5",
+            scene("2e-323", "0.82", ("1e4", "0.0"), "radau5", "1e-12"),
         ),
     ] {
         let sc = parse("s.toml", &text).expect(name);

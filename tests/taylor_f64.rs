@@ -1,16 +1,18 @@
 //! The f64 fast path of the wall phase's Taylor recursion (`sim::integrators::taylor_f64`) gives
 //! the same bits as the generic recursion run in f64 (whose coefficients `tests/taylor.rs` checks
-//! exactly in rationals): same sums, same order of summation. A changed input changes the bits,
-//! so the comparison is not blind.
+//! exactly in rationals): same sums, same order of summation, in the time unit H = 1 and in the
+//! scaled units the stepper uses (H a power of two, `inv` = H/k). A changed input changes the
+//! bits, so the comparison is not blind.
 
 use sliding_ladder::sim::integrators::taylor::{
     complement_series, complement_series_f64, wall_series, wall_series_f64, Series,
 };
 
-/// (angle, rate, sin, cos) series to order p by the generic recursion in f64.
-fn generic(complement: bool, big_omega2: f64, y0: [f64; 2], p: usize) -> [Vec<f64>; 4] {
+/// (angle, rate, sin, cos) series to order p in the time unit `unit` by the generic recursion
+/// in f64.
+fn generic(complement: bool, big_omega2: f64, y0: [f64; 2], p: usize, unit: f64) -> [Vec<f64>; 4] {
     let inv: Vec<f64> = (0..p + 2)
-        .map(|k| if k == 0 { 0.0 } else { 1.0 / k as f64 })
+        .map(|k| if k == 0 { 0.0 } else { unit * (1.0 / k as f64) })
         .collect();
     let mut v = [
         vec![0.0; p + 1],
@@ -29,8 +31,10 @@ fn generic(complement: bool, big_omega2: f64, y0: [f64; 2], p: usize) -> [Vec<f6
     v
 }
 
-fn fast(complement: bool, big_omega2: f64, y0: [f64; 2], p: usize) -> [Vec<f64>; 4] {
+fn fast(complement: bool, big_omega2: f64, y0: [f64; 2], p: usize, unit: f64) -> [Vec<f64>; 4] {
     let mut s = Series::<2>::new(p);
+    s.set_unit(unit);
+    assert_eq!(s.unit(), unit, "a power of two is taken as it is");
     (s.y[0][0], s.y[1][0]) = (y0[0], y0[1]);
     (s.sin[0], s.cos[0]) = y0[0].sin_cos();
     if complement {
@@ -56,16 +60,18 @@ fn bits(v: &[Vec<f64>; 4]) -> Vec<Vec<u64>> {
 fn the_fast_recursion_gives_the_generic_bits_at_every_order() {
     for complement in [false, true] {
         for y0 in [[0.3, 0.0], [0.1, 0.02], [1.2, -0.7], [1e-9, 1e-6]] {
-            for p in [2, 3, 5, 8, 15, 16, 17, 40] {
-                let (g, f) = (
-                    generic(complement, 0.75, y0, p),
-                    fast(complement, 0.75, y0, p),
-                );
-                assert_eq!(
-                    bits(&f),
-                    bits(&g),
-                    "complement {complement}, {y0:?}, p = {p}"
-                );
+            for p in [2, 3, 5, 8, 15, 16, 17, 22, 40] {
+                for unit in [1.0, 0.5, 4.0, 2f64.powi(-10)] {
+                    let (g, f) = (
+                        generic(complement, 0.75, y0, p, unit),
+                        fast(complement, 0.75, y0, p, unit),
+                    );
+                    assert_eq!(
+                        bits(&f),
+                        bits(&g),
+                        "complement {complement}, {y0:?}, p = {p}, unit {unit:e}"
+                    );
+                }
             }
         }
     }
@@ -78,8 +84,14 @@ fn a_changed_input_changes_the_bits() {
     let up = f64::from_bits(om.to_bits() + 1);
     for complement in [false, true] {
         let (g, f) = (
-            generic(complement, om, [0.3, 0.1], 15),
-            fast(complement, up, [0.3, 0.1], 15),
+            generic(complement, om, [0.3, 0.1], 15, 0.5),
+            fast(complement, up, [0.3, 0.1], 15, 0.5),
+        );
+        assert_ne!(bits(&f), bits(&g));
+        // Another time unit: other bits.
+        let (g, f) = (
+            generic(complement, om, [0.3, 0.1], 15, 0.5),
+            fast(complement, om, [0.3, 0.1], 15, 0.25),
         );
         assert_ne!(bits(&f), bits(&g));
     }

@@ -1,6 +1,7 @@
 //! `ladder errata`: the note's misprints (printed and corrected forms with their residuals), the
 //! claims of its prose and the units it states; exit 1 when one of them does not hold as recorded.
 
+use crate::print::unicode::unicode;
 use crate::registry::check::Config;
 use crate::verify::errata::{errata, ErratumReport};
 use clap::Args;
@@ -52,7 +53,21 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
             };
             println!("  {:<16} {}: {verdict}", c.location, c.claim);
             if let Some((printed, corrected)) = c.erratum {
-                println!("  {:<16}   printed: {printed}   corrected: {corrected}", "");
+                // LaTeX in --json; here, as the terminal reads it (a wording erratum is words,
+                // which the LaTeX reader would run together).
+                let read = |t: &str| {
+                    if t.contains('\\') {
+                        unicode(t)
+                    } else {
+                        t.to_string()
+                    }
+                };
+                println!(
+                    "  {:<16}   printed: {}   corrected: {}",
+                    "",
+                    read(printed),
+                    read(corrected)
+                );
             }
             if let Some(d) = &c.difference_latex {
                 println!(
@@ -92,7 +107,6 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
 /// The misprints as a teacher reads them: each formula in Unicode (the LaTeX is in `--json`),
 /// which form of the display is misprinted, and the exact point its residual is taken at.
 pub fn misprint_text(list: &[ErratumReport]) -> String {
-    use crate::print::unicode::unicode;
     let mut out = String::from(
         "misprinted equations (the printed form fails exactly; the corrected form holds; LaTeX in --json):\n",
     );

@@ -1,10 +1,12 @@
 //! Worked examples for the torque-analysis sections, generated from the code.
 //!
-//! Each torque analysis (16), (19), (22), (25), (28) is evaluated at one stated state of the
+//! Each torque analysis (16), (19), (22), (25), (28), and those of Appendix A about C, (53)
+//! (Jensen's method 1) and (59) (Hu's method), is evaluated at one stated state of the
 //! ladder (m = 1 kg, l = 1 m, g = 9.81 m/s², θ = 30°, released from rest upright so that θ̇ comes
 //! from (10)), once on the motion (θ̈ from (5)) and once off it (θ̈ = 0, same θ and θ̇). The
 //! table shows the two sides of the display's law `=` ([`crate::registry::Law`]): equal on the
-//! motion, unequal off it, with the side right of the law unchanged (it holds for any θ̈). The
+//! motion, unequal off it, with the side right of the law unchanged (it holds for any θ̈), and
+//! a misprinted form's own value beside them ((28)). The
 //! book carries the generated text between `<!-- worked-example N -->` and
 //! `<!-- end worked-example -->`; the doc harness regenerates it and reports any difference, so
 //! the numbers cannot drift from the code. `LADDER_BLESS_DOCS=1 cargo test --test docs` rewrites
@@ -46,6 +48,16 @@ fn forms(
     ladder: &Ladder<f64>,
     st: &State<f64>,
 ) -> Result<Vec<(&'static str, f64)>, String> {
+    sides(number, ladder, st, &[Role::Printed, Role::Corrected])
+}
+
+/// The sides of equation `number`'s first on-shell ladder chain with one of `roles`, in f64.
+fn sides(
+    number: u32,
+    ladder: &Ladder<f64>,
+    st: &State<f64>,
+    roles: &[Role],
+) -> Result<Vec<(&'static str, f64)>, String> {
     let e = equations()
         .into_iter()
         .find(|e| e.number == number)
@@ -63,7 +75,7 @@ fn forms(
         .first()
         .ok_or(format!("({number}) has no chain"))?
         .iter()
-        .filter(|s| matches!(s.role, Role::Printed | Role::Corrected))
+        .filter(|s| roles.contains(&s.role))
         .map(|s| (s.label, s.value))
         .collect())
 }
@@ -89,7 +101,17 @@ pub fn worked_example(number: u32) -> Result<String, String> {
     let k = law.step as usize;
     let (ladder, on) = example_state(true);
     let (_, off) = example_state(false);
-    let (f_on, f_off) = (forms(number, &ladder, &on)?, forms(number, &ladder, &off)?);
+    let (mut f_on, mut f_off) = (forms(number, &ladder, &on)?, forms(number, &ladder, &off)?);
+    // A display whose first printed form is dL/dt (as (53): "dL_C/dt = ...") may carry it in
+    // the chain as the reference it is checked against (dL_C/dt of the particles, by AD);
+    // then that reference is the display's first form.
+    if k == f_on.len() {
+        let first = |st| sides(number, &ladder, st, &[Role::Reference]).map(|r| r.first().copied());
+        if let (Some(a), Some(b)) = (first(&on)?, first(&off)?) {
+            f_on.insert(0, a);
+            f_off.insert(0, b);
+        }
+    }
     if k >= f_on.len() {
         return Err(format!("({number}): law step {k} but {} forms", f_on.len()));
     }
@@ -115,24 +137,57 @@ pub fn worked_example(number: u32) -> Result<String, String> {
     ));
     let last = f_on.len() - 1;
     out.push_str(&format!(
-        "| left of the law: {} | {} N·m | {} N·m |\n| right of the law: {} | {} N·m | {} N·m |\n\
-         | last form of the display: {} | {} N·m | {} N·m |\n\n",
+        "| left of the law: {} | {} N·m | {} N·m |\n| right of the law: {} | {} N·m | {} N·m |\n",
         f_on[k - 1].0,
         num(f_on[k - 1].1),
         num(f_off[k - 1].1),
         f_on[k].0,
         num(f_on[k].1),
         num(f_off[k].1),
-        f_on[last].0,
-        num(f_on[last].1),
-        num(f_off[last].1),
     ));
-    out.push_str(
-        "On the motion every form agrees. Off it the two sides of the law differ, while the forms \
+    // The display's last form, unless the right of the law is the last form already.
+    if last > k {
+        out.push_str(&format!(
+            "| last form of the display: {} | {} N·m | {} N·m |\n",
+            f_on[last].0,
+            num(f_on[last].1),
+            num(f_off[last].1),
+        ));
+    }
+    out.push('\n');
+    // A misprinted form (kept as printed in the code) agrees with neither side, on the motion
+    // or off it: the reader sees the erratum in numbers.
+    let (m_on, m_off) = (
+        sides(number, &ladder, &on, &[Role::Misprint])?,
+        sides(number, &ladder, &off, &[Role::Misprint])?,
+    );
+    if !m_on.is_empty() {
+        out.truncate(out.len() - 1);
+        for ((label, v_on), (_, v_off)) in m_on.iter().zip(&m_off) {
+            out.push_str(&format!(
+                "| misprint ([ERRATA.md](ERRATA.md)): {label} | {} N·m | {} N·m |\n",
+                num(*v_on),
+                num(*v_off)
+            ));
+        }
+        out.push('\n');
+    }
+    out.push_str(if m_on.is_empty() {
+        "On the motion every form agrees. Off it"
+    } else {
+        "On the motion every form agrees but the misprint. Off it"
+    });
+    out.push_str(if last > k {
+        " the two sides of the law differ, while the forms \
          right of the law still agree with one another: each `=` among them is algebra with the \
          forces the motion requires, (14) and (15), and holds for any θ̈. The chain breaks at the \
-         law alone, which is why the display holds on the motion only.\n",
-    );
+         law alone, which is why the display holds on the motion only.\n"
+    } else {
+        " the two sides of the law differ: every other `=` \
+         is algebra or kinematics, with the forces the motion requires, (14) and (15), and holds \
+         for any θ̈. The chain breaks at the law alone, which is why the display holds on the \
+         motion only.\n"
+    });
     Ok(out)
 }
 

@@ -6,9 +6,11 @@
 //! coordinate force F_P = −m a_P (17) at the centre of mass, with a_P by automatic
 //! differentiation of P's position. For each arrow it gives the lever arm about P (the distance
 //! from P to the line of action), in the note's symbols where it is one of them
-//! ([`arm_symbol`]), and the torque (x_Q − x_P) × F about P. [`super::diagram_svg`] draws it.
+//! ([`arm_symbol`]), and the torque (x_Q − x_P) × F about P; and, beside their sum, the rate
+//! dL'_P/dt of the model's angular momentum, so that the figure shows the law of motion holding
+//! (or, off the motion, failing). [`super::diagram_svg`] draws it.
 
-use crate::ladder::analysis::ReferencePoint;
+use crate::ladder::analysis::{torque_equation, AngularMomentum, ReferencePoint};
 use crate::ladder::forces::{floor_force, wall_force};
 use crate::ladder::geometry::{corner_position, Corner};
 use crate::ladder::torque::coordinate_force;
@@ -46,6 +48,10 @@ pub struct Diagram {
     pub mass_length: (f64, f64),
     /// What P is, when it is not one of A-E (for the legend).
     pub description: Option<String>,
+    /// dL'_P/dt of the particle model, by automatic differentiation (L'_P of (39), which is L_P
+    /// when P is at rest), N·m: the left side of the torque law (40), which the total torque
+    /// equals on the motion and not off it.
+    pub angular_momentum_rate: f64,
 }
 
 fn xy(v: &crate::vector::Vec3<f64>) -> (f64, f64) {
@@ -93,6 +99,7 @@ pub fn diagram(
         state: (st.sin.atan2(st.cos), st.rate, st.accel),
         mass_length: (ladder.m, ladder.l),
         description: None,
+        angular_momentum_rate: torque_equation(point, AngularMomentum::Relative, ladder, st).0,
     }
 }
 
@@ -153,6 +160,12 @@ pub fn to_px(d: &Diagram, q: (f64, f64)) -> (f64, f64) {
 /// state equals the computed arm to rounding. `None` for another arm (the coordinate force
 /// about E, which is neither horizontal nor vertical).
 pub fn arm_symbol(d: &Diagram, a: &Arrow) -> Option<&'static str> {
+    length_symbol(d, a.arm)
+}
+
+/// A length (m) in the note's symbols (0, l sin θ, l cos θ, 2l sin θ, 2l cos θ), when it is one
+/// of them at the diagram's state, to rounding.
+pub fn length_symbol(d: &Diagram, length: f64) -> Option<&'static str> {
     let (th, l) = (d.state.0, d.mass_length.1);
     let (s, c) = (th.sin(), th.cos());
     let candidates = [
@@ -164,6 +177,32 @@ pub fn arm_symbol(d: &Diagram, a: &Arrow) -> Option<&'static str> {
     ];
     candidates
         .iter()
-        .find(|(_, v)| (a.arm - v).abs() <= 1e-12 * (1.0 + l))
+        .find(|(_, v)| (length - v).abs() <= 1e-12 * (1.0 + l))
         .map(|(n, _)| *n)
+}
+
+/// The torque of a slanted force (both components nonzero, not through P) split by
+/// components, as the note writes such torques ((28)): (x_Q − x_P) F_y − (y_Q − y_P) F_x, each
+/// term as (its value, the component's symbol "F_E,x", the sign it carries, the arm's length).
+/// `None` for a force along x or y, or through P, whose torque is one term already.
+pub fn component_torques(d: &Diagram, a: &Arrow) -> Option<[(f64, String, f64, f64); 2]> {
+    let r = (a.at.0 - d.p.0, a.at.1 - d.p.1);
+    if a.force.0 == 0.0 || a.force.1 == 0.0 || a.arm <= 1e-12 || r.0 == 0.0 || r.1 == 0.0 {
+        return None;
+    }
+    // The x component's torque is −(y_Q − y_P) F_x, the y component's (x_Q − x_P) F_y.
+    Some([
+        (
+            -r.1 * a.force.0,
+            format!("{},x", a.symbol),
+            -r.1.signum(),
+            r.1.abs(),
+        ),
+        (
+            r.0 * a.force.1,
+            format!("{},y", a.symbol),
+            r.0.signum(),
+            r.0.abs(),
+        ),
+    ])
 }

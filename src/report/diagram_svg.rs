@@ -10,7 +10,7 @@
 //! out slightly wrong; here every coordinate is a float with two decimals.
 
 use super::diagram::{arm_symbol, arrow_scale, drawing_width, to_px, window, Arrow, Diagram, SIDE};
-use super::svg_text::{esc, n3, FORCE_COLOURS};
+use super::svg_text::{esc, n3, subscript, FORCE_COLOURS};
 use std::fmt::Write;
 
 /// Width of the legend column right of the drawing, px.
@@ -29,26 +29,11 @@ fn label(out: &mut String, at: (f64, f64), anchor: &str, colour: &str, size: u32
     let _ = writeln!(
         out,
         "<text x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"{anchor}\" font-size=\"{size}\" fill=\"{colour}\" \
-stroke=\"white\" stroke-width=\"4\" stroke-linejoin=\"round\" paint-order=\"stroke\">{}</text>",
+stroke=\"white\" stroke-width=\"4\" stroke-linejoin=\"round\" paint-order=\"stroke\" xml:space=\"preserve\">{}</text>",
         at.0,
         at.1,
         subscript(text, size)
     );
-}
-
-/// A symbol as typeset: `F_w` is F with a lowered, smaller w (an SVG `tspan`); text without
-/// `_` is only escaped.
-pub fn subscript(text: &str, size: u32) -> String {
-    match text.split_once('_') {
-        Some((base, sub)) => format!(
-            "{}<tspan dy=\"{:.1}\" font-size=\"{}\">{}</tspan>",
-            esc(base),
-            0.3 * f64::from(size),
-            size * 3 / 4,
-            esc(sub)
-        ),
-        None => esc(text),
-    }
 }
 
 /// The arrow of one force: a shaft from where it acts to its tip (the force times the scale),
@@ -85,12 +70,15 @@ fn arrow(out: &mut String, d: &Diagram, a: &Arrow, colour: &str) {
         base.1 - w * ux
     );
     // The symbol (the value is in the legend): a mostly horizontal arrow's just under its tip
-    // (its line may carry lever arms), any other beyond its tip, along it.
+    // (its line may carry lever arms), a mostly vertical one's beside its tip, right of the
+    // shaft (its line of action, dotted, runs on through the tip), any other beyond its tip.
     let (at, anchor) = if ux.abs() > 0.85 {
         (
             (to.0 - 4.0 * ux.signum(), to.1 + 20.0),
             if ux > 0.0 { "end" } else { "start" },
         )
+    } else if uy.abs() > 0.85 {
+        ((to.0 + 10.0, to.1 - 6.0 * uy.signum() + 5.0), "start")
     } else {
         let anchor = if ux < -0.3 {
             "end"
@@ -154,12 +142,24 @@ fn lever_arm(out: &mut String, d: &Diagram, a: &Arrow, colour: &str, side: f64) 
     let w = if side > 0.0 { 0.6 } else { 0.4 };
     let mid = (p.0 + w * (f.0 - p.0), p.1 + w * (f.1 - p.1));
     let normal = (-vy * side, vx * side);
-    let at = (mid.0 + 14.0 * normal.0, mid.1 + 14.0 * normal.1 + 4.0);
+    // Beside a mostly vertical arm the label starts (or ends) a little off the line, so that it
+    // does not straddle the line; elsewhere it is centred above or below it.
+    let (at, anchor) = if normal.0.abs() > 0.7 {
+        (
+            (mid.0 + 8.0 * normal.0.signum(), mid.1 + 5.0),
+            if normal.0 > 0.0 { "start" } else { "end" },
+        )
+    } else {
+        (
+            (mid.0 + 14.0 * normal.0, mid.1 + 14.0 * normal.1 + 4.0),
+            "middle",
+        )
+    };
     let text = match arm_symbol(d, a) {
         Some(sym) => sym.to_string(),
         None => format!("{} m", n3(a.arm)),
     };
-    label(out, at, "middle", colour, 14, &text);
+    label(out, at, anchor, colour, 14, &text);
 }
 
 /// The foot of the perpendicular from P on the line of action of `a` (m); `None` when the arm

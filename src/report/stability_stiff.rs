@@ -206,10 +206,9 @@ pub fn penalty_cases(tick: &mut impl FnMut(&str, u64)) -> (Vec<Case>, Convergenc
                         " [worst of {} with κ ± 2 ulp; θ_s spread {width:.1e}]",
                         members.len()
                     );
-                    // The issue's target: the same answer within 1e-9 when κ moves by ulps.
-                    if width > 1e-9 {
+                    if let Some(reason) = spread_failure(spread) {
                         c.verdict = Verdict::Fail;
-                        c.reason = format!("θ_s moves by {width:.1e} over κ ± 2 ulp (> 1e-9)");
+                        c.reason = reason;
                     }
                 }
             } else {
@@ -219,6 +218,18 @@ pub fn penalty_cases(tick: &mut impl FnMut(&str, u64)) -> (Vec<Case>, Convergenc
         }
     }
     (cases, convergence(errors))
+}
+
+/// Issue 17's target: the separation angle must not move by more than this (rad) when κ moves
+/// by a few ulps; a larger spread means the answer depends on rounding, not on the physics.
+pub const ULP_SPREAD_LIMIT: f64 = 1e-9;
+
+/// Why the separation angles (lowest, highest) over κ ± 2 ulp fail [`ULP_SPREAD_LIMIT`], if they do.
+pub fn spread_failure((lowest, highest): (f64, f64)) -> Option<String> {
+    let width = highest - lowest;
+    // A NaN spread fails too.
+    (width.is_nan() || width > ULP_SPREAD_LIMIT)
+        .then(|| format!("θ_s moves by {width:.1e} over κ ± 2 ulp (> {ULP_SPREAD_LIMIT:.0e})"))
 }
 
 fn convergence(errors: Vec<(f64, f64)>) -> Convergence {
@@ -325,4 +336,19 @@ pub fn lagrange_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
         }
     }
     cases
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{spread_failure, ULP_SPREAD_LIMIT};
+
+    /// The spread check passes a spread at the limit and fails one just past it, and a NaN.
+    #[test]
+    fn spread_check_can_fail() {
+        let at = 0.84;
+        assert_eq!(spread_failure((at, at + 0.5 * ULP_SPREAD_LIMIT)), None);
+        let wide = spread_failure((at, at + 2.0 * ULP_SPREAD_LIMIT)).expect("2e-9 must fail");
+        assert!(wide.contains("2.0e-9") && wide.contains("> 1e-9"), "{wide}");
+        assert!(spread_failure((at, f64::NAN)).is_some());
+    }
 }

@@ -100,7 +100,14 @@ impl Event<2> for ComplementSeparation {
     }
     /// Ω² sin φ − φ̇² and its rate on the step's polynomials of sin φ and φ̇.
     fn on_series(&self, s: &Series<2>, tau: f64) -> Option<(f64, f64)> {
-        Some(separation_factor_on(self.0, &s.sin, &s.y[1], s.order, tau))
+        Some(separation_factor_on(
+            self.0,
+            &s.sin,
+            &s.y[1],
+            s.order,
+            s.inv_unit(),
+            tau,
+        ))
     }
     /// Ω² sin φ − φ̇² with the carried sin φ.
     fn value_with_trig(&self, _t: f64, y: &[f64; 2], trig: (f64, f64)) -> f64 {

@@ -36,7 +36,12 @@ impl Event<2> for SeparationEvent {
     /// Ω² cos θ − θ̇² and its rate on the step's polynomials of cos θ and θ̇.
     fn on_series(&self, s: &taylor::Series<2>, tau: f64) -> Option<(f64, f64)> {
         Some(taylor::separation_factor_on(
-            self.0, &s.cos, &s.y[1], s.order, tau,
+            self.0,
+            &s.cos,
+            &s.y[1],
+            s.order,
+            s.inv_unit(),
+            tau,
         ))
     }
     /// Ω² cos θ − θ̇² with the carried cos θ.

@@ -59,9 +59,9 @@ use super::integrators::any::AnyStepper;
 use super::integrators::{order, Control, Ode, Stats, Stepper};
 use super::lead_in::linear_lead_in;
 use super::penalty_confirm::confirm_separation;
+use super::penalty_start::slow_forces;
 pub use super::penalty_start::OMEGA2;
-use super::penalty_start::{rigid_forces, slow_forces};
-use super::rigid::{event_safe_step, Ladder};
+use super::rigid::{event_safe_step, separation_factor, Ladder};
 use super::run::{integrate_phase, RunError};
 use num_dual::DualNum;
 use std::cell::Cell;
@@ -344,12 +344,15 @@ pub fn separation(
     if !(contact.kappa.is_finite() && contact.kappa > 0.0) {
         return fail(format!("stiffness κ = {} is not usable", contact.kappa));
     }
-    let (fw0, _) = rigid_forces(theta0, rate0);
     if theta0 == 0.0 && rate0 == 0.0 {
         return fail("θ0 = θ̇0 = 0 is the equilibrium: the ladder never leaves the wall".into());
     }
-    if fw0 < 0.0 || (fw0 == 0.0 && theta0 > 0.0) {
-        // The wall would have to pull at once: the ladder leaves it at t = 0.
+    // The wall would have to pull at once: the ladder leaves it at t = 0. Judged by the factor
+    // of F_w = sin θ (Ω² cos θ − θ̇²) (14), as the rigid phases do (`extreme::wall_release`):
+    // the product underflows to 0 at a subnormal θ0, and a push short of the limit then "left
+    // at once" (the campaign's F9: θ0 = 2e-323 pushed to θ̇0 = 0.82, θ_s = θ0, 0.24 rad from
+    // the rigid separation, exit 0).
+    if separation_factor(OMEGA2, theta0, rate0) <= 0.0 {
         return PenaltyRun {
             result: Ok(PenaltySeparation {
                 angle: theta0,

@@ -19,6 +19,7 @@
 
 mod adaptive;
 pub mod any;
+mod dense_lu;
 pub mod dop853;
 mod dop853_tables;
 pub mod dopri5;

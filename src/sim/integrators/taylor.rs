@@ -18,12 +18,13 @@
 //!
 //! **Order and step** (Á. Jorba and M. Zou, "A software package for the numerical integration of
 //! ODEs by means of high-order Taylor methods", *Experimental Mathematics* 14 (2005), sec. 3.2):
-//! with a relative tolerance ε the order is p = ⌈−ln(ε)/2⌉ + 1 and the step is
+//! with a relative tolerance ε their order is p = ⌈−ln(ε)/2⌉ + 1 (this crate takes a higher one,
+//! [`order_for`]) and the step is
 //! h = min_{m ∈ {p−1, p}} (ε / e_m)^{1/m} · exp(−0.7/(p−1)), where e_m is the largest
 //! coefficient of order m in units of the model's scale ([`Ode::scale`]). The last two orders
 //! are used because one of them may vanish by symmetry (from rest, θ's odd coefficients do).
-//! There is no rejected step: the step is chosen before it is taken. The order is Jorba-Zou's
-//! minimum of the recursion's work per unit time ([`order_for`]). The step is
+//! There is no rejected step: the step is chosen before it is taken. The order is the least
+//! work per unit time with the fixed cost of a step counted ([`order_for`]). The step is
 //! capped by the model's [`Ode::taylor_max_step`] (event safety; wider than other methods' in
 //! the wall phase).
 //!
@@ -53,16 +54,36 @@ use super::{all_finite, Ode, Stats, StepError, Stepper};
 /// Lowest order it accepts.
 pub const MIN_ORDER: usize = 2;
 
-/// The order for relative tolerance `tol` (Jorba-Zou): ⌈−ln(tol)/2⌉ + 1, the order that
-/// minimises the recursion's work p² per unit time when the step is ρ tol^{1/p}, within the
-/// stored range. Not higher, though with the fixed cost of a step counted the least work lies
-/// higher (about 22 at 1e-11, 15-20% faster on the benchmark's scenes): the coefficients grow
-/// as (1/ρ)^k, and in a problem run in units far from its own (T = 2⁻⁵⁰ s in seconds,
-/// `tests/unit_free_steps.rs`) order 21 overflows f64 where order 13 does not. A recursion in
-/// scaled time (coefficients x_k H^k) would lift that limit.
+/// The fixed cost of one step (step size, end values, the event's check, the stepper's moves)
+/// in units of one term of the recursion's convolutions: measured on the wall phase
+/// (`benches/integrators.rs`' scenes, orders 16 to 26 given by hand) a step costs about
+/// 150 ns + 0.4 p² ns, so C ≈ 350; 340 puts the order at 1e-11 on 22, the fastest of the
+/// measured orders whose separation meets the bench's 1e-12 (21 is 4 % faster but misses it).
+pub const STEP_COST: f64 = 340.0;
+
+/// The order for relative tolerance `tol`: the least work per unit time with the fixed cost of a
+/// step counted. Jorba-Zou's step is h(p) ∝ tol^{1/p} e^{−0.7/(p−1)} and a step costs
+/// p² + C ([`STEP_COST`]), so ln(work per unit time) = ln(p² + C) + L/p + 0.7/(p − 1) + const
+/// with L = −ln tol, convex in p; its slope 2p/(p² + C) − L/p² − 0.7/(p − 1)² turns positive at
+/// the least work. The order is the first p (from Jorba-Zou's ⌈L/2⌉, which is the least work
+/// when C = 0 and lies below it otherwise) whose slope at p + ½ is ≥ 0, within the stored range:
+/// 22 at 1e-11, 19 at 1e-8 (Jorba-Zou's rule, C = 0: 14 and 11). Higher orders are safe at
+/// any time unit because the coefficients are scaled by the step's unit
+/// ([`super::taylor_poly`]); the step cap of the model ([`Ode::taylor_max_step`]) is not in
+/// this model, so at loose tolerances, where the cap sets the step, the order is higher than it
+/// needs to be (harmless: the error only falls).
 pub fn order_for(tol: f64) -> usize {
-    let p = (-tol.ln() / 2.0).ceil() + 1.0;
-    (p.max(MIN_ORDER as f64) as usize).min(MAX_ORDER)
+    let l = -tol.ln();
+    let start = ((l / 2.0).floor().max(MIN_ORDER as f64) as usize).min(MAX_ORDER);
+    for p in start..MAX_ORDER {
+        let q = p as f64 + 0.5;
+        let (q2, d2) = (q * q, (q - 1.0) * (q - 1.0));
+        // Slope ≥ 0 with the positive denominators (q² + C) q² (q − 1)² cleared.
+        if 2.0 * q * q2 * d2 >= (q2 + STEP_COST) * (l * d2 + 0.7 * q2) {
+            return p;
+        }
+    }
+    MAX_ORDER
 }
 
 /// The Taylor-series integrator (adaptive step, order from the tolerance or given).
@@ -109,21 +130,23 @@ impl<const N: usize> Taylor<N> {
     }
 
     /// Jorba-Zou step for the current series: min over m ∈ {p−1, p} of (tol/e_m)^{1/m}, times
-    /// exp(−0.7/(p−1)); infinite when both orders vanish (e.g. at an equilibrium).
+    /// exp(−0.7/(p−1)), in the series' unit H (e_m is the scaled coefficient: the step in σ);
+    /// infinite when both orders vanish (e.g. at an equilibrium).
     fn step_size(&self, scale: &[f64; N]) -> f64 {
         let p = self.series.order;
         // The smaller of (tol/e_m)^{1/m} is the smaller of ln(tol/e_m)/m: one exp, no pow.
+        let inv_scale = scale.map(|s| 1.0 / s.max(f64::MIN_POSITIVE));
         let mut ln_h = f64::INFINITY;
         for m in [p - 1, p] {
             let mut e: f64 = 0.0;
             for i in 0..N {
-                e = e.max(self.series.y[i][m].abs() / scale[i].max(f64::MIN_POSITIVE));
+                e = e.max(self.series.y[i][m].abs() * inv_scale[i]);
             }
             if e > 0.0 {
                 ln_h = ln_h.min((self.tol / e).ln() / m as f64);
             }
         }
-        (ln_h - 0.7 / (p - 1) as f64).exp()
+        (ln_h - 0.7 / (p - 1) as f64).exp() * self.series.unit()
     }
 }
 
@@ -145,12 +168,14 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
             self.series.y[i][0] = self.y[i];
         }
         (self.series.sin[0], self.series.cos[0]) = self.trig;
+        // The coefficients' time unit: the model's longest step, the scale of its motion.
+        let h_max = sys.taylor_max_step(&self.y);
+        self.series.set_unit(h_max);
         if !sys.taylor_series(&mut self.series) {
             return Err(StepError::NoTaylorSeries { t });
         }
         // One pass of the recursion per order: counted as one evaluation each.
         self.stats.rhs_evals += p as u64;
-        let h_max = sys.taylor_max_step(&self.y);
         let h_jz = self.step_size(&sys.scale(&self.y));
         if h_jz.is_nan() {
             return Err(StepError::NotFinite { t });
@@ -186,13 +211,14 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
     }
 
     fn interpolate(&self, t: f64) -> [f64; N] {
-        let tau = t - self.t_prev;
+        let tau = (t - self.t_prev) * self.series.inv_unit();
         let p = self.series.order;
         std::array::from_fn(|i| horner(&self.series.y[i][..=p], tau))
     }
 
     fn interpolate_rate(&self, t: f64) -> Option<[f64; N]> {
-        let tau = t - self.t_prev;
+        let inv_unit = self.series.inv_unit();
+        let tau = (t - self.t_prev) * inv_unit;
         let p = self.series.order;
         Some(std::array::from_fn(|i| {
             let c = &self.series.y[i];
@@ -200,7 +226,7 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
             for k in (1..=p).rev() {
                 acc = acc * tau + k as f64 * c[k];
             }
-            acc
+            acc * inv_unit
         }))
     }
 

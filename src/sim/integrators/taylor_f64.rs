@@ -47,7 +47,8 @@ fn convolve(d: &[f64], cs: &[Pair]) -> Pair {
 
 /// The wall phase's series: θ̈ = Ω² sin θ (eq. (5)), or in the complement φ̈ = −Ω² cos φ, to
 /// order p = `angle.len() − 1`. On entry entry 0 of every slice holds the start (sin and cos of
-/// the angle in `sin[0]`, `cos[0]`); `inv[k]` = 1/k for k ≤ p + 1; `cs` (length > p) is
+/// the angle in `sin[0]`, `cos[0]`); `inv[k]` = 1/k for k ≤ p + 1 (or H/k: coefficients in the
+/// time unit H); `cs` (length > p) is
 /// scratch, left holding (cos, sin) of every order. Same conventions as
 /// [`super::taylor::wall_series`], which this module does not import (no cycle: the generic
 /// module calls this one).

@@ -2,7 +2,16 @@
 //! cos of the angle, filled by the models' recursions ([`super::taylor_series`] in f64, the
 //! wall phase by [`super::taylor_f64`]), and read as polynomials: end values, dense output and
 //! the separation factor on which events are refined ([`separation_factor_on`]).
-
+//!
+//! **Scaled time.** The coefficients are stored in a time unit H of the step ([`Series::unit`]):
+//! y(t0 + H σ) = Σ_k y_k σ^k, i.e. y_k = x_k H^k for the plain coefficients x_k. Plain, they
+//! grow as (1/ρ)^k with ρ the series' radius of convergence, which is proportional to the
+//! model's time unit: in a model run in seconds with T = 2⁻⁵⁰ s an order-22 coefficient
+//! overflows f64. With H near the model's time scale they stay of the order of (H/ρ)^k, whatever
+//! the units. Every recursion gives the scaled coefficients when run with H/k in place of 1/k
+//! (each order is one integration, d/dσ = H d/dt, and products of series scale alike), so the
+//! models' recursions read their "reciprocals" from [`Series::inv`]. H is a power of two, so the
+//! scaling and σ = τ/H are exact: the bits are those of the plain recursion scaled.
 use super::taylor_series::{floor_series_in, FloorScratch};
 
 /// Highest order the f64 stepper stores.
@@ -19,11 +28,18 @@ const INV: [f64; MAX_ORDER + 2] = {
     t
 };
 
-/// The f64 series of one step: state components, and sin/cos of the angle `y[0]`.
+/// The f64 series of one step: state components, and sin/cos of the angle `y[0]`, in the time
+/// unit [`Series::unit`] (see the module docs).
 #[derive(Clone, Debug)]
 pub struct Series<const N: usize> {
     /// The order p (coefficients 0..=p are valid).
     pub order: usize,
+    /// The time unit H of the coefficients (a power of two): y_i(t0 + H σ) = Σ_k y[i][k] σ^k.
+    unit: f64,
+    /// 1/H (exact: H is a power of two).
+    inv_unit: f64,
+    /// H/k for k = 0..=MAX_ORDER+1 (entry 0 is 0): the recursions' "reciprocals".
+    unit_over_k: [f64; MAX_ORDER + 2],
     /// `y[i][k]`: coefficient k of component i.
     pub y: [[f64; MAX_ORDER + 1]; N],
     /// Coefficients of sin y[0].
@@ -39,6 +55,9 @@ impl<const N: usize> Series<N> {
     pub fn new(order: usize) -> Self {
         Series {
             order,
+            unit: 1.0,
+            inv_unit: 1.0,
+            unit_over_k: INV,
             y: [[0.0; MAX_ORDER + 1]; N],
             sin: [0.0; MAX_ORDER + 1],
             cos: [0.0; MAX_ORDER + 1],
@@ -46,56 +65,125 @@ impl<const N: usize> Series<N> {
         }
     }
 
-    /// The state and (sin, cos) of y[0] at τ = h: Horner's rule on every series in one loop
-    /// (the N + 2 chains run side by side; each gives the value of its own [`horner`]).
-    pub(super) fn end_values(&self, h: f64) -> ([f64; N], (f64, f64)) {
-        let p = self.order;
-        let (mut y, mut s, mut c) = ([0.0; N], 0.0, 0.0);
-        for k in (0..=p).rev() {
-            for i in 0..N {
-                y[i] = y[i] * h + self.y[i][k];
-            }
-            s = s * h + self.sin[k];
-            c = c * h + self.cos[k];
-        }
-        (y, (s, c))
+    /// The time unit H of the coefficients.
+    pub fn unit(&self) -> f64 {
+        self.unit
     }
 
-    /// 1/k for k = 0..=p+1 in f64 (for models' [`Ode::taylor_series`]).
-    pub fn inv(&self) -> &'static [f64] {
-        &INV[..self.order + 2]
+    /// 1/H: σ = τ/H = τ · `inv_unit()` exactly.
+    pub fn inv_unit(&self) -> f64 {
+        self.inv_unit
+    }
+
+    /// Take the time unit `unit` for the next recursion: the power of two at or below it (1 if
+    /// it is not a positive finite number).
+    pub fn set_unit(&mut self, unit: f64) {
+        let h = power_of_two_below(unit);
+        if h != self.unit {
+            self.unit = h;
+            self.inv_unit = 1.0 / h;
+            for (u, inv) in self.unit_over_k.iter_mut().zip(&INV) {
+                *u = h * inv;
+            }
+        }
+    }
+
+    /// The state and (sin, cos) of y[0] at τ = h: [`horner`]'s even/odd rule on every series in
+    /// one loop (the 2(N + 2) chains run side by side; each series gets the value of its own
+    /// [`horner`]).
+    pub(super) fn end_values(&self, h: f64) -> ([f64; N], (f64, f64)) {
+        let p = self.order;
+        let x = h * self.inv_unit;
+        let x2 = x * x;
+        // With p even the top coefficient starts the even chain and the odd chain starts at 0.
+        let top = |c: &[f64; MAX_ORDER + 1]| if p % 2 == 0 { c[p] } else { 0.0 };
+        let (mut ye, mut yo) = (self.y.each_ref().map(top), [0.0; N]);
+        let (mut se, mut so, mut ce, mut co) = (top(&self.sin), 0.0, top(&self.cos), 0.0);
+        // Then the pairs (c_2i, c_2i+1) below it, from the top.
+        for i in (0..p.div_ceil(2)).rev() {
+            let (k0, k1) = (2 * i, 2 * i + 1);
+            for j in 0..N {
+                ye[j] = ye[j] * x2 + self.y[j][k0];
+                yo[j] = yo[j] * x2 + self.y[j][k1];
+            }
+            se = se * x2 + self.sin[k0];
+            so = so * x2 + self.sin[k1];
+            ce = ce * x2 + self.cos[k0];
+            co = co * x2 + self.cos[k1];
+        }
+        let y = std::array::from_fn(|j| ye[j] + x * yo[j]);
+        (y, (se + x * so, ce + x * co))
+    }
+
+    /// H/k for k = 0..=p+1 in f64: what the recursions take for 1/k to give the coefficients in
+    /// the unit H (for models' `Ode::taylor_series`).
+    pub fn inv(&self) -> &[f64] {
+        &self.unit_over_k[..self.order + 2]
     }
 }
 
-/// Σ c_k τ^k by Horner's rule.
+/// The largest power of two ≤ `x` for a positive normal `x` (its exponent bits alone); 1 for
+/// anything else (0, subnormal, infinite, NaN).
+fn power_of_two_below(x: f64) -> f64 {
+    if x.is_normal() && x > 0.0 {
+        f64::from_bits(x.to_bits() & 0xfff0_0000_0000_0000)
+    } else {
+        1.0
+    }
+}
+
+/// Σ c_k τ^k by Horner's rule split by parity: E(τ²) + τ O(τ²), E and O the even and odd
+/// coefficients. The two chains are independent and half as long, so the latency (the cost:
+/// an order-22 chain is ~23 dependent multiply-adds) halves for the same arithmetic.
 #[inline(always)]
 pub fn horner(c: &[f64], tau: f64) -> f64 {
-    let mut acc = 0.0;
-    for &ck in c.iter().rev() {
-        acc = acc * tau + ck;
+    let x2 = tau * tau;
+    let (pairs, top) = c.split_at(c.len() & !1);
+    let (mut e, mut o) = (top.first().copied().unwrap_or(0.0), 0.0);
+    for pair in pairs.chunks_exact(2).rev() {
+        e = e * x2 + pair[0];
+        o = o * x2 + pair[1];
     }
-    acc
+    e + tau * o
 }
 
 /// The separation factor Ω² t(τ) − r(τ)² and its τ-derivative on a step's polynomials, each
-/// to order `p`: `trig` that of cos θ (in the complement, of sin φ), `rate` that of θ̇ (φ̇).
-/// Its root is the separation event of the Taylor method. The four Horner chains (t, t', r,
-/// r') are independent, so one loop costs about the latency of one.
+/// to order `p` in the unit H (`inv_unit` = 1/H): `trig` that of cos θ (in the complement, of
+/// sin φ), `rate` that of θ̇ (φ̇). Its root is the separation event of the Taylor method. The
+/// four Horner chains (t, t', r, r') are independent, so one loop costs about the latency of one.
 pub fn separation_factor_on(
     big_omega2: f64,
     trig: &[f64],
     rate: &[f64],
     p: usize,
+    inv_unit: f64,
     tau: f64,
 ) -> (f64, f64) {
-    let (mut t, mut dt, mut r, mut dr) = (0.0, 0.0, 0.0, 0.0);
-    for (ct, cr) in trig[..=p].iter().zip(&rate[..=p]).rev() {
-        dt = dt * tau + t;
-        t = t * tau + ct;
-        dr = dr * tau + r;
-        r = r * tau + cr;
+    let x = tau * inv_unit;
+    let (t, dt) = value_and_slope(&trig[..=p], x);
+    let (r, dr) = value_and_slope(&rate[..=p], x);
+    (
+        big_omega2 * t - r * r,
+        (big_omega2 * dt - 2.0 * r * dr) * inv_unit,
+    )
+}
+
+/// c(x) and c'(x) by the even/odd rule of [`horner`]: with c(x) = E(s) + x O(s), s = x²,
+/// c'(x) = O(s) + 2x (E'(s) + x O'(s)); E, E', O, O' are four independent Horner chains (each
+/// with its derivative by the usual recurrence), half as long as one on c.
+#[inline(always)]
+fn value_and_slope(c: &[f64], x: f64) -> (f64, f64) {
+    let s = x * x;
+    let (pairs, top) = c.split_at(c.len() & !1);
+    let (mut e, mut de) = (top.first().copied().unwrap_or(0.0), 0.0);
+    let (mut o, mut dox) = (0.0, 0.0);
+    for pair in pairs.chunks_exact(2).rev() {
+        de = de * s + e;
+        e = e * s + pair[0];
+        dox = dox * s + o;
+        o = o * s + pair[1];
     }
-    (big_omega2 * t - r * r, big_omega2 * dt - 2.0 * r * dr)
+    (e + x * o, o + 2.0 * x * (de + x * dox))
 }
 
 /// The wall phase's series in f64, for `WallPhase::taylor_series`: [`super::taylor_series::wall_series`]'s sums in
@@ -110,7 +198,7 @@ fn fast_wall_series(complement: bool, big_omega2: f64, s: &mut Series<2>) {
     super::taylor_f64::wall_series(
         complement,
         big_omega2,
-        &INV[..p + 2],
+        &s.unit_over_k[..p + 2],
         &mut angle[..=p],
         &mut rate[..=p],
         &mut s.sin[..=p],
@@ -137,7 +225,7 @@ pub fn complement_floor_series_f64(g_over_l: f64, s: &mut Series<4>) {
 
 fn floor_series_f64_in(complement: bool, g_over_l: f64, s: &mut Series<4>) {
     let p = s.order;
-    let inv = &INV[..p + 2];
+    let inv = &s.unit_over_k[..p + 2];
     let mut scratch = [[0.0; MAX_ORDER + 1]; 4];
     let [a, b, c, d] = &mut scratch;
     let [theta, x, rate, xdot] = &mut s.y;

@@ -58,7 +58,8 @@ pub fn sin_cos_coefficient<S: Scalar>(inv_k: &S, d: &[S], sin: &[S], cos: &[S]) 
 /// Taylor coefficients of the wall phase, eq. (5) θ̈ = Ω² sin θ, to order p = `theta.len() − 1`.
 ///
 /// On entry `theta[0]`, `rate[0]`, `sin[0] = sin θ0`, `cos[0] = cos θ0` hold the start; on return
-/// every slice holds its series to order p. `inv[k] = 1/k` for k ≤ p.
+/// every slice holds its series to order p. `inv[k]` = 1/k for k ≤ p + 1 gives the plain
+/// coefficients; H/k gives them in the time unit H (x_k H^k, see [`super::taylor_poly`]).
 pub fn wall_series<S: Scalar>(
     big_omega2: &S,
     inv: &[S],
@@ -67,18 +68,9 @@ pub fn wall_series<S: Scalar>(
     sin: &mut [S],
     cos: &mut [S],
 ) {
-    let p = theta.len() - 1;
-    for k in 0..=p {
-        if k > 0 {
-            let (s, c) = sin_cos_coefficient(&inv[k], &rate[..k], &sin[..k], &cos[..k]);
-            sin[k] = s;
-            cos[k] = c;
-        }
-        if k < p {
-            theta[k + 1] = rate[k].clone() * inv[k + 1].clone();
-            rate[k + 1] = sin[k].clone() * (big_omega2.clone() * inv[k + 1].clone());
-        }
-    }
+    angle_series(inv, theta, rate, sin, cos, |k, sin, _| {
+        sin[k].clone() * (big_omega2.clone() * inv[k + 1].clone())
+    });
 }
 
 /// Taylor coefficients of the wall phase in the complement φ = π/2 − θ, φ̈ = −Ω² cos φ (eq. (5)
@@ -92,7 +84,23 @@ pub fn complement_series<S: Scalar>(
     sin: &mut [S],
     cos: &mut [S],
 ) {
-    let p = phi.len() - 1;
+    angle_series(inv, phi, rate, sin, cos, |k, _, cos| {
+        -(cos[k].clone() * (big_omega2.clone() * inv[k + 1].clone()))
+    });
+}
+
+/// The recursion of an angle whose acceleration's coefficient k is `accel_over(k, sin, cos)`
+/// divided by k + 1 (so read off sin and cos of orders ≤ k): sin and cos of order k, then the
+/// angle and its rate of order k + 1.
+fn angle_series<S: Scalar>(
+    inv: &[S],
+    angle: &mut [S],
+    rate: &mut [S],
+    sin: &mut [S],
+    cos: &mut [S],
+    accel_over: impl Fn(usize, &[S], &[S]) -> S,
+) {
+    let p = angle.len() - 1;
     for k in 0..=p {
         if k > 0 {
             let (s, c) = sin_cos_coefficient(&inv[k], &rate[..k], &sin[..k], &cos[..k]);
@@ -100,8 +108,8 @@ pub fn complement_series<S: Scalar>(
             cos[k] = c;
         }
         if k < p {
-            phi[k + 1] = rate[k].clone() * inv[k + 1].clone();
-            rate[k + 1] = -(cos[k].clone() * (big_omega2.clone() * inv[k + 1].clone()));
+            angle[k + 1] = rate[k].clone() * inv[k + 1].clone();
+            rate[k + 1] = accel_over(k, sin, cos);
         }
     }
 }
@@ -120,7 +128,8 @@ pub struct FloorScratch<'a, S> {
 }
 
 /// Taylor coefficients of the floor phase ([`crate::sim::floor`]):
-/// θ̈ = sin θ (g/l − cos θ θ̇²) / (sin² θ + 1/3), Ẍ = 0, to order p = `theta.len() − 1`.
+/// θ̈ = sin θ (g/l − cos θ θ̇²) / (sin² θ + 1/3), Ẍ = 0, to order p = `theta.len() − 1`
+/// (`inv` as for [`wall_series`]: 1/k, or H/k in the time unit H).
 ///
 /// State series `y = [θ, X, θ̇, Ẋ]` and `sin`, `cos` hold their start values in entry 0; the
 /// quotient is the series division a_k = (n_k − Σ_{j≥1} q_j a_{k−j}) / q_0 with q = sin² θ + 1/3.
