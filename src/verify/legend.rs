@@ -4,6 +4,7 @@
 
 use super::EquationResult;
 use crate::registry::check::{Config, TOLERANCE_FACTOR};
+use crate::registry::prove::PARTICLE_COUNTS;
 
 /// One entry per column of [`super::table`] (the test in `tests/verify_table.rs` holds every
 /// column header to an entry here), and what a row's status means.
@@ -30,7 +31,7 @@ pub fn legend(cfg: &Config) -> String {
         format!("  exact       '0 at n pts' = residual exactly zero at n exact points ({} per check): the first", cfg.exact_points),
         "              in rationals, the rest modulo the prime 2⁶¹ − 1; '≠0 at k of n' = nonzero at k of them".into(),
         "  proof       proved = every check, and every printed form against its chain, reduces to zero symbolically,".into(),
-        "              for all values of the variables".into(),
+        format!("              for all values of the variables (identities about particles: for {})", proved_particle_counts()),
         "              (an erratum: its correction, and its printed form is shown to differ); sampled = no proof applies".into(),
         "  units       consistent = every form has one dimension and the sides agree (inconsistent: why, below)".into(),
         "  print       k/n = k of the n forms of the printed display parsed and checked against each other".into(),
@@ -40,6 +41,17 @@ pub fn legend(cfg: &Config) -> String {
     ]
     .join("\n")
         + "\n"
+}
+
+/// The numbers of particles an identity about a system of particles is proved for, in words
+/// ("1, 2, 3 and 4 particles"), from [`PARTICLE_COUNTS`] itself so the legend cannot drift.
+pub fn proved_particle_counts() -> String {
+    let n: Vec<String> = PARTICLE_COUNTS.map(|n| n.to_string()).collect();
+    match n.split_last() {
+        Some((last, [])) => format!("{last} particle{}", if last == "1" { "" } else { "s" }),
+        Some((last, rest)) => format!("{} and {last} particles", rest.join(", ")),
+        None => "no particles".into(),
+    }
 }
 
 /// The columns of [`super::table::COLUMNS`] that `legend` text does not explain: a column is
