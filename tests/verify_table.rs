@@ -5,9 +5,13 @@
 
 use sliding_ladder::registry::check::{run_check, Config, TOLERANCE_FACTOR};
 use sliding_ladder::registry::{equations, Equation};
+use sliding_ladder::verify::fill::{fill, fill_line, widest, DEFAULT_WIDTH};
 use sliding_ladder::verify::legend::{legend, unexplained_columns};
 use sliding_ladder::verify::summary::schwartz_zippel_sentence;
-use sliding_ladder::verify::table::{render, residual, width, wrap, COLUMNS, TITLE_WIDTH};
+use sliding_ladder::verify::table::{
+    render, render_for, residual, width, wrap, COLUMNS, FULL_WIDTH, NARROW_COLUMNS, NARROW_WIDTH,
+    TITLE_WIDTH,
+};
 use sliding_ladder::verify::{judge, verify_extensions, EquationResult, OffMotion, Status};
 
 fn tiny() -> Config {
@@ -94,15 +98,88 @@ fn every_row_lines_up_with_the_header_in_terminal_columns() {
     let table = render(&unchecked(), false);
     let header = table.lines().next().unwrap();
     let full: usize = COLUMNS.iter().map(|c| c.1).sum::<usize>() + COLUMNS.len() - 1;
-    assert_eq!(width(header), full);
+    assert_eq!((width(header), FULL_WIDTH), (full, full));
     for l in row_lines(&table) {
         assert_eq!(width(l), full, "misaligned: {l}");
     }
     // θ̈ takes one column though it is two chars: counting chars would misalign 'any θ̈' rows.
     assert_eq!(width("any θ̈"), 5);
     assert_eq!("any θ̈".chars().count(), 6);
-    // A table wider than a teacher's terminal fails here.
-    assert!(full <= 150, "the table is {full} columns wide");
+}
+
+/// A teacher's terminal is about 100 columns: there each display takes two lines, its full title
+/// and then its cells, aligned under the header's second line; no line is wider than 100.
+#[test]
+fn at_100_columns_each_display_is_its_title_then_its_cells_and_nothing_is_wider() {
+    let rows = unchecked();
+    let table = render_for(&rows, true, DEFAULT_WIDTH);
+    assert!(widest(&table) <= DEFAULT_WIDTH, "{table}");
+    let lines: Vec<&str> = table.lines().collect();
+    let cells_header = lines[1];
+    assert!(
+        cells_header.trim_start().starts_with("kind"),
+        "{cells_header}"
+    );
+    assert_eq!(width(cells_header), NARROW_WIDTH);
+    const { assert!(NARROW_WIDTH <= DEFAULT_WIDTH) };
+    for r in &rows {
+        let at = lines
+            .iter()
+            .position(|l| l.starts_with(&format!("{:>5} ", r.label)))
+            .unwrap_or_else(|| panic!("no title line for {}", r.label));
+        // The whole title, on the title line and those under it before the cells.
+        let cells = (at + 1..lines.len())
+            .find(|&k| lines[k].trim_start().starts_with(r.kind.name()))
+            .unwrap_or_else(|| panic!("no cells for {}", r.label));
+        let title: Vec<&str> = lines[at..cells].iter().map(|l| l[12..].trim()).collect();
+        assert_eq!(title.join(" "), r.title, "{}", r.label);
+        assert_eq!(
+            width(lines[cells]),
+            NARROW_WIDTH,
+            "misaligned: {}",
+            lines[cells]
+        );
+    }
+    for (h, _, _) in NARROW_COLUMNS {
+        assert!(cells_header.contains(h), "{h}");
+    }
+    // The one-line layout would not fit: this check fails on it.
+    assert!(widest(&render(&rows, true)) > DEFAULT_WIDTH);
+}
+
+/// The filled lines of the legend, the law lines and the errata keep a label column, break
+/// before an operator (never after it), keep `sin θ` whole, and lose no word.
+#[test]
+fn filling_keeps_labels_formulas_and_every_word() {
+    let line = "  residual    worst float difference of the display's forms, |a − b| / (u·(e_a + e_b)), a check passes when it is ≤ 4 and sin θ stays whole";
+    let filled = fill_line(line, 60);
+    let lines: Vec<&str> = filled.lines().collect();
+    assert!(
+        lines.len() > 1 && lines.iter().all(|l| width(l) <= 60),
+        "{filled}"
+    );
+    assert!(lines[0].starts_with("  residual    worst"), "{filled}");
+    assert!(lines[1..]
+        .iter()
+        .all(|l| l.starts_with(&" ".repeat(14)) && !l[14..].starts_with(' ')));
+    let words = |s: &str| s.split_whitespace().map(str::to_string).collect::<Vec<_>>();
+    assert_eq!(words(&filled), words(line));
+    for l in &lines {
+        let last = l.split_whitespace().last().unwrap();
+        assert!(
+            !["−", "+", "=", "≤", "/", "sin"].contains(&last),
+            "ends in '{last}': {filled}"
+        );
+    }
+    // Every width: no word lost; from the label's 14 columns plus the longest unbreakable piece
+    // ("difference", 10) on, no line too wide.
+    for w in 10..=120 {
+        let f = fill(line, w);
+        assert_eq!(words(&f), words(line), "width {w}");
+        assert!(w < 24 || widest(&f) <= w, "width {w}: {f}");
+    }
+    // A line that fits is left as it is, spacing and all.
+    assert_eq!(fill_line("  a   b", 100), "  a   b");
 }
 
 #[test]
@@ -234,6 +311,28 @@ fn verify_only_runs_the_chosen_displays_and_exits_0_when_they_pass() {
         text.contains("2 equations: 1 verified, 0 erratum, 1 definition, 0 failed"),
         "{text}"
     );
+    // Not a terminal and no --width: laid out for 100 columns, every line of it.
+    assert!(widest(&text) <= DEFAULT_WIDTH, "{text}");
+    // --width 146 gives the one-line layout, wider than 100 (the check above can fail).
+    let wide = std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args([
+            "verify",
+            "--only",
+            "25",
+            "--cases",
+            "5",
+            "--exact-points",
+            "1",
+        ])
+        .args(["--width", &FULL_WIDTH.to_string()])
+        .output()
+        .expect("runs");
+    let wide = String::from_utf8_lossy(&wide.stdout);
+    assert!(widest(&wide) > DEFAULT_WIDTH, "{wide}");
+    assert_eq!(
+        row_lines(wide.split(" equations: ").next().unwrap()).len(),
+        1
+    );
     // An unknown item is bad input: exit 2, one line on stderr.
     let bad = std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
         .args(["verify", "--only", "25,999"])
@@ -241,4 +340,23 @@ fn verify_only_runs_the_chosen_displays_and_exits_0_when_they_pass() {
         .expect("runs");
     assert_eq!(bad.status.code(), Some(2));
     assert_eq!(String::from_utf8_lossy(&bad.stderr).lines().count(), 1);
+}
+
+/// `ladder errata` fits a 100-column terminal: its reasons, points and residuals are filled to
+/// it (unfilled, they run to over 200 columns).
+#[test]
+fn ladder_errata_fits_100_columns() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .arg("errata")
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(widest(&text) <= DEFAULT_WIDTH, "{text}");
+    let list = sliding_ladder::verify::errata::errata(&Config::default());
+    let raw = sliding_ladder::cli::errata::misprint_text(&list);
+    assert!(widest(&raw) > DEFAULT_WIDTH);
+    // Filling lost no word of it.
+    let words = |s: &str| s.split_whitespace().map(str::to_string).collect::<Vec<_>>();
+    assert_eq!(words(&fill(&raw, DEFAULT_WIDTH)), words(&raw));
 }

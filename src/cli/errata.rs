@@ -4,6 +4,7 @@
 use crate::print::unicode::unicode;
 use crate::registry::check::Config;
 use crate::verify::errata::{errata, ErratumReport};
+use crate::verify::fill::fill;
 use clap::Args;
 use serde_json::json;
 use std::process::ExitCode;
@@ -14,15 +15,25 @@ pub struct ErrataArgs {
     /// Print JSON.
     #[arg(long)]
     json: bool,
+    /// Lay the text out for this many columns (default: the terminal's width, or 100 when the
+    /// output is not a terminal).
+    #[arg(long, value_parser = clap::value_parser!(u16).range(60..))]
+    width: Option<u16>,
 }
 
 /// Run `ladder errata` with its options.
 pub fn run(a: ErrataArgs) -> ExitCode {
-    errata_command(a.json, &Config::default())
+    errata_command(a.json, &Config::default(), super::verify::columns(a.width))
 }
 
-/// Run `ladder errata`.
-pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
+/// Run `ladder errata`, its text filled to `columns`.
+pub fn errata_command(json_out: bool, cfg: &Config, columns: usize) -> ExitCode {
+    // Every line of the text, filled to the terminal's width as it is printed.
+    macro_rules! say {
+        ($($arg:tt)*) => {
+            println!("{}", fill(&format!($($arg)*), columns))
+        };
+    }
     let list = errata(cfg);
     let prose = crate::verify::claims::claims();
     let all_good = prose
@@ -38,8 +49,8 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
             serde_json::to_string_pretty(&out).expect("JSON of plain data")
         );
     } else {
-        print!("{}", misprint_text(&list));
-        println!("\nclaims made in the prose, checked exactly at three random states:");
+        print!("{}", fill(&misprint_text(&list), columns));
+        say!("\nclaims made in the prose, checked exactly at three random states:");
         for c in &prose {
             let verdict = match (c.holds, c.printed_fails) {
                 (true, None) if c.erratum.is_some() => {
@@ -51,7 +62,7 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
                 }
                 _ => "FAILED",
             };
-            println!("  {:<16} {}: {verdict}", c.location, c.claim);
+            say!("  {:<16} {}: {verdict}", c.location, c.claim);
             if let Some((printed, corrected)) = c.erratum {
                 // LaTeX in --json; here, as the terminal reads it (a wording erratum is words,
                 // which the LaTeX reader would run together).
@@ -62,7 +73,7 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
                         t.to_string()
                     }
                 };
-                println!(
+                say!(
                     "  {:<16}   printed: {}   corrected: {}",
                     "",
                     read(printed),
@@ -70,7 +81,7 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
                 );
             }
             if let Some(d) = &c.difference_latex {
-                println!(
+                say!(
                     "  {:<16}   printed − corrected = {}   (for any state; the correction is proved symbolically)",
                     "",
                     crate::print::unicode::unicode(d)
@@ -79,7 +90,7 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
         }
     }
     if !json_out {
-        println!("\nquantities stated in the prose, in dimensions (m: M, l: L, g: L T⁻², θ̇: T⁻¹):");
+        say!("\nquantities stated in the prose, in dimensions (m: M, l: L, g: L T⁻², θ̇: T⁻¹):");
         for p in crate::verify::units::prose_units() {
             let detail = p
                 .units_detail
@@ -89,7 +100,7 @@ pub fn errata_command(json_out: bool, cfg: &Config) -> ExitCode {
                 .corrected
                 .map(|c| format!("; corrected {}", c.name()))
                 .unwrap_or_default();
-            println!(
+            say!(
                 "  {:<20} {}: {}{detail}{fix}",
                 p.location,
                 p.stated,

@@ -60,7 +60,13 @@ pub fn run() -> ExitCode {
     };
     match cli.command {
         None => {
-            let verified = verify::verify(false, &Config::default(), None, false);
+            let verified = verify::verify(
+                false,
+                &Config::default(),
+                None,
+                false,
+                verify::columns(None),
+            );
             println!();
             let simulated = simulate::simulate_builtin_classic();
             if verified == ExitCode::SUCCESS {

@@ -1,10 +1,11 @@
 //! `ladder verify`: every equation checked, printed as a table or JSON, and the exit code.
 
 use crate::registry::check::Config;
+use crate::verify::fill::{fill, DEFAULT_WIDTH};
 use crate::verify::summary::{
     print_proof_counts, proof_counts, schwartz_zippel_sentence, summary_line,
 };
-use crate::verify::table::render;
+use crate::verify::table::render_for;
 use crate::verify::{counts, print_coverage, verify_all, EquationResult};
 use clap::Args;
 use serde_json::json;
@@ -32,6 +33,23 @@ pub struct VerifyArgs {
     /// Under every row, the checks run and the law of motion the display uses.
     #[arg(long)]
     wide: bool,
+    /// Lay the text out for this many columns (default: the terminal's width, or 100 when the
+    /// output is not a terminal); from 146 columns on, one line per display.
+    #[arg(long, value_parser = clap::value_parser!(u16).range(60..))]
+    width: Option<u16>,
+}
+
+/// The columns to lay text out for: `--width`, else the terminal's width, else
+/// [`DEFAULT_WIDTH`] (a pipe, a file).
+pub fn columns(width: Option<u16>) -> usize {
+    width
+        .map(usize::from)
+        .or_else(|| {
+            console::Term::stdout()
+                .size_checked()
+                .map(|(_, c)| usize::from(c))
+        })
+        .unwrap_or(DEFAULT_WIDTH)
 }
 
 /// Run `ladder verify` with its options.
@@ -45,12 +63,19 @@ pub fn run(a: VerifyArgs) -> ExitCode {
         },
         a.only.as_deref(),
         a.wide,
+        columns(a.width),
     )
 }
 
 /// Run `ladder verify`; exit 0 when every equation is verified, a definition or a recorded
 /// erratum, 1 otherwise.
-pub fn verify(json_out: bool, cfg: &Config, only: Option<&str>, wide: bool) -> ExitCode {
+pub fn verify(
+    json_out: bool,
+    cfg: &Config,
+    only: Option<&str>,
+    wide: bool,
+    columns: usize,
+) -> ExitCode {
     let t = Instant::now();
     let results = match only {
         None => verify_all(cfg),
@@ -84,6 +109,9 @@ pub fn verify(json_out: bool, cfg: &Config, only: Option<&str>, wide: bool) -> E
             "equations": results,
             "summary": {"verified": v, "erratum": e, "definition": d, "failed": f,
                          "proved": proved, "sampled_only": sampled_only, "proof_seconds": proof_seconds,
+                         "proof_particle_counts": crate::registry::prove::PARTICLE_COUNTS.collect::<Vec<_>>(),
+                         "sz_bound_log10": worst_sz_log10(&results, |r| r.sz_bound_log10),
+                         "sz_bound_rational_log10": worst_sz_log10(&results, |r| r.sz_bound_rational_log10),
                          "float_cases_per_check": cfg.float_cases, "exact_points_per_check": cfg.exact_points,
                          "seed": cfg.seed, "seconds": seconds,
                          "print": print_summary(&results)},
@@ -96,44 +124,60 @@ pub fn verify(json_out: bool, cfg: &Config, only: Option<&str>, wide: bool) -> E
             serde_json::to_string_pretty(&out).expect("JSON of plain data")
         );
     } else {
-        print!("{}", render(&results, wide));
-        println!("{}", summary_line(&results, cfg, seconds));
-        println!("  {}", schwartz_zippel_sentence(&results));
+        let mut text = render_for(&results, wide, columns);
+        let line = |text: &mut String, s: String| {
+            text.push_str(&fill(&s, columns));
+            text.push('\n');
+        };
+        line(&mut text, summary_line(&results, cfg, seconds));
+        line(
+            &mut text,
+            format!("  {}", schwartz_zippel_sentence(&results)),
+        );
         let (pd, nd, pf, nf, pm) = print_coverage(&results);
         let (pp, ppf) = print_proof_counts(&results);
-        println!(
+        line(&mut text, format!(
             "print: {pd} of {nd} displays parsed in full, {pf} of {nf} printed forms parsed and checked, {pm} displays with every Rust form matching the print (equations/symbols.toml); {pp} of {nd} displays proved symbolically as printed ({ppf} forms)"
-        );
-        print!("{}", crate::verify::legend::legend(cfg));
-        print!("{}", crate::verify::legend::law_lines(&results));
-        println!("beyond the note: the floor phase after the ladder leaves the wall (equations/phase2.md)");
-        print!(
-            "{}",
-            render(&extensions, wide)
+        ));
+        text.push_str(&fill(&crate::verify::legend::legend(cfg), columns));
+        text.push_str(&fill(&crate::verify::legend::law_lines(&results), columns));
+        line(&mut text, "beyond the note: the floor phase after the ladder leaves the wall (equations/phase2.md)".into());
+        text.extend(
+            render_for(&extensions, wide, columns)
                 .lines()
-                .skip(1)
-                .map(|l| format!("{l}\n"))
-                .collect::<String>()
+                .skip(if columns >= crate::verify::table::FULL_WIDTH {
+                    1
+                } else {
+                    2
+                })
+                .map(|l| format!("{l}\n")),
         );
         let failed_methods: Vec<_> = methods.iter().filter(|m| !m.passed).collect();
-        println!(
+        line(&mut text, format!(
             "methods: {} derivations of the equation of motion checked (θ̈ solved from each equals (5); each residual vanishes on the motion only), {} failed",
             methods.len(),
             failed_methods.len()
-        );
+        ));
         for m in failed_methods {
-            println!("  ! {}: {}", m.name, m.problems.join("; "));
+            line(
+                &mut text,
+                format!("  ! {}: {}", m.name, m.problems.join("; ")),
+            );
         }
-        println!(
-            "docs: {} equations found in equations/*.md, {} example rows run, {} problems",
-            docs.equations_found,
-            docs.examples_run,
-            docs.problems.len()
+        line(
+            &mut text,
+            format!(
+                "docs: {} equations found in equations/*.md, {} example rows run, {} problems",
+                docs.equations_found,
+                docs.examples_run,
+                docs.problems.len()
+            ),
         );
         for p in &docs.problems {
-            println!("  ! {p}");
+            line(&mut text, format!("  ! {p}"));
         }
-        println!("details of one display: ladder show N (e.g. ladder show 25 --at \"m=2, l=1.5, theta=40deg\")");
+        line(&mut text, "details of one display: ladder show N (e.g. ladder show 25 --at \"m=2, l=1.5, theta=40deg\")".into());
+        print!("{text}");
     }
     let complete = only.is_some() || results.len() == 90;
     if f == 0 && docs.problems.is_empty() && complete && methods.iter().all(|m| m.passed) {
@@ -141,6 +185,16 @@ pub fn verify(json_out: bool, cfg: &Config, only: Option<&str>, wide: bool) -> E
     } else {
         ExitCode::from(1)
     }
+}
+
+/// The largest Schwartz-Zippel bound of the run as a power of ten (rounded up, as the summary
+/// line prints it), which does not underflow where the bound itself would.
+fn worst_sz_log10(results: &[EquationResult], f: fn(&EquationResult) -> f64) -> f64 {
+    results
+        .iter()
+        .map(f)
+        .fold(f64::NEG_INFINITY, f64::max)
+        .ceil()
 }
 
 fn print_summary(results: &[EquationResult]) -> serde_json::Value {

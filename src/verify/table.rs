@@ -1,10 +1,12 @@
 //! The `ladder verify` table as a teacher reads it: one row per display, grouped by the book file
-//! that explains it, with the full title (wrapped in its column, never cut), the worst float
-//! residual beside its pass threshold, what the display does off the motion, what the exact
-//! points found, the proof, units, print and the line of the display's section. A definition
-//! says on a second line what it was checked against; `--wide` says so for every row, with the
-//! law of motion where the display uses one. [`super::legend::legend`] explains every column;
-//! the test below holds the two in step.
+//! that explains it, with the full title (wrapped, never cut), the worst float residual beside
+//! its pass threshold, what the display does off the motion, what the exact points found, the
+//! proof, units, print and the line of the display's section. A definition says under its row
+//! what it was checked against; `--wide` says so for every row, with the law of motion where
+//! the display uses one. In a terminal narrower than the one-line layout ([`FULL_WIDTH`]
+//! columns; 100 is common) each display takes two lines, its title and then its cells
+//! ([`render_for`]), so nothing wraps mid-cell. [`super::legend::legend`] explains every
+//! column; `tests/verify_table.rs` holds the two in step.
 
 use super::{EquationResult, OffMotion, Status};
 use crate::registry::check::TOLERANCE_FACTOR;
@@ -30,15 +32,75 @@ pub const COLUMNS: [(&str, usize, bool); 12] = [
     ("line", 5, true),
 ];
 
+/// The cells of the second line of a row in the layout for a narrower terminal (the title
+/// takes the first line): (header, width, right-aligned), after [`NARROW_INDENT`].
+pub const NARROW_COLUMNS: [(&str, usize, bool); 9] = [
+    ("kind", 10, false),
+    ("status", 10, false),
+    ("residual", 10, true),
+    ("off motion", 12, false),
+    ("exact", 12, false),
+    ("proof", 7, false),
+    ("units", 12, false),
+    ("print", 5, true),
+    ("line", 4, true),
+];
+
+/// The indent of a row's cells (and of the lines under it) in the narrow layout.
+pub const NARROW_INDENT: usize = 6;
+
+/// Columns the one-line layout takes: every column and a space between each two.
+pub const FULL_WIDTH: usize = {
+    let mut w = COLUMNS.len() - 1;
+    let mut k = 0;
+    while k < COLUMNS.len() {
+        w += COLUMNS[k].1;
+        k += 1;
+    }
+    w
+};
+
+/// Columns the narrow layout's cells take (its titles wrap to the terminal's width).
+pub const NARROW_WIDTH: usize = {
+    let mut w = NARROW_INDENT + NARROW_COLUMNS.len() - 1;
+    let mut k = 0;
+    while k < NARROW_COLUMNS.len() {
+        w += NARROW_COLUMNS[k].1;
+        k += 1;
+    }
+    w
+};
+
 /// The table with one line per display (more where a title wraps or a definition says what
 /// was checked).
 pub fn table(results: &[EquationResult]) -> String {
     render(results, false)
 }
 
-/// The table; `wide` adds under every row the checks run and the law of motion it uses.
+/// The table in the one-line layout ([`FULL_WIDTH`] columns); `wide` adds under every row the
+/// checks run and the law of motion it uses.
 pub fn render(results: &[EquationResult], wide: bool) -> String {
-    let mut out = row(&COLUMNS.map(|c| c.0.to_string()));
+    render_for(results, wide, FULL_WIDTH)
+}
+
+/// The table for a terminal `columns` wide: one line per display when [`FULL_WIDTH`] fits, else
+/// each display's number, section and full title on one line and its cells on the next, so
+/// that no line is wider than `columns` (down to [`NARROW_WIDTH`]). The lines under a row
+/// (what a definition was checked against, the law, problems) are filled to `columns`.
+pub fn render_for(results: &[EquationResult], wide: bool, columns: usize) -> String {
+    let one_line = columns >= FULL_WIDTH;
+    let mut out = if one_line {
+        row(&COLUMNS, &COLUMNS.map(|c| c.0.to_string()))
+    } else {
+        format!("{:>5} {:<5} title\n", "eq", "sec")
+            + &" ".repeat(NARROW_INDENT)
+            + &row(&NARROW_COLUMNS, &NARROW_COLUMNS.map(|c| c.0.to_string()))
+    };
+    let indent = " ".repeat(if one_line {
+        COLUMNS[0].1 + COLUMNS[1].1 + 2
+    } else {
+        NARROW_INDENT
+    });
     let mut file = None;
     for r in results {
         let (f, line) = match r.doc.as_deref().and_then(|d| d.rsplit_once(':')) {
@@ -49,11 +111,7 @@ pub fn render(results: &[EquationResult], wide: bool) -> String {
             out.push_str(&format!("── {}\n", f.unwrap_or("(no page in the book)")));
             file = f;
         }
-        let title = wrap(r.title, TITLE_WIDTH);
         let cells = [
-            r.label.clone(),
-            r.section.to_string(),
-            title[0].clone(),
             r.kind.name().to_string(),
             status(r.status).to_string(),
             residual(r.max_residual),
@@ -64,42 +122,69 @@ pub fn render(results: &[EquationResult], wide: bool) -> String {
             print(r),
             line.to_string(),
         ];
-        out.push_str(&row(&cells));
-        let indent = " ".repeat(COLUMNS[0].1 + COLUMNS[1].1 + 2);
-        for more in &title[1..] {
-            out.push_str(&format!("{indent}{more}\n"));
+        if one_line {
+            let title = wrap(r.title, TITLE_WIDTH);
+            let [c0, c1, c2, c3, c4, c5, c6, c7, c8] = cells;
+            let all = [
+                r.label.clone(),
+                r.section.to_string(),
+                title[0].clone(),
+                c0,
+                c1,
+                c2,
+                c3,
+                c4,
+                c5,
+                c6,
+                c7,
+                c8,
+            ];
+            out.push_str(&row(&COLUMNS, &all));
+            for more in &title[1..] {
+                out.push_str(&format!("{indent}{more}\n"));
+            }
+        } else {
+            let head = COLUMNS[0].1 + COLUMNS[1].1 + 2;
+            let title = wrap(r.title, columns.saturating_sub(head).max(TITLE_WIDTH));
+            out.push_str(&format!("{:>5} {:<5} {}\n", r.label, r.section, title[0]));
+            for more in &title[1..] {
+                out.push_str(&format!("{}{more}\n", " ".repeat(head)));
+            }
+            out.push_str(&indent);
+            out.push_str(&row(&NARROW_COLUMNS, &cells));
         }
+        let mut under = Vec::new();
         if wide || r.kind == Kind::Definition {
-            out.push_str(&format!("{indent}checked: {}\n", r.checks.join("; ")));
+            under.push(format!("checked: {}", r.checks.join("; ")));
         }
         if let (true, Some(step), Some(law)) = (wide, r.law_step, r.law) {
-            out.push_str(&format!(
-                "{indent}law of motion at the {} `=`: {law}\n",
+            under.push(format!(
+                "law of motion at the {} `=`: {law}",
                 crate::docs::ordinal(step)
             ));
         }
-        for u in &r.print_unparsed {
-            out.push_str(&format!("{indent}· print: {u}\n"));
-        }
-        for p in &r.problems {
-            out.push_str(&format!("{indent}! {p}\n"));
-        }
+        under.extend(r.print_unparsed.iter().map(|u| format!("· print: {u}")));
+        under.extend(r.problems.iter().map(|p| format!("! {p}")));
         if let (Units::Inconsistent, Some(d)) = (r.units, &r.units_detail) {
-            out.push_str(&format!("{indent}units: {d}\n"));
+            under.push(format!("units: {d}"));
+        }
+        for u in under {
+            out.push_str(&super::fill::fill_line(&format!("{indent}{u}"), columns));
+            out.push('\n');
         }
     }
     out
 }
 
 /// One line of cells padded to the columns (the last cell unpadded).
-fn row(cells: &[String; 12]) -> String {
+fn row<const N: usize>(columns: &[(&str, usize, bool); N], cells: &[String; N]) -> String {
     let mut s = String::new();
-    for (k, (c, (_, w, right))) in cells.iter().zip(COLUMNS).enumerate() {
+    for (k, (c, (_, w, right))) in cells.iter().zip(columns).enumerate() {
         let pad = w.saturating_sub(width(c));
         if k > 0 {
             s.push(' ');
         }
-        if right {
+        if *right {
             s.push_str(&" ".repeat(pad));
             s.push_str(c);
         } else {
@@ -112,30 +197,7 @@ fn row(cells: &[String; 12]) -> String {
     s.trim_end().to_string() + "\n"
 }
 
-/// Columns a string takes in a terminal: its characters less the combining marks (the dots of
-/// θ̇ and θ̈, the hat of ẑ), which draw on the character before them.
-pub fn width(s: &str) -> usize {
-    s.chars()
-        .filter(|c| !matches!(*c as u32, 0x300..=0x36F | 0x20D0..=0x20FF))
-        .count()
-}
-
-/// Break `text` at spaces into lines of at most `width` characters (a longer word stays whole).
-pub fn wrap(text: &str, width: usize) -> Vec<String> {
-    let mut lines = vec![String::new()];
-    for w in text.split_whitespace() {
-        let cur = lines.last_mut().expect("one line");
-        if cur.is_empty() {
-            cur.push_str(w);
-        } else if self::width(cur) + 1 + self::width(w) <= width {
-            cur.push(' ');
-            cur.push_str(w);
-        } else {
-            lines.push(w.to_string());
-        }
-    }
-    lines
-}
+pub use super::fill::{width, wrap};
 
 /// The status as the table writes it.
 pub fn status(s: Status) -> &'static str {
