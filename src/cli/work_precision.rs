@@ -146,8 +146,8 @@ fn print_report(rep: &SceneReport) {
         let theory = theory.map_or("p(tol)".to_string(), |p| p.to_string());
         match fit {
             Some(f) => println!(
-                "  {m:<17} theoretical {theory:<6} observed {:.2} over {} runs, rhs {}..{}, error {:.1e}..{:.1e} (floor {:.0e})",
-                f.order, f.runs, f.rhs_range.0, f.rhs_range.1, f.error_range.0, f.error_range.1, f.floor
+                "  {m:<17} theoretical {theory:<6} observed {:.2} ± {:.2} over {} runs, rhs {}..{}, error {:.1e}..{:.1e} (floor {:.0e})",
+                f.order, f.std_error, f.runs, f.rhs_range.0, f.rhs_range.1, f.error_range.0, f.error_range.1, f.floor
             ),
             None => println!("  {m:<17} theoretical {theory:<6} observed n/a (fewer than 3 runs in range)"),
         }

@@ -18,7 +18,8 @@
 //!    those of the last kept run;
 //!
 //! and fit −ln(error) = q ln(rhs evaluations) + c by least squares over at least three such runs.
-//! The report gives q with the range used (rhs evaluations and errors, number of runs, floor).
+//! The report gives q with its standard error and the range used (rhs evaluations and errors,
+//! number of runs, floor).
 
 use serde::Serialize;
 
@@ -48,6 +49,10 @@ pub trait Point {
 pub struct OrderFit {
     /// The fitted slope q of −ln(error) against ln(rhs evaluations).
     pub order: f64,
+    /// The slope's standard error from the fit's residuals, √(Σ r² / ((n − 2) Σ (x − x̄)²)):
+    /// on a short run the work moves in whole steps and the slope is poorly determined (dop853
+    /// from θ0 = 1: 12.7 ± 4.3 over five runs of 5 to 10 steps), which the report says.
+    pub std_error: f64,
     /// Runs used.
     pub runs: usize,
     /// (fewest, most) rhs evaluations of the runs used.
@@ -116,8 +121,14 @@ pub fn observed_order<P: Point>(runs: &[P], method: &str) -> Option<OrderFit> {
     let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
     let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
     let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    let q = sxy / sxx;
+    let residuals: f64 = pts
+        .iter()
+        .map(|p| (p.1 - my - q * (p.0 - mx)).powi(2))
+        .sum();
     (sxx > 0.0).then(|| OrderFit {
-        order: sxy / sxx,
+        order: q,
+        std_error: (residuals / ((n - 2.0) * sxx)).sqrt(),
         runs: kept.len(),
         rhs_range: (kept[0].rhs_evals(), kept[kept.len() - 1].rhs_evals()),
         error_range: (kept[0].error(), kept[kept.len() - 1].error()),
@@ -192,6 +203,7 @@ mod tests {
         let runs = order_eight();
         let fit = observed_order(&runs, "m").unwrap();
         assert!((fit.order - 8.0).abs() < 1e-9, "{fit:?}");
+        assert!(fit.std_error < 1e-6, "{fit:?}");
         assert!(fit.error_range.1 >= FLOOR && fit.error_range.0 <= ASYMPTOTIC);
         // Without the rule (all runs) the slope is far from 8: the rule matters.
         let all: Vec<(f64, f64)> = runs
@@ -282,6 +294,35 @@ mod tests {
         let q = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>()
             / pts.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
         assert!((q - 8.0).abs() > 1.0, "with rounding-level runs: {q}");
+    }
+
+    /// dop853 from θ0 = 1 at rest (`ladder work-precision`, 2026-11-24): five runs of 5 to 10
+    /// steps whose error jumps with one step more, and the sweep's tighter runs at rounding.
+    /// The slope is 12.7, and its standard error (4.3; both computed independently, in Python,
+    /// from these five points) says it is not determined.
+    #[test]
+    fn a_slope_over_few_steps_carries_its_standard_error() {
+        let runs: Vec<P> = [
+            (64, 7.71169299951297e-11),
+            (76, 6.260695710760502e-14),
+            (88, 7.390523228926533e-14),
+            (100, 1.907939231206553e-14),
+            (124, 5.263280637811181e-15),
+            (160, 2e-16),
+            (200, 3e-16),
+            (250, 2e-16),
+        ]
+        .into_iter()
+        .map(|(n, e)| P("m", n, 0.0, e))
+        .collect();
+        let fit = observed_order(&runs, "m").unwrap();
+        assert_eq!(fit.runs, 5, "{fit:?}");
+        assert!((fit.order - 12.74).abs() < 0.01, "{fit:?}");
+        assert!((fit.std_error - 4.25).abs() < 0.01, "{fit:?}");
+        // On a clean line of order 8 with one point moved by a factor e the error is nonzero.
+        let mut bent = clean_eight(&[]);
+        bent[2].3 *= std::f64::consts::E;
+        assert!(observed_order(&bent, "m").unwrap().std_error > 0.1);
     }
 
     #[test]
