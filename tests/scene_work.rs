@@ -361,3 +361,46 @@ fn estimate(sc: &Scene) -> [f64; 2] {
         sc.contact,
     )
 }
+
+/// radau5 below its rounding floor on stiff springs (the 1e6-scene campaign: seed 1 scenes
+/// 42205, 44765, 335462, 406910, 421769, κ ≈ 1e11 at τ ≈ 1e-16, over 1e6 steps) is refused;
+/// at the floor the run is short, below it the run takes over 20 times as many steps.
+#[test]
+fn radau5_below_its_rounding_floor_on_stiff_springs_is_refused_and_would_crawl() {
+    let stiff = "model = \"penalty\"\nstiffness = 1e12\ndamping = 0.0";
+    let e = parse(
+        "s.toml",
+        &text(
+            stiff,
+            "method = \"radau5\"\ntolerance = 5e-16",
+            "separation",
+        ),
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.starts_with("s.toml:14: [integrator] tolerance: "), "{e}");
+    let floor = number_after(&e, "allowed: tolerance ≥ ");
+    assert_eq!(floor, 1e-15, "{e}");
+    let at = text(
+        stiff,
+        "method = \"radau5\"\ntolerance = 1e-15",
+        "separation",
+    );
+    let mut sc = parse("s.toml", &at).expect("at the floor");
+    let o = fall::run(&sc, fall::MAX_STEPS).expect("runs");
+    assert!(out_of_tolerance(&sc, &o).is_empty());
+    let steps = o.work.wall.steps;
+    assert!(steps < 5_000, "{steps} steps at the floor");
+    // Run anyway below it (the check bypassed): 20 times the steps do not reach the separation.
+    sc.control = Some(sliding_ladder::sim::integrators::Control::Tolerance(2e-16));
+    let r = fall::run(&sc, 20 * steps);
+    assert!(r.is_err(), "2e-16 ran in {:?}", r.map(|o| o.work.wall));
+    // Softer springs keep the tolerances down to 1e-16 (κ = 1e8 is at most 4.6e4 steps).
+    let soft = "model = \"penalty\"\nstiffness = 1e8\ndamping = 0.0";
+    let soft = text(
+        soft,
+        "method = \"radau5\"\ntolerance = 1.1e-16",
+        "separation",
+    );
+    assert!(parse("s.toml", &soft).is_ok());
+}

@@ -121,3 +121,46 @@ fn a_tiny_start_traces_every_step_densely() {
         );
     }
 }
+
+/// An `[end] time` before the linear lead-in hands over (issue 11, the 1e6-scene campaign: seed
+/// 1 scenes 129565, 255978, 268153, 338810, 425812, radau5 at τ ≈ 1e-16 from θ0 = 1e-313 ..
+/// 1e-159, took up to 1.2e6 steps to integrate hundreds of √(l/g) of growth): the run is the
+/// linear motion in closed form, no steps. Reference: the linearised (5), θ̈ = Ω² θ, solved in
+/// the test as θ0 cosh(Ω t) from rest (½ θ0 e^{Ω t} for the subnormal start, whose growth
+/// e^{Ω t} ≈ 1e312 passes the largest f64: formed through logarithms here), exact to f64 below
+/// 1e-9 (module docs). Bound: the argument Ω t and ln θ0 carry u each, so a few u (|ln θ0| + Ω t).
+#[test]
+fn an_end_within_the_lead_in_is_the_linear_motion() {
+    let w = omega();
+    for (angle, t_end) in [(1e-200f64, 150.0f64), (5e-324, 265.0), (1e-30, 15.0)] {
+        let text = format!(
+            "[ladder]\nmass = 1.0\nhalf_length = 1.0\ngravity = {G}\n[start]\nangle = {angle:e}\nangular_velocity = 0.0\n[contact]\nmodel = \"rigid\"\n[integrator]\nmethod = \"radau5\"\ntolerance = 1e-14\n[end]\nat = \"time\"\ntime = {t_end}\n[outputs]\nwant = [\"final_state\"]\n"
+        );
+        let sc = scene::parse("tiny.toml", &text).unwrap();
+        // Without the closed form this run needs ~1e5 steps (it was integrated from θ0).
+        let o = fall::run(&sc, 1).expect("no steps needed");
+        assert_eq!(o.work.wall.steps, 0);
+        assert!(o.separation.is_none());
+        let (t, theta, rate) = o.last;
+        assert_eq!(t, t_end);
+        let x = w * t_end;
+        let (want, want_rate) = match angle > 1e-300 {
+            true => (angle * x.cosh(), angle * w * x.sinh()),
+            false => {
+                let half = 0.5 * (angle.ln() + x).exp();
+                (half, w * half)
+            }
+        };
+        assert!(want < 1e-9, "the end must lie within the lead-in: {want:e}");
+        let bound = 8.0 * (angle.ln().abs() + x + 2.0) * f64::EPSILON;
+        for (what, got, want) in [("θ", theta, want), ("θ̇", rate, want_rate)] {
+            let rel = (got - want).abs() / want;
+            assert!(
+                rel <= bound,
+                "{angle:e} {what}: {got:e} against {want:e} ({rel:e} > {bound:e})"
+            );
+        }
+        // It can fail: the same start a tenth of a √(l/g) later is Ω/10 ≈ 27% further on.
+        assert!((want * (0.1 * w).exp() - theta).abs() / want > bound);
+    }
+}

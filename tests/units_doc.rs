@@ -16,6 +16,9 @@ use sliding_ladder::scalar::{Dim, Dimension, Scalar};
 use sliding_ladder::sim::{fall, scene};
 use std::collections::BTreeMap;
 
+/// The CSV columns and the printed summary of `ladder simulate`, in units.
+mod units_doc_simulate;
+
 /// The rows of every table on the page: (section heading, cells).
 fn tables() -> Vec<(String, Vec<String>)> {
     let path = sliding_ladder::docs::default_dir().join("UNITS.md");
@@ -131,14 +134,20 @@ const SAMPLED_OR_COUNTED: [&str; 5] = [
     "forces.samples",
 ];
 
-fn run(m: f64, l: f64, g: f64) -> serde_json::Value {
+fn run_scene(m: f64, l: f64, g: f64) -> (scene::Scene, fall::Outcome) {
     let text = include_str!("../scenes/full-fall.toml")
         .replace("mass = 1.0", &format!("mass = {m:?}"))
         .replace("half_length = 1.0", &format!("half_length = {l:?}"))
         .replace("gravity = 9.81", &format!("gravity = {g:?}"))
         .replace("want = [", "want = [\"separation_rate\", ");
     let sc = scene::parse("full-fall (rescaled)", &text).expect("scene");
-    to_json(&sc, &fall::run(&sc, fall::MAX_STEPS).expect("run"))
+    let o = fall::run(&sc, fall::MAX_STEPS).expect("run");
+    (sc, o)
+}
+
+fn run(m: f64, l: f64, g: f64) -> serde_json::Value {
+    let (sc, o) = run_scene(m, l, g);
+    to_json(&sc, &o)
 }
 
 fn leaves(v: &serde_json::Value, prefix: String, out: &mut BTreeMap<String, f64>) {

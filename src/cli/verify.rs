@@ -109,6 +109,9 @@ pub fn verify(
             "equations": results,
             "summary": {"verified": v, "erratum": e, "definition": d, "failed": f,
                          "proved": proved, "sampled_only": sampled_only, "proof_seconds": proof_seconds,
+                         "proof_particle_counts": crate::registry::prove::PARTICLE_COUNTS.collect::<Vec<_>>(),
+                         "sz_bound_log10": worst_sz_log10(&results, |r| r.sz_bound_log10),
+                         "sz_bound_rational_log10": worst_sz_log10(&results, |r| r.sz_bound_rational_log10),
                          "float_cases_per_check": cfg.float_cases, "exact_points_per_check": cfg.exact_points,
                          "seed": cfg.seed, "seconds": seconds,
                          "print": print_summary(&results)},
@@ -182,6 +185,16 @@ pub fn verify(
     } else {
         ExitCode::from(1)
     }
+}
+
+/// The largest Schwartz-Zippel bound of the run as a power of ten (rounded up, as the summary
+/// line prints it), which does not underflow where the bound itself would.
+fn worst_sz_log10(results: &[EquationResult], f: fn(&EquationResult) -> f64) -> f64 {
+    results
+        .iter()
+        .map(f)
+        .fold(f64::NEG_INFINITY, f64::max)
+        .ceil()
 }
 
 fn print_summary(results: &[EquationResult]) -> serde_json::Value {

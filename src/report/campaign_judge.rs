@@ -32,7 +32,7 @@
 //! * **penalty separation angle**: the error model of the penalty contact,
 //!   `sim::penalty_confirm::separation_bound`: the model's own distance to the rigid angle θ_r,
 //!   4/(κ sin θ_r) (its constant measured over the start domain and damping γ = 0..κ, with a
-//!   margin of 3), the integrator's 10 N (τ + u) and rounding 10u. The run itself refuses a
+//!   margin of 3), the integrator's 10 N (τ + u) (times 1/((9/4) sin²θ_r) for a small θ_r) and rounding 10u. The run itself refuses a
 //!   zero outside that bound (exit 2), so here it holds the reported angle, as written to the
 //!   outputs, to the same promise.
 //!

@@ -4,7 +4,7 @@
 //!
 //! **Error model of a penalty case** (angle error against the rigid θ_r = arccos((2/3) cos θ0)):
 //! the penalty contact's, `sim::penalty_confirm::separation_bound` (the campaign's judge uses it
-//! too): 4/(κ sin θ_r) + 10 N (τ + u) + 10 u, where
+//! too): 4/(κ sin θ_r) + 10 N (τ + u) + 10 u (the middle term times 1/((9/4) sin²θ_r) where that exceeds 1), where
 //! * 4/(κ sin θ_r): the model's own distance to the rigid limit. The springs yield by p = F/k,
 //!   so the geometry, and with it θ_s, moves by O(1/κ); the constant is measured over the start
 //!   domain (1.39 here, at most 1.25/sin θ_r elsewhere) with a margin of 3.

@@ -19,7 +19,7 @@
 //! of π/2 that FRAC_PI_2 misses ([`HALF_PI_LO`]) is added with one rounding.
 
 use super::event::{Direction, Event};
-use super::integrators::taylor::{separation_factor_on, Series};
+use super::integrators::taylor::{separation_factor_on, value_and_rate_on, Series};
 use super::integrators::Ode;
 use super::rigid::{event_safe_step, Ladder};
 use super::run::Observer;
@@ -221,6 +221,10 @@ impl Event<4> for Flat {
     }
     fn rate(&self, _t: f64, _y: &[f64; 4], dy: &[f64; 4]) -> Option<f64> {
         Some(dy[0])
+    }
+    /// φ and φ̇ on the step's polynomial of φ.
+    fn on_series(&self, s: &Series<4>, tau: f64) -> Option<(f64, f64)> {
+        Some(value_and_rate_on(&s.y[0], s.order, s.inv_unit(), tau))
     }
 }
 

@@ -68,8 +68,9 @@ pub trait Event<const N: usize> {
 
 /// A root of `f` in the bracket `[a, b]` (`f(a)`, `f(b)` of opposite signs or one zero) by
 /// Newton's method safeguarded by bisection, with `f` returning the value and its derivative.
-/// Stops when the Newton correction is within 8 ulps of the iterate (rounding noise) or the
-/// bracket is two adjacent floats; None when `f` has no derivative (the caller falls back to [`brent`]).
+/// Stops when the Newton correction is within 8 ulps of the iterate (rounding noise), when two
+/// successive Newton corrections bound the rest within that noise (a contracting iteration), or
+/// when the bracket is two adjacent floats; None when `f` has no derivative (the caller falls back to [`brent`]).
 pub fn newton_in_bracket(
     f: impl Fn(f64) -> Option<(f64, f64)>,
     a: f64,
@@ -98,6 +99,8 @@ pub fn newton_in_bracket(
         b
     };
     let (mut dx, mut dx_old) = ((b - a).abs(), (b - a).abs());
+    // The previous iteration's Newton correction (None after a bisection or at the start).
+    let mut last_newton: Option<f64> = None;
     for _ in 0..MAX_ITERATIONS {
         let (v, d) = f(t)?;
         if v == 0.0 {
@@ -116,16 +119,29 @@ pub fn newton_in_bracket(
         // test: a correction below half an ulp leaves `newton` equal to `t`, which the bracket
         // test would reject as outside (t is an end of it) and so bisect on.
         let noise = 8.0 * f64::EPSILON * t.abs().max(f64::MIN_POSITIVE);
-        if (newton - t).abs() <= noise && newton >= l && newton <= h {
+        let c = (newton - t).abs();
+        if c <= noise && newton >= l && newton <= h {
+            return Some(newton);
+        }
+        // Two successive Newton corrections c_prev, c with c ≤ c_prev/2: while the iteration
+        // contracts at least as fast (Newton near a simple root does, quadratically), the
+        // corrections still to come sum to at most r c/(1 − r) ≤ 2 c²/c_prev (r = c/c_prev).
+        // When that is within the noise, `newton` is the root and the evaluation that would
+        // confirm it is saved.
+        let converged =
+            last_newton.is_some_and(|c_prev| c <= 0.5 * c_prev && 2.0 * c * c <= noise * c_prev);
+        if converged && newton >= l && newton <= h {
             return Some(newton);
         }
         let next = if !(newton > l && newton < h) || (2.0 * v).abs() > (dx_old * d).abs() {
             dx_old = dx;
             dx = 0.5 * (h - l);
+            last_newton = None;
             l + dx
         } else {
             dx_old = dx;
-            dx = (newton - t).abs();
+            dx = c;
+            last_newton = Some(c);
             newton
         };
         if (next - t).abs() <= noise || h - l <= 2.0 * f64::EPSILON * h.abs().max(l.abs()) {
@@ -252,6 +268,28 @@ mod tests {
         let r = newton_in_bracket(f, 1.0, 3.0, -1.0, 1.0).unwrap();
         assert_eq!(r, 2.0);
         assert!(evals.get() <= 3, "{} evaluations", evals.get());
+    }
+
+    #[test]
+    fn newton_stops_when_two_corrections_bound_the_rest_within_the_noise() {
+        // cos from the secant's start on [1, 2]: the contraction rule saves the evaluation that
+        // would only confirm the root, and the root is still within the noise (8 ulps).
+        let evals = std::cell::Cell::new(0);
+        let f = |t: f64| {
+            evals.set(evals.get() + 1);
+            Some((t.cos(), -t.sin()))
+        };
+        let r = newton_in_bracket(f, 1.0, 2.0, 1f64.cos(), 2f64.cos()).unwrap();
+        let half_pi = std::f64::consts::FRAC_PI_2;
+        assert!((r - half_pi).abs() <= 8.0 * f64::EPSILON * 2.0, "{r}");
+        // Secant start, then corrections 7e-3, 1e-7, 5e-22: the third (converged by the
+        // contraction rule) is not evaluated again, so three evaluations, not four.
+        assert_eq!(evals.get(), 3);
+        // A linearly contracting iteration (slope 4/3 of the true one: each correction a
+        // quarter of the last) may stop by the rule, but only within the noise of the root.
+        let g = |t: f64| Some((t - 1.3, 4.0 / 3.0));
+        let r = newton_in_bracket(g, 1.0, 2.0, -0.3, 0.7).unwrap();
+        assert!((r - 1.3).abs() <= 8.0 * f64::EPSILON * 1.3, "{r}");
     }
 
     #[test]

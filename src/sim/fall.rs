@@ -11,6 +11,7 @@ use super::floor;
 use super::integrators::any::AnyStepper;
 use super::integrators::taylor;
 use super::integrators::Stepper;
+use super::lead_in::linear_state_at;
 pub use super::outcome::{FlatState, FloorReport, Outcome, Plan, Sample, SeparationState, Work};
 use super::rigid::{self, Ladder, WallPhase};
 use super::run::{integrate_phase, Observer, RunError};
@@ -79,8 +80,18 @@ pub fn run(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
     // Tiny starts take their linear lead-in in SI, before scaling: θ̇0 T underflows (5e-324 T
     // = 0 for T < 1), and a subnormal product keeps only part of θ̇0's digits. The lead-in ends
     // at an amplitude (~1e-9) where the conversion is exact to rounding.
-    let lead = super::extreme::linear_lead_in(scene.ladder.big_omega2(), scene.theta0, scene.rate0)
-        .map(|(t, theta, rate)| (t / units.time, theta, rate * units.time));
+    let big_omega2 = scene.ladder.big_omega2();
+    let lead = super::extreme::linear_lead_in(big_omega2, scene.theta0, scene.rate0).map(
+        |(t, theta, rate)| match scene.end {
+            // An end before the hand-over: the whole run is the linear motion (closed form).
+            End::Time(t_end) if t >= t_end => {
+                let (theta, rate) = linear_state_at(big_omega2, scene.theta0, scene.rate0, t_end);
+                (t_end, theta, rate)
+            }
+            _ => (t, theta, rate),
+        },
+    );
+    let lead = lead.map(|(t, theta, rate)| (t / units.time, theta, rate * units.time));
     let mut out = run_rigid(&units.scale_scene(scene), lead, max_steps)
         .map(|o| units.outcome_to_si(o))
         .map_err(|e| units.error_to_si(e))?;
@@ -113,7 +124,7 @@ fn run_rigid(
 
     // Tiny and subnormal starts: the exact linear motion up to where f64 can follow it.
     let (t0, y_lead) = lead
-        .filter(|(t, _, _)| *t < t_end)
+        .filter(|(t, _, _)| *t <= t_end)
         .map_or((0.0, [scene.theta0, scene.rate0]), |(t, th, w)| {
             (t, [th, w])
         });
@@ -175,6 +186,23 @@ fn run_rigid(
     obs.observe(0.0, &y0);
     if t0 > 0.0 {
         obs.observe(t0, &y_lead);
+    }
+    if t0 > 0.0 && t0 >= t_end {
+        // The end came within the linear lead-in (`run` gave its state there): nothing to step.
+        work.force_evals = obs.force_evals;
+        work.stored_samples = trace.as_ref().map_or(0, Vec::len);
+        let energy = rigid::energy(&ladder, y_lead[0], y_lead[1]);
+        return Ok(Outcome {
+            plan,
+            separation: None,
+            flat: None,
+            last: (t0, y_lead[0], y_lead[1]),
+            energy_error: e0.map(|e| (energy - e).abs() / (m * g * l)),
+            momentum_error: None,
+            floor_report: None,
+            trace,
+            work,
+        });
     }
     let mut shifted = super::extreme::Shifted(&mut obs, t0);
     let mut phi_s = None;

@@ -35,3 +35,20 @@ pub fn linear_lead_in(big_omega2: f64, theta0: f64, rate0: f64) -> Option<(f64, 
     let back = b * (a / (4.0 * amp)); // ½ b e^{−Ωt}
     Some((t, amp + back, big_omega * (amp - back)))
 }
+
+/// The state (θ, θ̇) of the linearised motion at time `t` after a tiny start (θ0, θ̇0): for a
+/// run that ends (`[end] time`) before [`linear_lead_in`] hands over, the whole run is this
+/// closed form (the campaign's seed 1 scene 129565: radau5 at τ = 1.6e-16 took 1.1e6 steps to
+/// integrate 474 √(l/g) of growth from θ0 = 2.2e-249 that the formula gives exactly). Formed
+/// scaled by 2^600 like [`linear_lead_in`], so a subnormal start keeps its digits; `t` must
+/// not pass the hand-over (then θ ≤ [`LINEAR_AMPLITUDE`] and nothing overflows).
+pub fn linear_state_at(big_omega2: f64, theta0: f64, rate0: f64, t: f64) -> (f64, f64) {
+    let omega = big_omega2.sqrt();
+    let scale = 2f64.powi(600);
+    let (p, q) = (theta0 * scale, rate0 * scale / omega);
+    // e^{ωt} reaches 2A/a (4e314 for a subnormal a): applied in two halves, so that no
+    // factor overflows while the product stays below the amplitude.
+    let half = (0.5 * omega * t).exp();
+    let (a, b) = (0.5 * (p + q) * half * half, 0.5 * (p - q) / half / half);
+    ((a + b) / scale, omega * ((a - b) / scale))
+}

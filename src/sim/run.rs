@@ -102,7 +102,11 @@ pub fn integrate_phase<const N: usize, S: Ode<N>, St: Stepper<N>, O: Observer<N>
     assert!(events.len() <= MAX_EVENTS, "too many events");
     let mut prev = [0.0; MAX_EVENTS];
     for (i, ev) in events.iter().enumerate() {
-        prev[i] = ev.value(stepper.t(), &stepper.y());
+        let (t, y) = (stepper.t(), stepper.y());
+        prev[i] = match stepper.trig() {
+            Some(trig) => ev.value_with_trig(t, &y, trig),
+            None => ev.value(t, &y),
+        };
     }
     let mut steps = 0u64;
     loop {

@@ -32,6 +32,15 @@
 //!   accuracy and rounding counts meet (dop853, κ = 1e4, τ = 1e-15: 4.6e3 for 2.25e3);
 //!   `tests/scene_work.rs` holds it against runs. radau5 is not held: its steps follow its
 //!   tolerance (the lead-in and its controller keep them to thousands up to κ = 1e12).
+//! * **radau5 on stiff springs below its rounding floor**: its error estimate sees the force
+//!   rates' rounding (κ u), so below [`RADAU5_LEAST_TOLERANCE`] on springs stiffer than
+//!   [`RADAU5_STIFF`] it rejects step after step (the 1e6-scene campaign's seed 1 scenes 42205,
+//!   44765, 335462, 406910, 421769: κ ≈ 1e11, τ = 1.1..1.8e-16, 1e6 steps and more). Sweep
+//!   (separation from θ0 = 0.3 and 1e-300 at rest, m = l = g = 1): κ = 1e2..1e6 take 3.4e3-1.4e4
+//!   steps at every τ in 1.1e-16..1e-15; κ = 1e8 up to 4.6e4 at 1.1e-16 (15% rejected); at
+//!   τ = 3e-16 κ = 1e9 rejects 62%, 1e10 77%, and κ ≥ 1e10 take 4e4 to more than 2e5 steps;
+//!   at τ = 1e-15 every κ up to 1e12 takes at most 7e3 steps (15% rejected), 5e-16 at most
+//!   1.6e4. So the floor is 1e-15 (three times the cliff's start) above κ = 1e8.
 //! * **An explicit adaptive method whose tolerance exceeds the starting wall force, far from
 //!   the separation**: its error control holds each spring force to τ m g a step (absolute:
 //!   `PenaltyModel::scale`), so a wall force F_w0 of the order of τ where the integration
@@ -92,6 +101,11 @@ const MAX_STEP_FREQUENCY: f64 = 0.2;
 /// (method, q + 1 of its error estimate, a, b).
 const EXPLICIT_FITS: [(&str, f64, f64, f64); 2] =
     [("dopri5", 5.0, 0.3, 0.05), ("dop853", 8.0, 0.3, 2.5)];
+/// radau5 on penalty springs stiffer than this needs a tolerance of at least
+/// [`RADAU5_LEAST_TOLERANCE`] (module docs).
+pub const RADAU5_STIFF: f64 = 1e8;
+/// The least tolerance radau5 reaches on springs stiffer than [`RADAU5_STIFF`] (module docs).
+pub const RADAU5_LEAST_TOLERANCE: f64 = 1e-15;
 /// Least F_w0/τ an explicit adaptive method needs on penalty springs (module docs).
 pub const RESOLVED_WALL_FORCE: f64 = 40.0;
 
@@ -249,6 +263,17 @@ pub(super) fn check_work(
                         steps[0]
                     ),
                 ));
+            }
+            Control::Tolerance(tol) if method == "radau5" && kappa > RADAU5_STIFF => {
+                if tol < RADAU5_LEAST_TOLERANCE {
+                    return Err(cx.err(
+                        i.tolerance.as_ref().map(|t| t.span()),
+                        "integrator.tolerance",
+                        format!(
+                            "{springs}: below a tolerance of {RADAU5_LEAST_TOLERANCE:e} \"radau5\"'s error estimate on springs stiffer than κ = {RADAU5_STIFF:e} is rounding (κ u in the force rates), so it rejects step after step (up to 1e6 steps or more); allowed: tolerance ≥ {RADAU5_LEAST_TOLERANCE:e}"
+                        ),
+                    ));
+                }
             }
             Control::Tolerance(tol) => {
                 let rate = start.1 * unit;

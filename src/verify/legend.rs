@@ -4,6 +4,7 @@
 
 use super::EquationResult;
 use crate::registry::check::{Config, TOLERANCE_FACTOR};
+use crate::registry::prove::PARTICLE_COUNTS;
 
 /// One entry per column of [`super::table`] (the test in `tests/verify_table.rs` holds every
 /// column header to an entry here), and what a row's status means. One line per entry (the kinds
@@ -26,7 +27,7 @@ pub fn legend(cfg: &Config) -> String {
         format!("  residual    worst float difference of the display's forms at {} random states per check, in units of its own rounding-error bound: |a − b| / (u·(e_a + e_b)), u = 2⁻⁵³, where e_a, e_b bound the rounding of a and b; shown beside the threshold: a check passes when it is ≤ {f}", cfg.float_cases),
         "  off motion  re-run with θ̈ left free instead of taken from (5): 'fails at =k' = the display breaks at its k-th `=`, the law of motion, and nowhere else (see the law lines below); 'fails' = breaks (a consequence of the law, no single `=`); 'any θ̈' = checked with θ̈ free, holds on the motion and off it; '—' = about any system of particles, no ladder".into(),
         format!("  exact       '0 at n pts' = residual exactly zero at n exact points ({} per check): the first in rationals, the rest modulo the prime 2⁶¹ − 1; '≠0 at k of n' = nonzero at k of them", cfg.exact_points),
-        "  proof       proved = every check, and every printed form against its chain, reduces to zero symbolically, for all values of the variables (an erratum: its correction, and its printed form is shown to differ); sampled = no proof applies".into(),
+        format!("  proof       proved = every check, and every printed form against its chain, reduces to zero symbolically, for all values of the variables (identities about particles: for {}; an erratum: its correction, and its printed form is shown to differ); sampled = no proof applies", proved_particle_counts()),
         "  units       consistent = every form has one dimension and the sides agree (inconsistent: why, below)".into(),
         "  print       k/n = k of the n forms of the printed display parsed and checked against each other (a * after it: a Rust form that equals none of them)".into(),
         "  line        the line of the display's section in the book file above its group".into(),
@@ -34,6 +35,17 @@ pub fn legend(cfg: &Config) -> String {
     ]
     .join("\n")
         + "\n"
+}
+
+/// The numbers of particles an identity about a system of particles is proved for, in words
+/// ("1, 2, 3 and 4 particles"), from [`PARTICLE_COUNTS`] itself so the legend cannot drift.
+pub fn proved_particle_counts() -> String {
+    let n: Vec<String> = PARTICLE_COUNTS.map(|n| n.to_string()).collect();
+    match n.split_last() {
+        Some((last, [])) => format!("{last} particle{}", if last == "1" { "" } else { "s" }),
+        Some((last, rest)) => format!("{} and {last} particles", rest.join(", ")),
+        None => "no particles".into(),
+    }
 }
 
 /// The columns of the two layouts of [`super::table`] that `legend` text does not explain: a

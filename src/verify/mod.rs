@@ -79,7 +79,10 @@ pub struct EquationResult {
     pub max_residual: f64,
     /// What `max_residual` is measured in (see [`RESIDUAL_UNIT`]).
     pub max_residual_unit: &'static str,
-    /// Largest Schwartz-Zippel bound over the checks: the chance a false identity passed.
+    /// Largest Schwartz-Zippel bound over the checks: the chance a false identity passed. Left
+    /// out of the JSON when it underflows to 0 (below about 1e-308, as with 100 exact points):
+    /// a bound is never 0, and `sz_bound_log10` carries it.
+    #[serde(skip_serializing_if = "underflowed")]
     pub sz_bound: f64,
     /// log10 of `sz_bound`, which does not underflow when the bound is below 1e-308.
     pub sz_bound_log10: f64,
@@ -139,6 +142,11 @@ pub struct EquationResult {
     /// Where the display's section starts in the book, `equations/05-point-d.md:42`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub doc: Option<String>,
+}
+
+/// A Schwartz-Zippel bound that underflowed to 0 (it is at least (1/N)^points > 0).
+fn underflowed(bound: &f64) -> bool {
+    *bound == 0.0
 }
 
 /// The unit of `max_residual`: |lhs − rhs| divided by the running error bound of the two sides,

@@ -38,6 +38,7 @@ pub enum AnyStepper<const N: usize> {
 impl<const N: usize> AnyStepper<N> {
     /// The method called `name` (see [`super::RIGID_METHODS`]) with its step or tolerance, or None
     /// when the name is unknown or the control does not fit the method.
+    #[inline]
     pub fn new(name: &str, control: Control, t0: f64, y0: [f64; N]) -> Option<Self> {
         Some(match (name, control) {
             ("euler", Control::Fixed(h)) => AnyStepper::Euler(Euler::new(t0, y0, h)),
@@ -56,6 +57,7 @@ impl<const N: usize> AnyStepper<N> {
 
     /// As [`AnyStepper::new`], with the Taylor method's order when `order` is given (other
     /// methods have none: the scene check refuses it for them, and it is ignored here).
+    #[inline]
     pub fn with_order(
         name: &str,
         control: Control,

@@ -12,7 +12,7 @@
 //! (each order is one integration, d/dσ = H d/dt, and products of series scale alike), so the
 //! models' recursions read their "reciprocals" from [`Series::inv`]. H is a power of two, so the
 //! scaling and σ = τ/H are exact: the bits are those of the plain recursion scaled.
-use super::taylor_series::{floor_series_in, FloorScratch};
+use super::taylor_f64::FloorPairs;
 
 /// Highest order the f64 stepper stores.
 pub const MAX_ORDER: usize = 40;
@@ -52,6 +52,7 @@ pub struct Series<const N: usize> {
 
 impl<const N: usize> Series<N> {
     /// Zeroed series of order `order` (at most [`MAX_ORDER`]).
+    #[inline]
     pub fn new(order: usize) -> Self {
         Series {
             order,
@@ -168,6 +169,14 @@ pub fn separation_factor_on(
     )
 }
 
+/// One series' value and its τ-derivative at τ into a step (order `p`, unit H with
+/// `inv_unit` = 1/H): an event that is a component of the state (flat: φ = 0) refined by Newton
+/// on the step's polynomial.
+pub fn value_and_rate_on(c: &[f64], p: usize, inv_unit: f64, tau: f64) -> (f64, f64) {
+    let (v, d) = value_and_slope(&c[..=p], tau * inv_unit);
+    (v, d * inv_unit)
+}
+
 /// c(x) and c'(x) by the even/odd rule of [`horner`]: with c(x) = E(s) + x O(s), s = x²,
 /// c'(x) = O(s) + 2x (E'(s) + x O'(s)); E, E', O, O' are four independent Horner chains (each
 /// with its derivative by the usual recurrence), half as long as one on c.
@@ -213,7 +222,8 @@ pub fn complement_series_f64(big_omega2: f64, s: &mut Series<2>) {
     fast_wall_series(true, big_omega2, s);
 }
 
-/// The floor phase's series in f64, for `FloorPhase::taylor_series`
+/// The floor phase's series in f64, for `FloorPhase::taylor_series`: [`super::taylor_series::floor_series`]'s
+/// sums in its order by the fast path [`super::taylor_f64::floor_series`] (same bits).
 pub fn floor_series_f64(g_over_l: f64, s: &mut Series<4>) {
     floor_series_f64_in(false, g_over_l, s);
 }
@@ -225,14 +235,17 @@ pub fn complement_floor_series_f64(g_over_l: f64, s: &mut Series<4>) {
 
 fn floor_series_f64_in(complement: bool, g_over_l: f64, s: &mut Series<4>) {
     let p = s.order;
-    let inv = &s.unit_over_k[..p + 2];
-    let mut scratch = [[0.0; MAX_ORDER + 1]; 4];
-    let [a, b, c, d] = &mut scratch;
+    let (mut rate_sq, mut inertia, mut accel) = (
+        [0.0; MAX_ORDER + 1],
+        [0.0; MAX_ORDER + 1],
+        [0.0; MAX_ORDER + 1],
+    );
+    let mut crs_s = [[0.0; 2]; MAX_ORDER + 1];
     let [theta, x, rate, xdot] = &mut s.y;
-    floor_series_in(
+    super::taylor_f64::floor_series(
         complement,
-        &g_over_l,
-        inv,
+        g_over_l,
+        &s.unit_over_k[..p + 2],
         [
             &mut theta[..=p],
             &mut x[..=p],
@@ -241,11 +254,12 @@ fn floor_series_f64_in(complement: bool, g_over_l: f64, s: &mut Series<4>) {
         ],
         &mut s.sin[..=p],
         &mut s.cos[..=p],
-        FloorScratch {
-            rate_sq: &mut a[..=p],
-            cos_rate_sq: &mut b[..=p],
-            inertia: &mut c[..=p],
-            accel: &mut d[..=p],
+        FloorPairs {
+            cs: &mut s.pairs[..=p],
+            rate_sq: &mut rate_sq[..=p],
+            crs_s: &mut crs_s[..=p],
+            inertia: &mut inertia[..=p],
+            accel: &mut accel[..=p],
         },
     );
 }

@@ -19,30 +19,38 @@ pub fn reciprocals<S: Scalar>(n: usize) -> Vec<S> {
         .collect()
 }
 
-/// Σ_{j=0}^{k} a_j b_{k−j}, the k-th coefficient of a product of series.
-///
-/// Order of summation (the only freedom; exact scalars give the same value in any order): the
-/// inner terms 0 < j < k in two chains by parity, then a_k b_0, then a_0 b_k. In a recursion the
-/// end terms hold the newest coefficients (b_k was computed just before), so in f64 they are
-/// added last and the inner sums, on older coefficients, run ahead of them: the recursion's
-/// critical path is one product and two additions per order. The f64 fast path
-/// ([`super::taylor_f64`]) sums in exactly this order, so both give the same bits.
+/// Σ_{j=0}^{k} a_j b_{k−j}, the k-th coefficient of a product of series ([`dot`] of the first
+/// k + 1 coefficients).
 #[inline(always)]
 pub fn product<S: Scalar>(k: usize, a: &[S], b: &[S]) -> S {
-    let (a, b) = (&a[..=k], &b[..=k]);
-    if k == 0 {
+    dot(&a[..=k], &b[..=k])
+}
+
+/// Σ_{i<n} a_i b_{n−1−i} for slices of one length n: a read forwards against b backwards, the
+/// sum every convolution of the recursions is made of.
+///
+/// Order of summation (the only freedom; exact scalars give the same value in any order): the
+/// inner terms 0 < i < n − 1 in four chains by (i − 1) mod 4, combined as
+/// (c0 + c1) + (c2 + c3), then a_{n−1} b_0, then a_0 b_{n−1}. In a recursion the end terms hold
+/// the newest coefficients (b_{n−1} was computed just before), so in f64 they are added last
+/// and the inner sums, on older coefficients, run ahead of them: the recursion's critical path
+/// is one product and two additions per convolution, and the four chains keep the inner sum
+/// from being bound by the latency of one addition per term. The f64 fast path
+/// ([`super::taylor_f64`]) sums in exactly this order, so both give the same bits.
+#[inline(always)]
+pub fn dot<S: Scalar>(a: &[S], b: &[S]) -> S {
+    let n = a.len();
+    let b = &b[..n];
+    if n == 1 {
         return a[0].clone() * b[0].clone();
     }
-    let (mut odd, mut even) = (S::int(0), S::int(0));
-    for j in 1..k {
-        let t = a[j].clone() * b[k - j].clone();
-        if j % 2 == 1 {
-            odd = odd + t;
-        } else {
-            even = even + t;
-        }
+    let mut acc: [S; 4] = std::array::from_fn(|_| S::int(0));
+    for i in 1..n - 1 {
+        let c = &mut acc[(i - 1) % 4];
+        *c = c.clone() + a[i].clone() * b[n - 1 - i].clone();
     }
-    ((odd + even) + a[k].clone() * b[0].clone()) + a[0].clone() * b[k].clone()
+    let [c0, c1, c2, c3] = acc;
+    (((c0 + c1) + (c2 + c3)) + a[n - 1].clone() * b[0].clone()) + a[0].clone() * b[n - 1].clone()
 }
 
 /// The k-th coefficients (k ≥ 1) of s = sin θ and c = cos θ from the series `d` of θ' and the
@@ -157,7 +165,7 @@ pub fn complement_floor_series<S: Scalar>(
     floor_series_in(true, g_over_l, inv, y, sin, cos, w);
 }
 
-pub(super) fn floor_series_in<S: Scalar>(
+fn floor_series_in<S: Scalar>(
     complement: bool,
     g_over_l: &S,
     inv: &[S],
@@ -195,10 +203,8 @@ pub(super) fn floor_series_in<S: Scalar>(
             inv_q0 = S::int(1) / w.inertia[0].clone();
             w.accel[0] = n * inv_q0.clone();
         } else {
-            let mut r = n;
-            for j in 1..=k {
-                r = r - w.inertia[j].clone() * w.accel[k - j].clone();
-            }
+            // a_k = (n_k − Σ_{j=1}^{k} q_j a_{k−j}) / q_0.
+            let r = n - dot(&w.inertia[1..=k], &w.accel[..k]);
             w.accel[k] = r * inv_q0.clone();
         }
         angle[k + 1] = rate[k].clone() * inv[k + 1].clone();
