@@ -5,7 +5,7 @@
 //! the rigid scene to flat and judges two things against theory:
 //!
 //! * cos θ_s against the energy integral 2/3 cos θ0 (from rest). Error model (as in the
-//!   `extreme` group): N accepted steps at relative tolerance τ on the scale max(θ, θ̇/ω) move
+//!   `extreme` group): N accepted steps at relative tolerance τ on the scale max(θ, θ̇/Ω) move
 //!   cos θ_s, a function of the energy, by at most 10 N τ max(θ_s, 1), plus 8 u of rounding;
 //! * flat time / √(l/g) against the same scene at m = l = 1, g = 9.81: the run is done in the
 //!   scene's own units (`sim::scaled`), where both scenes are one problem, so they may differ by
