@@ -143,7 +143,7 @@ pub fn draw(seed: u64, index: u64) -> String {
     let mut more = ChaCha8Rng::seed_from_u64(seed);
     more.set_stream(index ^ (1 << 63));
     let theta0 = start_angle(rng);
-    let omega = (0.75f64).sqrt();
+    let big_omega = (0.75f64).sqrt();
     let push = rng.gen_range(0..4);
     let push_size = match push {
         0 | 1 => 0.0,
@@ -157,7 +157,7 @@ pub fn draw(seed: u64, index: u64) -> String {
         false => Start::Angle(theta0),
     };
     let rate_scaled = match push {
-        2 => push_size * omega * start.cos().sqrt(),
+        2 => push_size * big_omega * start.cos().sqrt(),
         _ => push_size,
     };
     let rate0 = rate_scaled / unit;

@@ -185,10 +185,10 @@ pub fn extreme_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
     ] {
         cases.extend(start_rows(&format!("rest θ0={label}"), theta0, 0.0, tick));
     }
-    let omega = UNIT.big_omega2().sqrt();
+    let big_omega = UNIT.big_omega2().sqrt();
     for r in [1e-15, 1e-8, 1e-3, 0.5, 0.999, 1.0, 1.001, 2.0] {
         let name = format!("θ0=0 θ̇0={r:e}·Ω");
-        cases.extend(start_rows(&name, 0.0, r * omega, tick));
+        cases.extend(start_rows(&name, 0.0, r * big_omega, tick));
     }
     tick("equilibrium", 3);
     let expected = "never separates".to_string();

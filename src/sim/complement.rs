@@ -44,7 +44,7 @@ pub fn complement(angle: f64) -> f64 {
 pub struct ComplementWall {
     /// Ω² = 3g/(4l).
     pub big_omega2: f64,
-    omega: f64,
+    big_omega: f64,
 }
 
 impl ComplementWall {
@@ -53,7 +53,7 @@ impl ComplementWall {
         let big_omega2 = ladder.big_omega2();
         ComplementWall {
             big_omega2,
-            omega: big_omega2.sqrt(),
+            big_omega: big_omega2.sqrt(),
         }
     }
 }
@@ -64,16 +64,16 @@ impl Ode<2> for ComplementWall {
     }
     /// |Δφ| = |Δθ|: the same event-safe limit as the wall phase in θ.
     fn max_step(&self, y: &[f64; 2]) -> f64 {
-        event_safe_step(self.omega, y[1])
+        event_safe_step(self.big_omega, y[1])
     }
     /// As in `rigid::WallPhase`: |φ̈| = Ω²|cos φ| ≤ Ω² gives the same bound.
     fn taylor_max_step(&self, y: &[f64; 2]) -> f64 {
-        super::rigid::taylor_event_safe_step(self.omega, y[1])
+        super::rigid::taylor_event_safe_step(self.big_omega, y[1])
     }
     /// φ and φ̇/Ω on one relative scale, as for θ in `rigid::WallPhase`.
     fn scale(&self, y: &[f64; 2]) -> [f64; 2] {
-        let s = y[0].abs().max(y[1].abs() / self.omega);
-        [s, self.omega * s]
+        let s = y[0].abs().max(y[1].abs() / self.big_omega);
+        [s, self.big_omega * s]
     }
     fn accel_uses_velocity(&self) -> bool {
         false
@@ -162,7 +162,7 @@ pub fn floor_force(ladder: &Ladder, phi: f64, rate: f64) -> f64 {
 #[derive(Clone, Copy, Debug)]
 pub struct ComplementFloor {
     g_over_l: f64,
-    omega: f64,
+    big_omega: f64,
     half_length: f64,
 }
 
@@ -171,7 +171,7 @@ impl ComplementFloor {
     pub fn new(ladder: &Ladder) -> Self {
         ComplementFloor {
             g_over_l: ladder.gravity / ladder.half_length,
-            omega: ladder.big_omega2().sqrt(),
+            big_omega: ladder.big_omega2().sqrt(),
             half_length: ladder.half_length,
         }
     }
@@ -183,13 +183,13 @@ impl Ode<4> for ComplementFloor {
         [y[2], y[3], -acc, D::from(0.0)]
     }
     fn max_step(&self, y: &[f64; 4]) -> f64 {
-        event_safe_step(self.omega, y[2])
+        event_safe_step(self.big_omega, y[2])
     }
     /// As `floor::FloorPhase`'s scale, with φ for θ.
     fn scale(&self, y: &[f64; 4]) -> [f64; 4] {
-        let a = y[0].abs().max(y[2].abs() / self.omega);
-        let x = (y[1].abs().max(y[3].abs() / self.omega)).max(self.half_length * a);
-        [a, x, self.omega * a, self.omega * x]
+        let a = y[0].abs().max(y[2].abs() / self.big_omega);
+        let x = (y[1].abs().max(y[3].abs() / self.big_omega)).max(self.half_length * a);
+        [a, x, self.big_omega * a, self.big_omega * x]
     }
     fn taylor_series(&self, series: &mut super::integrators::taylor::Series<4>) -> bool {
         super::integrators::taylor::complement_floor_series_f64(self.g_over_l, series);

@@ -67,7 +67,7 @@ pub fn state_at_separation(ladder: &Ladder, theta: f64, rate: f64) -> [f64; 4] {
 #[derive(Clone, Copy, Debug)]
 pub struct FloorPhase {
     g_over_l: f64,
-    omega: f64,
+    big_omega: f64,
     half_length: f64,
 }
 
@@ -76,7 +76,7 @@ impl FloorPhase {
     pub fn new(ladder: &Ladder) -> Self {
         FloorPhase {
             g_over_l: ladder.gravity / ladder.half_length,
-            omega: ladder.big_omega2().sqrt(),
+            big_omega: ladder.big_omega2().sqrt(),
             half_length: ladder.half_length,
         }
     }
@@ -88,12 +88,12 @@ impl Ode<4> for FloorPhase {
         [y[2], y[3], acc, D::from(centre_acceleration_x())]
     }
     fn max_step(&self, y: &[f64; 4]) -> f64 {
-        event_safe_step(self.omega, y[2])
+        event_safe_step(self.big_omega, y[2])
     }
     fn scale(&self, y: &[f64; 4]) -> [f64; 4] {
-        let a = y[0].abs().max(y[2].abs() / self.omega);
-        let x = (y[1].abs().max(y[3].abs() / self.omega)).max(self.half_length * a);
-        [a, x, self.omega * a, self.omega * x]
+        let a = y[0].abs().max(y[2].abs() / self.big_omega);
+        let x = (y[1].abs().max(y[3].abs() / self.big_omega)).max(self.half_length * a);
+        [a, x, self.big_omega * a, self.big_omega * x]
     }
     fn taylor_series(&self, series: &mut super::integrators::taylor::Series<4>) -> bool {
         super::integrators::taylor::floor_series_f64(self.g_over_l, series);

@@ -43,12 +43,12 @@ pub fn linear_lead_in(big_omega2: f64, theta0: f64, rate0: f64) -> Option<(f64, 
 /// scaled by 2^600 like [`linear_lead_in`], so a subnormal start keeps its digits; `t` must
 /// not pass the hand-over (then θ ≤ [`LINEAR_AMPLITUDE`] and nothing overflows).
 pub fn linear_state_at(big_omega2: f64, theta0: f64, rate0: f64, t: f64) -> (f64, f64) {
-    let omega = big_omega2.sqrt();
+    let big_omega = big_omega2.sqrt();
     let scale = 2f64.powi(600);
-    let (p, q) = (theta0 * scale, rate0 * scale / omega);
+    let (p, q) = (theta0 * scale, rate0 * scale / big_omega);
     // e^{ωt} reaches 2A/a (4e314 for a subnormal a): applied in two halves, so that no
     // factor overflows while the product stays below the amplitude.
-    let half = (0.5 * omega * t).exp();
+    let half = (0.5 * big_omega * t).exp();
     let (a, b) = (0.5 * (p + q) * half * half, 0.5 * (p - q) / half / half);
-    ((a + b) / scale, omega * ((a - b) / scale))
+    ((a + b) / scale, big_omega * ((a - b) / scale))
 }

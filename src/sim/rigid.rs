@@ -70,7 +70,7 @@ pub fn separation_cosine(big_omega2: f64, theta0: f64, rate0: f64) -> f64 {
 pub struct WallPhase {
     /// Ω² = 3g/(4l).
     pub big_omega2: f64,
-    omega: f64,
+    big_omega: f64,
 }
 
 impl WallPhase {
@@ -79,15 +79,15 @@ impl WallPhase {
         let big_omega2 = ladder.big_omega2();
         WallPhase {
             big_omega2,
-            omega: big_omega2.sqrt(),
+            big_omega: big_omega2.sqrt(),
         }
     }
 }
 
 /// Longest step that keeps |Δθ| ≤ 0.625 rad when |θ̈| ≤ Ω²: h (|θ̇| + Ω) ≤ 1/2 gives
 /// |Δθ| ≤ h|θ̇| + h²Ω²/2 ≤ 1/2 + 1/8. Used by both phases (see `sim::event` for why).
-pub fn event_safe_step(omega: f64, rate: f64) -> f64 {
-    0.5 / (rate.abs() + omega)
+pub fn event_safe_step(big_omega: f64, rate: f64) -> f64 {
+    0.5 / (rate.abs() + big_omega)
 }
 
 /// The Taylor method's longest wall-phase step: h (|θ̇| + Ω) ≤ 3/2 gives a path of
@@ -97,8 +97,8 @@ pub fn event_safe_step(omega: f64, rate: f64) -> f64 {
 /// tolerance 1e-12 the Taylor method's own step (order 15) is longer than 0.5/(|θ̇| + Ω), and
 /// that bound, not the accuracy, set its number of steps. The other methods keep the
 /// narrower bound (their error control rarely reaches it; their tested behaviour is unchanged).
-pub fn taylor_event_safe_step(omega: f64, rate: f64) -> f64 {
-    1.5 / (rate.abs() + omega)
+pub fn taylor_event_safe_step(big_omega: f64, rate: f64) -> f64 {
+    1.5 / (rate.abs() + big_omega)
 }
 
 impl Ode<2> for WallPhase {
@@ -106,16 +106,16 @@ impl Ode<2> for WallPhase {
         [y[1], angular_acceleration(self.big_omega2, y[0])]
     }
     fn max_step(&self, y: &[f64; 2]) -> f64 {
-        event_safe_step(self.omega, y[1])
+        event_safe_step(self.big_omega, y[1])
     }
     fn taylor_max_step(&self, y: &[f64; 2]) -> f64 {
-        taylor_event_safe_step(self.omega, y[1])
+        taylor_event_safe_step(self.big_omega, y[1])
     }
     /// θ and θ̇/Ω are both angles: one relative scale for the pair, so that a start at θ = 0
     /// (or θ̇ = 0) is measured against the motion's size, not against an absolute tolerance.
     fn scale(&self, y: &[f64; 2]) -> [f64; 2] {
-        let s = y[0].abs().max(y[1].abs() / self.omega);
-        [s, self.omega * s]
+        let s = y[0].abs().max(y[1].abs() / self.big_omega);
+        [s, self.big_omega * s]
     }
     fn accel_uses_velocity(&self) -> bool {
         false

@@ -40,9 +40,9 @@ pub struct NearFlat {
 /// the start is not near flat (a > [`NEAR_FLAT_SIZE`]) or the wall force is not positive at the
 /// start (Ω² φ0 ≤ θ̇0²: the top leaves at once).
 pub fn near_flat(big_omega2: f64, phi0: f64, rate0: f64) -> Option<NearFlat> {
-    let omega = big_omega2.sqrt();
-    let ratio = rate0 / omega;
-    if !(phi0 > 0.0 && rate0 >= 0.0 && omega > 0.0 && omega.is_finite()) {
+    let big_omega = big_omega2.sqrt();
+    let ratio = rate0 / big_omega;
+    if !(phi0 > 0.0 && rate0 >= 0.0 && big_omega > 0.0 && big_omega.is_finite()) {
         return None;
     }
     // a = φ0 + (θ̇0/Ω)², compared without squaring a ratio that could underflow.
@@ -69,10 +69,10 @@ pub fn near_flat(big_omega2: f64, phi0: f64, rate0: f64) -> Option<NearFlat> {
     let s_f = 2.0 * phi0 / (w_f + w0);
     Some(NearFlat {
         separation_complement: phi_s,
-        separation_rate: omega * w_s,
-        separation_time: s_s / omega,
-        flat_rate: omega * w_f,
-        flat_time: s_f / omega,
+        separation_rate: big_omega * w_s,
+        separation_time: s_s / big_omega,
+        flat_rate: big_omega * w_f,
+        flat_time: s_f / big_omega,
     })
 }
 

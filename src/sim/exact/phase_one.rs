@@ -31,7 +31,7 @@ pub struct PhaseOne {
     theta0: f64,
     rate0: f64,
     big_omega2: f64,
-    omega: f64,
+    big_omega: f64,
     /// sin(θ₀/2), cos(θ₀/2).
     s0: f64,
     c0: f64,
@@ -83,19 +83,19 @@ impl PhaseOne {
         }
         if !(big_omega2.is_finite() && (1e-100..=1e100).contains(&big_omega2)) {
             return Err(format!(
-                "omega^2 = 3g/(4l) = {big_omega2} 1/s^2 is not in [1e-100, 1e100]"
+                "big_omega^2 = 3g/(4l) = {big_omega2} 1/s^2 is not in [1e-100, 1e100]"
             ));
         }
-        let omega = big_omega2.sqrt();
+        let big_omega = big_omega2.sqrt();
         let (s0, c0) = (0.5 * theta0).sin_cos();
-        let rho = 0.5 * rate0 / omega;
+        let rho = 0.5 * rate0 / big_omega;
         if theta0 == 0.0 && rate0 == 0.0 {
             let orbit = Orbit::Equilibrium;
             return Ok(PhaseOne {
                 theta0,
                 rate0,
                 big_omega2,
-                omega,
+                big_omega,
                 s0,
                 c0,
                 rho,
@@ -104,16 +104,16 @@ impl PhaseOne {
         }
         if rho > MAX_RATE_RATIO {
             return Err(format!(
-                "start rate theta0_dot/omega = {} exceeds {MAX_RATE_RATIO:e}; its square \
+                "start rate θ̇0/Ω = {} exceeds {MAX_RATE_RATIO:e}; its square \
                  would overflow",
-                rate0 / omega
+                rate0 / big_omega
             ));
         }
         if s0.max(rho) < MIN_OFFSET {
             return Err(format!(
-                "start (theta0 = {theta0}, theta0_dot/omega = {}) lies within {MIN_OFFSET:e} of \
+                "start (theta0 = {theta0}, θ̇0/Ω = {}) lies within {MIN_OFFSET:e} of \
                  the unstable equilibrium; f64 cannot resolve it",
-                rate0 / omega
+                rate0 / big_omega
             ));
         }
         // a = s0² − ρ² as a product: no cancellation beyond that of s0 − ρ itself.
@@ -138,12 +138,12 @@ impl PhaseOne {
                 let h = (-a).sqrt();
                 let u0 = e.sqrt() * s0 * carlson_rf(c0 * c0 * h * h, rho * rho, h * h);
                 let v0 = c0 * e.sqrt() * carlson_rf(e * s0 * s0, e, rho * rho);
-                (u0, v0, omega * e.sqrt())
+                (u0, v0, big_omega * e.sqrt())
             } else {
                 // Phase u = Ω (time since the turning point sin(θ/2) = k').
                 let u0 = rho * carlson_rf(kc * kc * e, s0 * s0 * e, kc * kc * c0 * c0);
                 let v0 = c0 * carlson_rf(s0 * s0 * e, e, rho * rho);
-                (u0, v0, omega)
+                (u0, v0, big_omega)
             };
             Orbit::Elliptic {
                 rotation,
@@ -159,7 +159,7 @@ impl PhaseOne {
             theta0,
             rate0,
             big_omega2,
-            omega,
+            big_omega,
             s0,
             c0,
             rho,
@@ -221,7 +221,7 @@ impl PhaseOne {
             c: cs,
             r: (d + self.rho * self.rho).sqrt(),
         };
-        let time = omega_time(self.start(), to, d) / self.omega;
+        let time = omega_time(self.start(), to, d) / self.big_omega;
         Some(Separation { angle, time, rate })
     }
 
@@ -239,7 +239,7 @@ impl PhaseOne {
             c,
             r: (d + self.rho * self.rho).sqrt(),
         };
-        omega_time(self.start(), to, d) / self.omega
+        omega_time(self.start(), to, d) / self.big_omega
     }
 
     /// θ(t), rad, on the both-contacts motion (valid for 0 ≤ t ≤ t_s; beyond it the formula
@@ -268,12 +268,12 @@ impl PhaseOne {
     /// (θ(t), θ̇(t)) for t an f64 or a dual number: derivatives with respect to t come along,
     /// which is how the tests check eq. (5) on this solution.
     pub fn theta_rate_dual<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> (D, D) {
-        let omega = self.omega;
+        let big_omega = self.big_omega;
         match &self.orbit {
             Orbit::Equilibrium => (t * 0.0, t * 0.0),
             Orbit::Separatrix { tan_quarter0 } => {
-                let theta = ((t * omega).exp() * *tan_quarter0).atan() * 4.0;
-                (theta, (theta * 0.5).sin() * (2.0 * omega))
+                let theta = ((t * big_omega).exp() * *tan_quarter0).atan() * 4.0;
+                (theta, (theta * 0.5).sin() * (2.0 * big_omega))
             }
             Orbit::Elliptic {
                 rotation,
@@ -295,11 +295,11 @@ impl PhaseOne {
                 if *rotation {
                     // sin(θ/2) = k' sd(u), cos(θ/2) = cd(u), θ̇ = 2Ω (k'/k)/dn(u).
                     let theta = (kc * j.sn).atan2(j.cn) * 2.0;
-                    (theta, (kc / *k) / j.dn * (2.0 * omega))
+                    (theta, (kc / *k) / j.dn * (2.0 * big_omega))
                 } else {
                     // sin(θ/2) = k'/dn(u), cos(θ/2) = k cn(u)/dn(u), θ̇ = 2Ω k k' sn(u)/dn(u).
                     let theta = kc.atan2(j.cn * *k) * 2.0;
-                    (theta, kc * j.sn / j.dn * (2.0 * omega * k))
+                    (theta, kc * j.sn / j.dn * (2.0 * big_omega * k))
                 }
             }
         }
