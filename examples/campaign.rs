@@ -5,6 +5,9 @@
 //! end asked for: the command exits 1) and results outside their stated tolerance
 //! (`sliding_ladder::report::campaign_judge`). Refusals (exit 2, a plan-time error naming the
 //! field) are requests the tool says up front it cannot meet: counted apart, by field.
+//! Each scene runs under a watchdog (`campaign_judge::Watchdog`): one still running after the
+//! budget is counted over budget and named on stderr at once, and the campaign goes on (a hang
+//! no step count sees used to stall a whole run: seed 1, scenes 800,000-899,999).
 //!
 //! Run: `cargo run --release --example campaign -- --scenes 10000 --seed 1` (exit 1 if any of
 //! the five counts is nonzero). `--only I` runs scene I alone and prints it; `--out DIR` writes
@@ -15,7 +18,7 @@
 use clap::Parser;
 use sliding_ladder::cli::simulate::{files, to_json};
 use sliding_ladder::report::campaign::{draw, selected};
-use sliding_ladder::report::campaign_judge::{non_finite, out_of_tolerance, Problem};
+use sliding_ladder::report::campaign_judge::{non_finite, out_of_tolerance, Problem, Watchdog};
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::outcome::unreached_end;
 use sliding_ladder::sim::output::Output;
@@ -28,7 +31,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Mutex;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 #[derive(Parser)]
 struct Args {
@@ -38,7 +41,8 @@ struct Args {
     /// Seed of the draw.
     #[arg(long, default_value_t = 1)]
     seed: u64,
-    /// Time budget of one scene, seconds of wall time.
+    /// Time budget of one scene, seconds of wall time; the watchdog gives up on a scene still
+    /// running after it (counted over budget, its index on stderr).
     #[arg(long, default_value_t = 10.0)]
     budget: f64,
     /// Worker threads (default: the machine's cores).
@@ -76,6 +80,9 @@ enum Verdict {
     Panic(String),
     NonFinite(String),
     OverBudget(f64),
+    /// Still running when the watchdog gave up on it after the budget (seconds): a hang or a
+    /// run far too slow; its thread is left to itself and the campaign goes on.
+    Hung(f64),
     /// More than [`OVERRUN`] times the work cap in a phase: the plan's estimate was wrong.
     OverWork(u64),
     Failed(String),
@@ -96,7 +103,7 @@ impl Verdict {
         match self {
             Verdict::Panic(_) => Some(0),
             Verdict::NonFinite(_) => Some(1),
-            Verdict::OverBudget(_) | Verdict::OverWork(_) => Some(2),
+            Verdict::OverBudget(_) | Verdict::Hung(_) | Verdict::OverWork(_) => Some(2),
             Verdict::Failed(_) => Some(3),
             Verdict::OutOfTolerance(_) => Some(4),
             _ => None,
@@ -164,13 +171,10 @@ fn run_scene(text: &str, cap: f64, only: Option<&str>) -> Verdict {
     }
 }
 
-/// Run scene `text` with the panic caught and the wall time measured against `budget`.
-fn judge(text: &str, a: &Args) -> (Verdict, f64) {
+/// Run scene `text` with the panic caught and its wall time measured.
+fn judged(text: &str, cap: f64, only: Option<&str>) -> (Verdict, f64) {
     let t = Instant::now();
-    let v = catch_unwind(AssertUnwindSafe(|| {
-        run_scene(text, a.work_cap, a.contact.as_deref())
-    }))
-    .unwrap_or_else(|e| {
+    let v = catch_unwind(AssertUnwindSafe(|| run_scene(text, cap, only))).unwrap_or_else(|e| {
         let msg = e
             .downcast_ref::<&str>()
             .map(|s| s.to_string())
@@ -178,10 +182,33 @@ fn judge(text: &str, a: &Args) -> (Verdict, f64) {
             .unwrap_or_default();
         Verdict::Panic(msg)
     });
-    let secs = t.elapsed().as_secs_f64();
-    match v {
-        Verdict::Fine if secs > a.budget => (Verdict::OverBudget(secs), secs),
-        v => (v, secs),
+    (v, t.elapsed().as_secs_f64())
+}
+
+/// A worker's watchdog (`campaign_judge::Watchdog`): scenes run on a thread of their own.
+fn watchdog(a: &Args) -> Watchdog<String, (Verdict, f64)> {
+    let (cap, only) = (a.work_cap, a.contact.clone());
+    Watchdog::new(move |text: String| judged(&text, cap, only.as_deref()))
+}
+
+/// Scene `i` (`text`) judged under the watchdog: a scene still running after the budget is
+/// over budget at once (named on stderr as it happens) and the campaign goes on without it.
+fn judge(
+    dog: &mut Watchdog<String, (Verdict, f64)>,
+    i: u64,
+    text: &str,
+    a: &Args,
+) -> (Verdict, f64) {
+    match dog.run(text.to_string(), Duration::from_secs_f64(a.budget)) {
+        Some((Verdict::Fine, secs)) if secs > a.budget => (Verdict::OverBudget(secs), secs),
+        Some(v) => v,
+        None => {
+            eprintln!(
+                "campaign: scene {i} of seed {} still running after {} s: counted over budget, left on its thread (reproduce: --only {i})",
+                a.seed, a.budget
+            );
+            (Verdict::Hung(a.budget), a.budget)
+        }
     }
 }
 
@@ -216,7 +243,7 @@ fn main() -> ExitCode {
     std::panic::set_hook(Box::new(|_| {}));
     if let Some(i) = a.only {
         let text = draw(a.seed, i);
-        let (v, secs) = judge(&text, &a);
+        let (v, secs) = judge(&mut watchdog(&a), i, &text, &a);
         println!(
             "{text}\n# scene {i} of seed {}: {v:?} ({secs:.3} s)",
             a.seed
@@ -233,13 +260,14 @@ fn main() -> ExitCode {
         for _ in 0..jobs {
             s.spawn(|| {
                 let mut t = Tally::default();
+                let mut dog = watchdog(&a);
                 loop {
                     let i = a.first + next.fetch_add(1, Ordering::Relaxed);
                     if i >= a.first + a.scenes {
                         break;
                     }
                     let text = draw(a.seed, i);
-                    let (v, secs) = judge(&text, &a);
+                    let (v, secs) = judge(&mut dog, i, &text, &a);
                     t.seconds += secs;
                     let c = t.by_method.entry(class(&text)).or_default();
                     (c.0, c.1) = (c.0 + secs, c.1 + 1);

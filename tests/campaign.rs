@@ -231,3 +231,38 @@ fn the_contact_filter_leaves_out_exactly_one_model() {
         assert!(selected(&s.contact, Some("penalty")), "scene {i}");
     }
 }
+
+/// The campaign's watchdog gives up on a job still running after its limit (here one that
+/// would loop for ever, as `minimum_on` did at t ≈ 2e15) and runs the next job on a fresh
+/// thread; a job within its limit comes back with its result. A watchdog that waited for the
+/// hung job would not answer within the test's own 20 s (checked from another thread).
+#[test]
+fn the_watchdog_names_a_hang_and_goes_on() {
+    use sliding_ladder::report::campaign_judge::Watchdog;
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use std::sync::{mpsc, Arc};
+    use std::time::{Duration, Instant};
+    let release = Arc::new(AtomicBool::new(false));
+    let held = release.clone();
+    let (tx, rx) = mpsc::channel();
+    std::thread::spawn(move || {
+        let mut dog = Watchdog::new(move |n: u64| {
+            while n == 0 && !held.load(Ordering::Relaxed) {
+                std::thread::sleep(Duration::from_millis(1));
+            }
+            n * 2
+        });
+        let t = Instant::now();
+        let hung = dog.run(0, Duration::from_millis(200));
+        let waited = t.elapsed();
+        let next = dog.run(21, Duration::from_secs(10));
+        let _ = tx.send((hung, waited, next));
+    });
+    let (hung, waited, next) = rx
+        .recv_timeout(Duration::from_secs(20))
+        .expect("the watchdog answered");
+    release.store(true, Ordering::Relaxed);
+    assert_eq!(hung, None);
+    assert!(waited >= Duration::from_millis(200), "{waited:?}");
+    assert_eq!(next, Some(42));
+}

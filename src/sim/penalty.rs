@@ -58,7 +58,7 @@ use super::event::{Direction, Event};
 use super::integrators::any::AnyStepper;
 use super::integrators::{order, Control, Ode, Stats, Stepper};
 use super::lead_in::linear_lead_in;
-use super::penalty_confirm::confirm_separation;
+use super::penalty_confirm::{confirm_separation, retry_control};
 use super::penalty_start::slow_forces;
 pub use super::penalty_start::OMEGA2;
 use super::rigid::{event_safe_step, separation_factor, Ladder};
@@ -363,6 +363,37 @@ pub fn separation(
             stats: Stats::default(),
         };
     }
+    let first = attempt(contact, law, (theta0, rate0), method, control, max_steps);
+    // Not believed (a zero outside the bound, or the foot lifting, which the rigid ladder's
+    // floor force ≥ m g/4 rules out for κ ≥ 5): tried once more at τ/10 (the campaign's F11,
+    // F12; `penalty_confirm::retry_control`), the work of both runs counted.
+    let (Some(retry), true) = (retry_control(control), first.1) else {
+        return first.0;
+    };
+    let mut again = attempt(contact, law, (theta0, rate0), method, retry, max_steps).0;
+    let (a, b) = (first.0.stats, again.stats);
+    again.stats = Stats {
+        rhs_evals: a.rhs_evals + b.rhs_evals,
+        jacobians: a.jacobians + b.jacobians,
+        steps: a.steps + b.steps,
+        rejected: a.rejected + b.rejected,
+    };
+    if let Err(RunError::Start(m)) = &mut again.result {
+        m.push_str(" (tried at the scene's tolerance and again at a tenth of it)");
+    }
+    again
+}
+
+/// One run of [`separation`] at `control` after the early answers, and whether its end is
+/// not believed (a zero outside the stated bound, or a lift-off).
+fn attempt(
+    contact: Contact,
+    law: Law,
+    (theta0, rate0): (f64, f64),
+    method: &str,
+    control: Control,
+    max_steps: u64,
+) -> (PenaltyRun, bool) {
     // A tiny start first grows along the linearised motion (as the rigid phases do,
     // `extreme::linear_lead_in`): from a subnormal θ0 the forces ~θ m g have a few bits and no
     // tolerance measures them (the campaign's F4: radau5 from 2.5e-315 left at θ = 0.69). The
@@ -372,7 +403,10 @@ pub fn separation(
     let model = PenaltyModel::new(contact, law);
     let y0 = preloaded_start(&contact, theta_i, rate_i);
     let Some(mut stepper) = AnyStepper::new(method, control, 0.0, y0) else {
-        return fail(format!("method {method} does not take {control:?}"));
+        let m = format!("method {method} does not take {control:?}");
+        let stats = Stats::default();
+        let result = Err(RunError::Start(m));
+        return (PenaltyRun { result, stats }, false);
     };
     let mut run = separate_with(&model, &mut stepper, max_steps);
     // A zero of the force is the separation only within the stated bound of the rigid one.
@@ -380,12 +414,14 @@ pub fn separation(
         Control::Tolerance(t) => t,
         Control::Fixed(h) => h.powi(order(method).map_or(2, |p| p as i32 + 1)),
     };
+    let mut unbelieved = matches!(run.result, Err(RunError::LiftOff { .. }));
     if let Ok(s) = &mut run.result {
         s.time += lead;
         let start = (theta0, rate0);
         if let Err(m) = confirm_separation(contact.kappa, start, s.angle, run.stats.steps, tau) {
             run.result = Err(RunError::Start(m));
+            unbelieved = true;
         }
     }
-    run
+    (run, unbelieved)
 }
