@@ -70,6 +70,8 @@ pub const MIN_ORDER: usize = 2;
 /// (`benches/integrators.rs`' scenes, orders 16 to 26 given by hand) a step costs about
 /// 150 ns + 0.4 p² ns, so C ≈ 350; 340 puts the order at 1e-11 on 22, the fastest of the
 /// measured orders whose separation meets the bench's 1e-12 (21 is 4 % faster but misses it).
+/// Measured with the last two orders' step; with the six orders' (finding F13) θ0 = 0.1 at
+/// 1e-11 misses 1e-12 narrowly (1.05e-12), so the bench takes 1e-12 (order 23) there.
 pub const STEP_COST: f64 = 340.0;
 
 /// The order for relative tolerance `tol`: the least work per unit time with the fixed cost of a
