@@ -3,8 +3,10 @@
 //! as `ladder verify` runs them (two worker threads), for the default configuration (1000 float
 //! states, 3 exact points per check) and the target of issue 10 (10,000 float states, 100 exact
 //! points; goal ≤ 10 s). Run: `cargo bench --bench verify_all` (about 10 runs of each; only the
-//! target: `cargo bench --bench verify_all -- target`). The machine is shared: quote the median
-//! and the load (`uptime`) it was measured under.
+//! target: `cargo bench --bench verify_all -- target`). `proofs_only` is every symbolic proof
+//! (each check of the 95 displays and each printed form, one thread) without the sampled checks:
+//! its median divided by 95 is the time per proof. The machine is shared: quote the median and
+//! the load (`uptime`) it was measured under.
 use criterion::{criterion_group, criterion_main, Criterion};
 use sliding_ladder::registry::check::Config;
 use sliding_ladder::verify;
@@ -42,6 +44,15 @@ fn bench(c: &mut Criterion) {
     for (label, cfg) in [("default_1000_3", default), ("target_10000_100", target)] {
         g.bench_function(label, |b| b.iter(|| verify_everything(black_box(&cfg))));
     }
+    let mut eqs = sliding_ladder::registry::equations();
+    eqs.extend(sliding_ladder::registry::extensions());
+    g.bench_function("proofs_only", |b| {
+        b.iter(|| {
+            eqs.iter()
+                .filter(|e| verify::proof::prove_equation(black_box(e)).0.proved)
+                .count()
+        })
+    });
     g.finish();
 }
 

@@ -23,6 +23,7 @@
 //! `Float`-like traits), and exact rationals, error bounds and degrees are not floats.
 
 mod bound;
+mod coeff;
 mod degree;
 mod dimension;
 mod jet;
@@ -34,6 +35,7 @@ mod sym_print;
 mod symbolic;
 
 pub use bound::{Bound, UNIT_ROUNDOFF};
+pub use coeff::Coeff;
 pub use degree::Degree;
 pub use dimension::{Clash, Dim, Dimension, Exponent, Inconsistency};
 pub use jet::Jet;

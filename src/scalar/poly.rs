@@ -17,10 +17,10 @@
 //! crate both keep their polynomials inside a ring object that every operation must be given
 //! (`ring.add(a, b)`), which does not fit the project's [`Scalar`](super::Scalar) trait, whose
 //! values carry their own `+ − × ÷` so that one generic function serves every number type; and
-//! the only ideal needed here has a one-line Gröbner basis. Coefficients are num-rational's
-//! `BigRational`, as in the exact checks.
+//! the only ideal needed here has a one-line Gröbner basis. Coefficients are [`Coeff`]: machine
+//! words while they fit, `BigRational` beyond (see [`super::coeff`]).
 
-use super::Rational;
+use super::Coeff;
 use num_traits::{One, Zero};
 use std::collections::BTreeMap;
 use std::sync::Mutex;
@@ -120,7 +120,7 @@ pub fn with_exponent(m: &Mono, v: Var, e: u32) -> Mono {
 #[derive(Clone, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Poly {
     /// Monomial → nonzero coefficient.
-    pub terms: BTreeMap<Mono, Rational>,
+    pub terms: BTreeMap<Mono, Coeff>,
 }
 
 impl Poly {
@@ -129,7 +129,7 @@ impl Poly {
         Poly::default()
     }
     /// A constant.
-    pub fn constant(q: Rational) -> Self {
+    pub fn constant(q: Coeff) -> Self {
         let mut p = Poly::zero();
         p.add_term(Vec::new(), q);
         p
@@ -137,7 +137,7 @@ impl Poly {
     /// A single variable.
     pub fn var(v: Var) -> Self {
         let mut p = Poly::zero();
-        p.add_term(vec![(v, 1)], Rational::one());
+        p.add_term(vec![(v, 1)], Coeff::one());
         p
     }
     /// True for the zero polynomial.
@@ -145,15 +145,15 @@ impl Poly {
         self.terms.is_empty()
     }
     /// The value if constant.
-    pub fn as_constant(&self) -> Option<Rational> {
+    pub fn as_constant(&self) -> Option<Coeff> {
         match self.terms.len() {
-            0 => Some(Rational::zero()),
+            0 => Some(Coeff::zero()),
             1 => self.terms.get(&Vec::new()).cloned(),
             _ => None,
         }
     }
     /// Add `q · m` (m must already be reduced).
-    fn add_term(&mut self, m: Mono, q: Rational) {
+    fn add_term(&mut self, m: Mono, q: Coeff) {
         if q.is_zero() {
             return;
         }
@@ -170,7 +170,7 @@ impl Poly {
         }
     }
     /// Add `q · m`, reducing c² → 1 − s² first.
-    pub fn add_reduced_term(&mut self, m: Mono, q: Rational) {
+    pub fn add_reduced_term(&mut self, m: Mono, q: Coeff) {
         let ec = exponent(&m, C);
         if ec < 2 {
             return self.add_term(m, q);
@@ -179,16 +179,15 @@ impl Poly {
         let (k, r) = (ec / 2, ec % 2);
         let base = with_exponent(&m, C, r);
         let es = exponent(&base, S);
-        let mut binom = Rational::one();
+        let mut binom = Coeff::one();
         for j in 0..=k {
-            let sign = if j % 2 == 0 { q.clone() } else { -q.clone() };
-            self.add_term(with_exponent(&base, S, es + 2 * j), sign * binom.clone());
-            binom = binom * Rational::from_integer((k - j).into())
-                / Rational::from_integer((j + 1).into());
+            let sign = if j % 2 == 0 { q.clone() } else { -&q };
+            self.add_term(with_exponent(&base, S, es + 2 * j), &sign * &binom);
+            binom = binom * Coeff::int(i64::from(k - j)) / Coeff::int(i64::from(j + 1));
         }
     }
     /// `self · q`.
-    pub fn scale(&self, q: &Rational) -> Poly {
+    pub fn scale(&self, q: &Coeff) -> Poly {
         if q.is_zero() {
             return Poly::zero();
         }
@@ -197,7 +196,7 @@ impl Poly {
         }
     }
     /// `self · q · m` (m a monomial free of c, or any: reduced).
-    pub fn mul_term(&self, m: &Mono, q: &Rational) -> Poly {
+    pub fn mul_term(&self, m: &Mono, q: &Coeff) -> Poly {
         let mut out = Poly::zero();
         for (mm, c) in &self.terms {
             out.add_reduced_term(mono_mul(mm, m), c * q);
@@ -246,7 +245,7 @@ impl Poly {
     }
     /// `self^k`.
     pub fn pow(&self, k: u32) -> Poly {
-        let mut out = Poly::constant(Rational::one());
+        let mut out = Poly::constant(Coeff::one());
         for _ in 0..k {
             out = &out * self;
         }
@@ -312,7 +311,7 @@ mod tests {
     use super::*;
 
     fn int(n: i64) -> Poly {
-        Poly::constant(Rational::from_integer(n.into()))
+        Poly::constant(Coeff::int(n))
     }
 
     #[test]

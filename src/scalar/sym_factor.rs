@@ -18,7 +18,7 @@
 
 use super::poly::{exponent, mono_mul, Mono, Poly, Var, C, S};
 use super::sym_print::{factor_ordered, factor_str, mono_str};
-use super::{Rational, Sym};
+use super::{Coeff, Rational, Sym};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
@@ -38,7 +38,7 @@ pub struct Factored {
 impl Factored {
     /// The product, in normal form.
     pub fn expand(&self) -> Poly {
-        let mut p = Poly::constant(self.coef.clone()).mul_term(&self.mono, &Rational::one());
+        let mut p = Poly::constant(self.coef.clone().into()).mul_term(&self.mono, &Coeff::one());
         for f in &self.factors {
             p = &p * f;
         }
@@ -126,7 +126,7 @@ pub fn factor(p: &Poly) -> Option<Factored> {
             out.factors.push(f);
         } else if let Some((m, q)) = f.terms.iter().next() {
             out.mono = mono_mul(&out.mono, m);
-            out.coef *= q.clone();
+            out.coef *= q.to_big();
         }
     }
     // Factors in s and c last (as the note writes m l² θ̇ (cos²θ − sin²θ)).
@@ -147,8 +147,8 @@ pub fn factor(p: &Poly) -> Option<Factored> {
 fn content(p: &Poly) -> (Rational, Poly) {
     let (mut g, mut l) = (BigInt::zero(), BigInt::one());
     for q in p.terms.values() {
-        g = g.gcd(q.numer());
-        l = l.lcm(q.denom());
+        g = g.gcd(&q.numer());
+        l = l.lcm(&q.denom());
     }
     if g.is_zero() {
         return (Rational::one(), p.clone());
@@ -157,7 +157,7 @@ fn content(p: &Poly) -> (Rational, Poly) {
     if factor_ordered(p).first().is_some_and(|t| t.1.is_negative()) {
         c = -c;
     }
-    (c.clone(), p.scale(&(Rational::one() / c)))
+    (c.clone(), p.scale(&Coeff::from(Rational::one() / c)))
 }
 
 /// The variables of `p` in units that may be split apart (s and c together).
@@ -212,7 +212,7 @@ fn rank_one(p: &Poly, group: &[Var]) -> Option<(Poly, Poly)> {
             .filter(|(v, _)| group.contains(v) == inside)
             .collect()
     };
-    let mut matrix: BTreeMap<Mono, BTreeMap<Mono, Rational>> = BTreeMap::new();
+    let mut matrix: BTreeMap<Mono, BTreeMap<Mono, Coeff>> = BTreeMap::new();
     for (m, q) in &p.terms {
         matrix
             .entry(part(m, true))
@@ -221,7 +221,7 @@ fn rank_one(p: &Poly, group: &[Var]) -> Option<(Poly, Poly)> {
     }
     let (_, row0) = matrix.iter().next()?;
     let (y0, c0) = row0.iter().next()?;
-    let zero = Rational::zero();
+    let zero = Coeff::zero();
     let cols: Vec<&Mono> = {
         let mut c: Vec<&Mono> = matrix.values().flat_map(|r| r.keys()).collect();
         c.sort();
@@ -258,11 +258,11 @@ fn homogenised(p: &Poly) -> Poly {
     if top == 0 || degrees.iter().any(|d| (top - d) % 2 != 0) {
         return p.clone();
     }
-    let mut out: BTreeMap<Mono, Rational> = BTreeMap::new();
+    let mut out: BTreeMap<Mono, Coeff> = BTreeMap::new();
     for (m, q) in &p.terms {
         // (s² + c²)^k, multiplied out without the rule c² → 1 − s².
         let k = (top - deg(m)) / 2;
-        let mut binom = Rational::one();
+        let mut binom = Coeff::one();
         for j in 0..=k {
             let mono = mono_mul(
                 m,
@@ -271,10 +271,9 @@ fn homogenised(p: &Poly) -> Poly {
                     .filter(|t| t.1 > 0)
                     .collect(),
             );
-            let e = out.entry(mono).or_insert_with(Rational::zero);
+            let e = out.entry(mono).or_insert_with(Coeff::zero);
             *e += q * &binom;
-            binom = binom * Rational::from_integer((k - j).into())
-                / Rational::from_integer((j + 1).into());
+            binom = binom * Coeff::int(i64::from(k - j)) / Coeff::int(i64::from(j + 1));
         }
     }
     out.retain(|_, q| !q.is_zero());

@@ -5,8 +5,8 @@
 //! printed in its factored form (monomial times factors).
 
 use super::poly::{var_names, Mono, Poly};
-use super::{Rational, Sym};
-use num_traits::{One, Signed};
+use super::{Coeff, Sym};
+use num_traits::One;
 
 pub(super) fn mono_str(m: &Mono, latex: bool) -> String {
     m.iter()
@@ -23,7 +23,7 @@ pub(super) fn mono_str(m: &Mono, latex: bool) -> String {
         .join(" ")
 }
 
-fn coef_str(q: &Rational, latex: bool) -> String {
+fn coef_str(q: &Coeff, latex: bool) -> String {
     if q.is_integer() {
         q.numer().to_string()
     } else if latex {
@@ -33,7 +33,7 @@ fn coef_str(q: &Rational, latex: bool) -> String {
     }
 }
 
-pub(super) fn ordered(p: &Poly) -> Vec<(&Mono, &Rational)> {
+pub(super) fn ordered(p: &Poly) -> Vec<(&Mono, &Coeff)> {
     let mut terms: Vec<_> = p.terms.iter().collect();
     let deg = |m: &Mono| m.iter().map(|x| x.1).sum::<u32>();
     terms.sort_by(|a, b| deg(b.0).cmp(&deg(a.0)).then_with(|| a.0.cmp(b.0)));
@@ -47,7 +47,7 @@ pub fn poly_str(p: &Poly, latex: bool) -> String {
 
 /// The terms of a factor in print order: by degree, c before s (c² − s², as the note writes
 /// cos²θ − sin²θ), then as [`ordered`].
-pub(super) fn factor_ordered(p: &Poly) -> Vec<(&Mono, &Rational)> {
+pub(super) fn factor_ordered(p: &Poly) -> Vec<(&Mono, &Coeff)> {
     let mut terms = ordered(p);
     let deg = |m: &Mono| m.iter().map(|x| x.1).sum::<u32>();
     let c = |m: &Mono| super::poly::exponent(m, super::poly::C);
@@ -63,7 +63,7 @@ pub(super) fn factor_str(p: &Poly, latex: bool) -> String {
     terms_str(terms, latex)
 }
 
-fn terms_str(terms: Vec<(&Mono, &Rational)>, latex: bool) -> String {
+fn terms_str(terms: Vec<(&Mono, &Coeff)>, latex: bool) -> String {
     if terms.is_empty() {
         return "0".into();
     }

@@ -18,8 +18,7 @@
 //! symbolically, exactly as it differentiates numbers.
 
 use super::poly::{exponent, mono_mul, var, with_exponent, Mono, Poly, Var};
-use super::{Jet, Rational, Scalar};
-use num_bigint::BigInt;
+use super::{Coeff, Jet, Scalar};
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
 use std::collections::BTreeMap;
@@ -40,7 +39,7 @@ impl Den {
     }
     /// The denominator as one polynomial.
     pub fn expand(&self) -> Poly {
-        let mut p = Poly::constant(Rational::one()).mul_term(&self.mono, &Rational::one());
+        let mut p = Poly::constant(Coeff::one()).mul_term(&self.mono, &Coeff::one());
         for (f, k) in &self.factors {
             p = &p * &f.pow(*k);
         }
@@ -70,7 +69,7 @@ impl Den {
                 (e2 > 0).then_some((v, e2))
             })
             .collect();
-        let mut p = Poly::constant(Rational::one()).mul_term(&mono, &Rational::one());
+        let mut p = Poly::constant(Coeff::one()).mul_term(&mono, &Coeff::one());
         for (f, &k) in &self.factors {
             let k2 = k - part.factors.get(f).copied().unwrap_or(0);
             if k2 > 0 {
@@ -188,7 +187,7 @@ impl Sym {
                 let rest = with_exponent(m, v, 0);
                 let slot = if e % 2 == 0 { &mut even } else { &mut odd };
                 let entry = slot.entry(e / 2).or_default();
-                *entry = &*entry + &Poly::constant(c.clone()).mul_term(&rest, &Rational::one());
+                *entry = &*entry + &Poly::constant(c.clone()).mul_term(&rest, &Coeff::one());
             }
             let fold = |parts: BTreeMap<u32, Poly>| {
                 parts.into_iter().fold(Sym::int(0), |acc, (k, p)| {
@@ -233,7 +232,7 @@ fn lex(a: &Mono, b: &Mono) -> Ordering {
     }
 }
 
-fn leading(p: &Poly) -> Option<(&Mono, &Rational)> {
+fn leading(p: &Poly) -> Option<(&Mono, &Coeff)> {
     p.terms.iter().max_by(|a, b| lex(a.0, b.0))
 }
 
@@ -263,7 +262,7 @@ fn exact_div(p: &Poly, f: &Poly) -> Option<Poly> {
         // Subtract without the circle rewriting: exact division in the plain polynomial ring.
         for (m, c) in &f.terms {
             let mm = mono_mul(m, &qm);
-            let v = rem.terms.entry(mm.clone()).or_insert_with(Rational::zero);
+            let v = rem.terms.entry(mm.clone()).or_insert_with(Coeff::zero);
             *v -= c * &qc;
             if v.is_zero() {
                 rem.terms.remove(&mm);
@@ -276,16 +275,11 @@ fn exact_div(p: &Poly, f: &Poly) -> Option<Poly> {
 
 /// Split a nonzero polynomial into (coefficient, monomial content, factor with first coefficient
 /// 1) with `p = coefficient · content · factor`.
-fn split_factor(p: &Poly) -> (Rational, Mono, Poly) {
+fn split_factor(p: &Poly) -> (Coeff, Mono, Poly) {
     let content = p.mono_content();
     let f = p.div_mono(&content);
-    let lc = f
-        .terms
-        .values()
-        .next()
-        .cloned()
-        .unwrap_or_else(Rational::one);
-    let f = f.scale(&(Rational::one() / lc.clone()));
+    let lc = f.terms.values().next().cloned().unwrap_or_else(Coeff::one);
+    let f = f.scale(&(Coeff::one() / lc.clone()));
     (lc, content, f)
 }
 
@@ -344,7 +338,7 @@ impl Div for Sym {
     fn div(self, o: Sym) -> Sym {
         assert!(!o.num.is_zero(), "symbolic division by zero");
         let (lc, content, f) = split_factor(&o.num);
-        let num = (&self.num * &o.den.expand()).scale(&(Rational::one() / lc));
+        let num = (&self.num * &o.den.expand()).scale(&(Coeff::one() / lc));
         let mut factors = BTreeMap::new();
         if f.as_constant().is_none() {
             factors.insert(f, 1);
@@ -360,13 +354,10 @@ impl Div for Sym {
 impl Scalar for Sym {
     type Dual = Jet<Sym>;
     fn int(n: i64) -> Self {
-        Sym::poly(Poly::constant(Rational::from_integer(BigInt::from(n))))
+        Sym::poly(Poly::constant(Coeff::int(n)))
     }
     fn ratio(n: i64, d: i64) -> Self {
-        Sym::poly(Poly::constant(Rational::new(
-            BigInt::from(n),
-            BigInt::from(d),
-        )))
+        Sym::poly(Poly::constant(Coeff::ratio(n, d)))
     }
     fn lift(re: Self, eps: Self) -> Jet<Sym> {
         Jet::new(re, eps)
@@ -376,7 +367,7 @@ impl Scalar for Sym {
     }
     fn to_f64(&self) -> f64 {
         match (self.den.is_one(), self.num.as_constant()) {
-            (true, Some(q)) => num_traits::ToPrimitive::to_f64(&q).unwrap_or(f64::NAN),
+            (true, Some(q)) => q.to_f64(),
             _ => f64::NAN,
         }
     }
