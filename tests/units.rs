@@ -237,3 +237,23 @@ fn an_errata_witness_that_disagrees_does_not_hold() {
     bad.corrected = Units::Inconsistent;
     assert!(!bad.holds());
 }
+
+/// Footnote 4's cos θ0 is computed from the state (energy from rest at θ0), not declared a pure
+/// number: the right Ω² = 3g/4l passes, a planted Ω² without the 1/l (dimension L T⁻²) fails both
+/// the sum cos θ + θ̇²/(2Ω²) and the footnote's F_w.
+#[test]
+fn footnote_4_fails_with_a_planted_wrong_omega_squared() {
+    use sliding_ladder::verify::units::footnote_4;
+    let (l, s) = dimensioned_ladder(LadderSample::Kinematic);
+    let right = footnote_4(&l, &s, l.capital_omega_squared());
+    assert_eq!(right.verdict(), (Units::Consistent, None));
+    let wrong = footnote_4(&l, &s, Dim::ratio(3, 4) * l.g.clone());
+    let (units, detail) = wrong.verdict();
+    assert_eq!(units, Units::Inconsistent);
+    let detail = detail.unwrap();
+    assert!(
+        detail.contains("L T⁻²") || detail.contains("L⁻¹"),
+        "{detail}"
+    );
+    assert!(wrong.problems.len() >= 2, "{:?}", wrong.problems);
+}

@@ -3,9 +3,11 @@
 //! agrees with an independent method.
 
 use sliding_ladder::report::work_precision::{
-    default_scenes, flat_reference, measure, scene_at, Timing,
+    default_scenes, flat_reference, measure, scene_at, Run, Timing,
 };
-use sliding_ladder::report::work_precision_fit::{dominates, observed_order, Point};
+use sliding_ladder::report::work_precision_fit::{
+    dominates, observed_order, rounding_floor, Point, ASYMPTOTIC, MIN_STEPS,
+};
 use sliding_ladder::report::work_precision_report::report;
 use sliding_ladder::sim::event::{Direction, Event};
 use sliding_ladder::sim::exact::PhaseOne;
@@ -24,30 +26,39 @@ const ONCE: Timing = Timing {
     max: 1,
 };
 
-/// The criterion, held on the upright start and on θ0 = 0.1 from rest. Measured with
-/// the fitting rule of `work_precision_fit` (ties at the step limit out, floor from the sweep's
-/// own rounding level): upright 8.12 ± 0.61 over rhs 413..1059, θ0 = 0.1 8.29 ± 1.11 over
-/// 113..281; θ0 = 0.3 comes out 8.99 ± 1.27 over 65..185 and θ0 = 1 12.74 ± 4.25 over 64..124
-/// (five runs of 5 to 10 steps each: printed, not held to 8 ± 1); θ0 = 1.5 has fewer than three
-/// runs in range (printed as None). Every fitted slope is held to be consistent with 8 within
-/// twice its standard error (or 1), so a wrong slope with a small standard error is caught.
+/// The criterion on its scenes, with the fitting rule of `work_precision_fit` (runs of
+/// at least 10 steps above the sweep's rounding floor, fitted against steps). Where that range
+/// holds three runs, dop853 comes out within 1 of 8: upright with a push, θ0 = 0.1 and 0.3 from
+/// rest. From θ0 = 1 and 1.5 it reaches the rounding floor in fewer than 10 steps, so no order
+/// is reported (held: every run above the floor is that short). The full fall's error is the
+/// wall phase's (θ0 = 0.3) over the steps of both phases: printed, and held consistent with 8
+/// within max(1, 2σ) (a wrong slope with a small standard error is caught).
 #[test]
 fn dop853_order_is_within_one_of_eight_on_the_fitted_range() {
-    for sc in default_scenes().iter().filter(|s| s.end == End::Separation) {
-        let runs = measure(sc, &["dop853"], ONCE, |_| {}).unwrap();
+    for sc in default_scenes() {
+        let runs = measure(&sc, &["dop853"], ONCE, |_| {}).unwrap();
         let fit = observed_order(&runs, "dop853");
         println!("{}: {fit:?}", sc.file);
-        if let Some(f) = &fit {
+        if sc.end == End::Flat {
+            let f = fit.expect("the full fall has a fitted range");
             assert!(
                 (f.order - 8.0).abs() <= (2.0 * f.std_error).max(1.0),
                 "{}: {f:?}",
                 sc.file
             );
-        }
-        if sc.theta0 == 0.0 || sc.theta0 == 0.1 {
-            let fit = fit.unwrap();
-            assert!((fit.order - 8.0).abs() <= 1.0, "{}: {fit:?}", sc.file);
-            assert!(fit.runs >= 3 && fit.error_range.1 >= fit.floor, "{fit:?}");
+        } else if sc.theta0 < 0.5 {
+            let f = fit.expect("a fitted range");
+            assert!((f.order - 8.0).abs() <= 1.0, "{}: {f:?}", sc.file);
+            assert!(f.runs >= 3 && f.error_range.1 >= f.floor, "{f:?}");
+            assert!(f.steps_range.0 >= MIN_STEPS, "{f:?}");
+        } else {
+            assert!(fit.is_none(), "{}: {fit:?}", sc.file);
+            let floor = rounding_floor(&runs, "dop853");
+            let above: Vec<&Run> = runs
+                .iter()
+                .filter(|r| (floor..=ASYMPTOTIC).contains(&r.error()))
+                .collect();
+            assert!(!above.is_empty() && above.iter().all(|r| r.steps < MIN_STEPS));
         }
     }
 }

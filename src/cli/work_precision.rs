@@ -108,7 +108,7 @@ fn print_report(rep: &SceneReport) {
         }
     );
     println!(
-        "{:<17} {:>9} {:>10} {:>10} {:>10} {:>10} {:>9} {:>11} {:>19}",
+        "{:<17} {:>9} {:>10} {:>10} {:>10} {:>10} {:>9} {:>6} {:>11} {:>19}",
         "method",
         "tol/step",
         "angle err",
@@ -116,12 +116,13 @@ fn print_report(rep: &SceneReport) {
         "flat err",
         "energy err",
         "rhs",
+        "steps",
         "µs median",
         "µs q1-q3"
     );
     for r in &rep.runs {
         println!(
-            "{:<17} {:>9.1e} {:>10.2e} {:>10.2e} {:>10} {:>10.2e} {:>9} {:>11.3} {:>19}",
+            "{:<17} {:>9.1e} {:>10.2e} {:>10.2e} {:>10} {:>10.2e} {:>9} {:>6} {:>11.3} {:>19}",
             r.method,
             r.tolerance,
             r.angle_error,
@@ -129,6 +130,7 @@ fn print_report(rep: &SceneReport) {
             r.flat_time_error.map_or("-".into(), |e| format!("{e:.2e}")),
             r.energy_error,
             r.rhs_evals,
+            r.steps,
             r.seconds * 1e6,
             format!("{:.3}-{:.3}", r.seconds_iqr.0 * 1e6, r.seconds_iqr.1 * 1e6),
         );
@@ -137,8 +139,9 @@ fn print_report(rep: &SceneReport) {
         println!("ode_solvers-*: the peers (--features peers), handed the exact t_s (no event location): θ there, time error 0 by construction, not on the Pareto front");
     }
     println!(
-        "observed order: slope of −ln(error) against ln(rhs evaluations) over runs with error in [floor, {:.0e}] whose work grows and is not tied (floor: min({:.0e}, {} × the sweep's rounding level); see work_precision_fit)",
+        "observed order: least-squares slope of −ln(error) against ln(steps) over runs with error in [floor, {:.0e}], at least {} steps, steps not tied with another run and growing, error falling (floor: min({:.0e}, {} × the sweep's rounding level); see work_precision_fit)",
         crate::report::work_precision_fit::ASYMPTOTIC,
+        crate::report::work_precision_fit::MIN_STEPS,
         crate::report::work_precision_fit::FLOOR,
         crate::report::work_precision_fit::ROUNDING_MARGIN,
     );
@@ -146,10 +149,10 @@ fn print_report(rep: &SceneReport) {
         let theory = theory.map_or("p(tol)".to_string(), |p| p.to_string());
         match fit {
             Some(f) => println!(
-                "  {m:<17} theoretical {theory:<6} observed {:.2} ± {:.2} over {} runs, rhs {}..{}, error {:.1e}..{:.1e} (floor {:.0e})",
-                f.order, f.std_error, f.runs, f.rhs_range.0, f.rhs_range.1, f.error_range.0, f.error_range.1, f.floor
+                "  {m:<17} theoretical {theory:<6} observed {:.2} ± {:.2} over {} runs, steps {}..{}, rhs {}..{}, error {:.1e}..{:.1e} (floor {:.0e})",
+                f.order, f.std_error, f.runs, f.steps_range.0, f.steps_range.1, f.rhs_range.0, f.rhs_range.1, f.error_range.0, f.error_range.1, f.floor
             ),
-            None => println!("  {m:<17} theoretical {theory:<6} observed n/a (fewer than 3 runs in range)"),
+            None => println!("  {m:<17} theoretical {theory:<6} observed n/a (fewer than 3 runs in range: ≥ 10 steps, error between the floor and 1e-4)"),
         }
     }
     println!("Pareto front (median run time against the worse error; no listed run is dominated):");

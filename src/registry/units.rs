@@ -90,19 +90,26 @@ fn d(m: i32, l: i32, t: i32) -> Dim {
     Dim::new(m, l, t)
 }
 
-/// The ladder with its dimensions, built by the registry's sampler for the given sort.
-pub fn dimensioned_ladder(sort: LadderSample) -> (Ladder<Dim>, State<Dim>) {
-    // (t, m, l, g, θ̇, θ̈, θ⃛); t parametrises the unit circle, so it is a pure number.
-    let v: [Dim; LADDER_DRAWS] = [
-        Dim::int(1).require_dimensionless("the angle parameter t"),
+/// The dimensions of the ladder sampler's draws (t, m, l, g, θ̇, θ̈, θ⃛). These are declarations,
+/// not checks: t parametrises the unit circle (sin θ = 2t/(1 + t²)), so it is declared a pure
+/// number. A wrong declaration is caught downstream, not here: a t with a dimension makes 1 + t²
+/// a sum of unlike dimensions, and every form built on sin θ or cos θ inconsistent
+/// (`planted_dimension_of_t_is_caught` in the tests below).
+pub fn ladder_draw_dimensions() -> [Dim; LADDER_DRAWS] {
+    [
+        Dim::int(1),
         d(1, 0, 0),
         d(0, 1, 0),
         d(0, 1, -2),
         d(0, 0, -1),
         d(0, 0, -2),
         d(0, 0, -3),
-    ];
-    exact_ladder(sort, v)
+    ]
+}
+
+/// The ladder with its dimensions, built by the registry's sampler for the given sort.
+pub fn dimensioned_ladder(sort: LadderSample) -> (Ladder<Dim>, State<Dim>) {
+    exact_ladder(sort, ladder_draw_dimensions())
 }
 
 /// A system of `n` particles with their dimensions and a reference point, of the given sort.
@@ -206,4 +213,47 @@ pub fn equation_units(e: &Equation) -> UnitsFindings {
         out.extend(f);
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::registry::equations;
+
+    fn ladder_checks_with(draws: [Dim; LADDER_DRAWS]) -> Vec<UnitsFindings> {
+        equations()
+            .iter()
+            .flat_map(|e| e.checks.iter())
+            .filter_map(|c| match c.eval {
+                Eval::Ladder(sort, f) => {
+                    let (l, s) = exact_ladder(sort, draws.clone());
+                    Some(judge_chains(&(f.units)(&l, &s)))
+                }
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn planted_dimension_of_t_is_caught() {
+        // As declared, no ladder check has a problem.
+        let fine = ladder_checks_with(ladder_draw_dimensions());
+        assert!(!fine.is_empty());
+        assert!(fine.iter().all(|f| f.problems.is_empty()), "{fine:?}");
+        // t given a length: 1 + t² adds a pure number to an area, and the checks say so.
+        let mut planted = ladder_draw_dimensions();
+        planted[0] = d(0, 1, 0);
+        let (_, s) = exact_ladder(LadderSample::Kinematic, planted.clone());
+        assert!(matches!(s.sin, Dim::Inconsistent(_)), "{:?}", s.sin);
+        let found = ladder_checks_with(planted);
+        let failing = found.iter().filter(|f| !f.problems.is_empty()).count();
+        assert!(failing * 2 > found.len(), "{failing} of {}", found.len());
+        assert!(
+            found
+                .iter()
+                .flat_map(|f| &f.problems)
+                .any(|p| p.contains("L²")),
+            "{found:?}"
+        );
+    }
 }

@@ -29,9 +29,9 @@ impl System<f64, Vector2<f64>> for Wall {
     }
 }
 
-/// θ(t) from (θ0, θ̇0) by the peer `name` at tolerance `tol`, with its rhs evaluations; None
-/// when the peer fails.
-pub fn theta_at(name: &str, tol: f64, scene: &Scene, t: f64) -> Option<(f64, u64)> {
+/// θ(t) from (θ0, θ̇0) by the peer `name` at tolerance `tol`, with its rhs evaluations and
+/// accepted steps; None when the peer fails.
+pub fn theta_at(name: &str, tol: f64, scene: &Scene, t: f64) -> Option<(f64, u64, u64)> {
     let y0 = Vector2::new(scene.theta0, scene.rate0);
     let sys = Wall(scene.ladder.big_omega2());
     let (stats, last) = if name == PEERS_OF[0].0 {
@@ -43,9 +43,11 @@ pub fn theta_at(name: &str, tol: f64, scene: &Scene, t: f64) -> Option<(f64, u64
         s.set_output(OutputType::Sparse);
         (s.integrate().ok()?, s.y_out().last().copied()?)
     };
-    last[0]
-        .is_finite()
-        .then_some((last[0], u64::from(stats.num_eval)))
+    last[0].is_finite().then_some((
+        last[0],
+        u64::from(stats.num_eval),
+        u64::from(stats.accepted_steps),
+    ))
 }
 
 /// Every run of the peers on `scene` (none for a scene that runs to flat), timed like ours.
@@ -59,7 +61,7 @@ pub fn measure_peers(scene: &Scene, timing: Timing) -> Result<Vec<Run>, String> 
     let mut runs = Vec::new();
     for (name, ours) in PEERS_OF {
         for tol in sweep(ours) {
-            let Some((theta, rhs_evals)) = theta_at(name, tol, scene, exact.time) else {
+            let Some((theta, rhs_evals, steps)) = theta_at(name, tol, scene, exact.time) else {
                 continue;
             };
             let (seconds, seconds_iqr, repeats) = time_it(timing, || {
@@ -74,6 +76,7 @@ pub fn measure_peers(scene: &Scene, timing: Timing) -> Result<Vec<Run>, String> 
                 flat_time_error: None,
                 energy_error: f64::NAN,
                 rhs_evals,
+                steps,
                 seconds,
                 seconds_iqr,
                 repeats,

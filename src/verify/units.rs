@@ -10,6 +10,7 @@ use crate::ladder::forces::wall_force;
 use crate::ladder::geometry::{corner_position, Corner};
 use crate::ladder::particles::{as_system, external_torque_about};
 use crate::ladder::torque::{angular_momentum_about_a, eq13_moment_of_inertia_about_corner};
+use crate::ladder::{Ladder, State};
 use crate::registry::print_check::units::print_units;
 use crate::registry::sample::LadderSample;
 use crate::registry::units::{
@@ -120,6 +121,32 @@ pub struct ProseUnits {
     pub corrected: Option<Units>,
 }
 
+/// Footnote 4 in dimensions: F_w = m l sin θ Ω² (3 cos θ − 2 cos θ0), zero at
+/// cos θ = (2/3) cos θ0, with `omega_squared` for Ω² = 3g/4l. cos θ0 is not declared a pure
+/// number: it is computed from the state by the energy from rest at θ0,
+/// θ̇² = 2Ω² (cos θ0 − cos θ) (eq. (10) at θ0 = 0), as cos θ + θ̇²/(2Ω²), and must come out one.
+/// A wrong Ω² (or θ̇) makes that sum, or the pure number it must be, fail.
+pub fn footnote_4(l: &Ladder<Dim>, s: &State<Dim>, omega_squared: Dim) -> UnitsFindings {
+    let rate2 = sq(&s.rate);
+    let cos0 = (s.cos.clone() + rate2 / (Dim::int(2) * omega_squared.clone()))
+        .require_dimensionless("cos θ0 = cos θ + θ̇²/(2Ω²)");
+    let f_w = l.m.clone()
+        * l.l.clone()
+        * s.sin.clone()
+        * omega_squared
+        * (Dim::int(3) * s.cos.clone() - Dim::int(2) * cos0.clone());
+    judge_chains(&[
+        vec![
+            reference("F_w, eq. (14)", wall_force(l, s)),
+            printed("m l sin θ Ω² (3 cos θ − 2 cos θ0)", f_w),
+        ],
+        vec![
+            reference("cos θ", s.cos.clone()),
+            printed("(2/3) cos θ0", Dim::ratio(2, 3) * cos0),
+        ],
+    ])
+}
+
 /// The prose claims that state a quantity with units, each in dimensions against the quantity it
 /// names (computed by the code's independent route).
 pub fn prose_units() -> Vec<ProseUnits> {
@@ -145,23 +172,7 @@ pub fn prose_units() -> Vec<ProseUnits> {
         reference("x_cm × m v_cm of the particles", orbital),
         printed("−m l² θ̇", -(m.clone() * sq(&len) * w.clone())),
     ]]);
-    // Footnote 4: F_w = m l sin θ Ω² (3 cos θ − 2 cos θ0), Ω² = 3g/4l; cos θ0 a pure number.
-    let cos0 = Dim::int(1).require_dimensionless("cos θ0");
-    let f_w = m.clone()
-        * len.clone()
-        * s.sin.clone()
-        * l.capital_omega_squared()
-        * (Dim::int(3) * s.cos.clone() - Dim::int(2) * cos0.clone());
-    let footnote = judge_chains(&[
-        vec![
-            reference("F_w, eq. (14)", wall_force(&l, &s)),
-            printed("m l sin θ Ω² (3 cos θ − 2 cos θ0)", f_w),
-        ],
-        vec![
-            reference("cos θ", s.cos.clone()),
-            printed("(2/3) cos θ0", Dim::ratio(2, 3) * cos0),
-        ],
-    ]);
+    let footnote = footnote_4(&l, &s, l.capital_omega_squared());
     // sec. 2.2: L'_C = I_C θ̇.
     let c = Reference::Corner(Corner::C);
     let rigid = judge_chains(&[vec![
