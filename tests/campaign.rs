@@ -266,3 +266,30 @@ fn the_watchdog_names_a_hang_and_goes_on() {
     assert!(waited >= Duration::from_millis(200), "{waited:?}");
     assert_eq!(next, Some(42));
 }
+
+/// The closed-form linear motion that a run ending within a tiny start's lead-in reports
+/// (`sim::lead_in::linear_state_at`; the campaign's seed 1 scene 129565), against
+/// θ = θ0 cosh Ωt + (θ̇0/Ω) sinh Ωt, θ̇ = θ0 Ω sinh Ωt + θ̇0 cosh Ωt written out here, with a
+/// push (q = θ̇0/Ω ≠ 0: the mutation sample's `lead_in.rs:52`, p + q → p − q, is equal at rest).
+#[test]
+fn the_lead_in_end_state_is_the_linear_closed_form() {
+    use sliding_ladder::sim::lead_in::linear_state_at;
+    let w2 = 0.75f64;
+    let w = w2.sqrt();
+    for (theta0, rate0, t) in [(1e-12, 3e-12, 2.0), (2e-15, 0.0, 5.0), (0.0, 1e-13, 10.0)] {
+        let (theta, rate) = linear_state_at(w2, theta0, rate0, t);
+        let (ch, sh) = ((w * t).cosh(), (w * t).sinh());
+        let (want_theta, want_rate) = (theta0 * ch + rate0 / w * sh, theta0 * w * sh + rate0 * ch);
+        // Error model: exp, two halves and a few products: ≤ 16 u relative (times Ωt for the
+        // rounding of the exponent's argument).
+        let rel = 16.0 * f64::EPSILON * (1.0 + w * t);
+        assert!(
+            (theta - want_theta).abs() <= rel * want_theta.abs(),
+            "{theta} vs {want_theta}"
+        );
+        assert!(
+            (rate - want_rate).abs() <= rel * want_rate.abs(),
+            "{rate} vs {want_rate}"
+        );
+    }
+}
