@@ -122,20 +122,8 @@ pub fn observed_order<P: Point>(runs: &[P], method: &str) -> Option<OrderFit> {
     if kept.len() < 3 {
         return None;
     }
-    let pts: Vec<(f64, f64)> = kept
-        .iter()
-        .map(|r| ((r.steps() as f64).ln(), -r.error().ln()))
-        .collect();
-    let n = pts.len() as f64;
-    let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
-    let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    let q = sxy / sxx;
-    let residuals: f64 = pts
-        .iter()
-        .map(|p| (p.1 - my - q * (p.0 - mx)).powi(2))
-        .sum();
+    let (q, sxx, residuals) = log_slope(kept.iter().copied());
+    let n = kept.len() as f64;
     let (first, last) = (kept[0], kept[kept.len() - 1]);
     (sxx > 0.0).then(|| OrderFit {
         order: q,
@@ -146,6 +134,25 @@ pub fn observed_order<P: Point>(runs: &[P], method: &str) -> Option<OrderFit> {
         error_range: (first.error(), last.error()),
         floor: rounding_floor(runs, method),
     })
+}
+
+/// Least-squares slope of −ln(error) against ln(steps) over `runs`, with the spread of ln(steps)
+/// (Σ(x − x̄)²) and the sum of squared residuals, for the slope's standard error.
+fn log_slope<'a, P: Point + 'a>(runs: impl Iterator<Item = &'a P>) -> (f64, f64, f64) {
+    let pts: Vec<(f64, f64)> = runs
+        .map(|r| ((r.steps() as f64).ln(), -r.error().ln()))
+        .collect();
+    let n = pts.len() as f64;
+    let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
+    let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    let q = sxy / sxx;
+    let residuals = pts
+        .iter()
+        .map(|p| (p.1 - my - q * (p.0 - mx)).powi(2))
+        .sum();
+    (q, sxx, residuals)
 }
 
 /// Whether `q` dominates `r`: no slower and no less accurate, and better in at least one.
@@ -222,15 +229,7 @@ mod tests {
         assert!(fit.std_error < 1e-6, "{fit:?}");
         assert!(fit.error_range.1 >= FLOOR && fit.error_range.0 <= ASYMPTOTIC);
         // Without the rule (all runs) the slope is far from 8: the rule matters.
-        let all: Vec<(f64, f64)> = runs
-            .iter()
-            .map(|r| ((r.1 as f64).ln(), -r.3.ln()))
-            .collect();
-        let n = all.len() as f64;
-        let mx = all.iter().map(|p| p.0).sum::<f64>() / n;
-        let my = all.iter().map(|p| p.1).sum::<f64>() / n;
-        let naive = all.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>()
-            / all.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
+        let naive = super::log_slope(runs.iter()).0;
         assert!((naive - 8.0).abs() > 1.0, "naive {naive}");
         assert!(observed_order(&runs[..2], "m").is_none());
         // The tied loose runs (rhs 100 and 200) are out, and the floor came from the sweep.
@@ -363,15 +362,7 @@ mod tests {
         assert!(!fit_range(&runs, "m").iter().any(|r| r.1 == 300));
         let mut with: Vec<&P> = fit_range(&runs, "m");
         with.push(&runs[6]);
-        let pts: Vec<(f64, f64)> = with
-            .iter()
-            .map(|r| ((r.1 as f64).ln(), -r.3.ln()))
-            .collect();
-        let n = pts.len() as f64;
-        let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
-        let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
-        let q = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>()
-            / pts.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
+        let q = super::log_slope(with.iter().copied()).0;
         assert!((q - 8.0).abs() > 1.0, "with the run that buys nothing: {q}");
     }
 

@@ -32,40 +32,34 @@ pub enum Coeff {
     Big(Rational),
 }
 
-fn gcd(mut a: u128, mut b: u128) -> u128 {
+/// Stein's binary gcd of two nonzero integers of one width: no division, which u128 lacks in
+/// hardware. One body for both widths: the u64 loop, the common case, runs on cheaper words.
+macro_rules! binary_gcd {
+    ($a:expr, $b:expr) => {{
+        let (mut a, mut b) = ($a, $b);
+        let shift = (a | b).trailing_zeros();
+        a >>= a.trailing_zeros();
+        loop {
+            b >>= b.trailing_zeros();
+            if a > b {
+                std::mem::swap(&mut a, &mut b);
+            }
+            b -= a;
+            if b == 0 {
+                break a << shift;
+            }
+        }
+    }};
+}
+
+fn gcd(a: u128, b: u128) -> u128 {
     if a == 0 || b == 0 {
         return a | b;
     }
     if a <= u64::MAX as u128 && b <= u64::MAX as u128 {
-        return u128::from(gcd64(a as u64, b as u64));
+        return u128::from(binary_gcd!(a as u64, b as u64));
     }
-    let shift = (a | b).trailing_zeros();
-    a >>= a.trailing_zeros();
-    loop {
-        b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        if b == 0 {
-            return a << shift;
-        }
-    }
-}
-
-fn gcd64(mut a: u64, mut b: u64) -> u64 {
-    let shift = (a | b).trailing_zeros();
-    a >>= a.trailing_zeros();
-    loop {
-        b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        if b == 0 {
-            return a << shift;
-        }
-    }
+    binary_gcd!(a, b)
 }
 
 impl Coeff {
