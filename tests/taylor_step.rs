@@ -48,7 +48,7 @@ enum Rule {
 /// (the larger of angle and rate), and the step taken.
 fn step_ratio(theta0: f64, tol: f64, rule: Rule) -> (f64, f64) {
     let sys = WallPhase::new(&LADDER);
-    let omega = LADDER.big_omega2().sqrt();
+    let big_omega = LADDER.big_omega2().sqrt();
     let exact = PhaseOne::new(theta0, 0.0, LADDER.big_omega2()).unwrap();
     let mut st = Taylor::new(0.0, [theta0, 0.0], tol);
     st.step(&sys, f64::INFINITY).unwrap();
@@ -66,11 +66,11 @@ fn step_ratio(theta0: f64, tol: f64, rule: Rule) -> (f64, f64) {
     };
     let sigma = h / series.unit();
     let (theta, rate) = exact.theta_rate(h);
-    let shift = 38.0 * U * (2.0 * exact.quarter_period() / omega + h);
+    let shift = 38.0 * U * (2.0 * exact.quarter_period() / big_omega + h);
     let accel = LADDER.big_omega2() * theta.sin();
     let s = theta0;
     let mut worst: f64 = 0.0;
-    for (i, (x, dx, scale)) in [(theta, rate, s), (rate, accel, omega * s)]
+    for (i, (x, dx, scale)) in [(theta, rate, s), (rate, accel, big_omega * s)]
         .into_iter()
         .enumerate()
     {
@@ -165,8 +165,8 @@ fn the_scene_that_showed_it_separates_within_its_error_model() {
         .unwrap()
         .separation()
         .unwrap();
-    let omega = LADDER.big_omega2().sqrt();
-    let (ts, rs) = (exact.angle, exact.rate / omega);
+    let big_omega = LADDER.big_omega2().sqrt();
+    let (ts, rs) = (exact.angle, exact.rate / big_omega);
     let bound = 2.0 / 3.0 * steps * 1e-9 * ts.max(rs) * (rs + ts.sin()) / ts.sin() + 4.0 * U * ts;
     let err = (angle - ts).abs();
     println!("separation angle error {err:.2e}, bound {bound:.2e} ({steps} steps)");

@@ -242,7 +242,7 @@ fn an_errata_witness_that_disagrees_does_not_hold() {
 /// number: the right Ω² = 3g/4l passes, a planted Ω² without the 1/l (dimension L T⁻²) fails both
 /// the sum cos θ + θ̇²/(2Ω²) and the footnote's F_w.
 #[test]
-fn footnote_4_fails_with_a_planted_wrong_omega_squared() {
+fn footnote_4_fails_with_a_planted_wrong_big_omega_squared() {
     use sliding_ladder::verify::units::footnote_4;
     let (l, s) = dimensioned_ladder(LadderSample::Kinematic);
     let right = footnote_4(&l, &s, l.capital_omega_squared());

@@ -13,6 +13,10 @@
 //! is canonical (a value is `Small` exactly when it fits), and derived equality and hashing are
 //! those of the values; the order is the numeric one, as `BigRational`'s. `coeff_tests.rs` holds
 //! every operation to the `BigRational` one on random and overflow-edge values.
+//!
+//! Written by hand because num-rational, the project's exact type, has no small-value path
+//! (`Ratio<i64>` overflows, `BigRational` always allocates), and the crates whose rationals do
+//! have one (malachite-q) would replace num-bigint throughout the crate for one hot loop.
 
 use super::Rational;
 use num_bigint::BigInt;

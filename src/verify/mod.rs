@@ -171,7 +171,7 @@ pub fn add_proof_verdict(r: &mut EquationResult, v: proof::ProofVerdict) {
     r.print_proved = v.print_proved;
 }
 
-/// Run every check of every equation (on two threads) and judge each equation.
+/// Run every check of every equation (on every core, `on_all_cores`) and judge each equation.
 pub fn verify_all(cfg: &Config) -> Vec<EquationResult> {
     verify_list(equations(), cfg)
 }
@@ -187,7 +187,7 @@ pub fn verify_extensions(cfg: &Config) -> Vec<EquationResult> {
 }
 
 fn verify_list(eqs: Vec<Equation>, cfg: &Config) -> Vec<EquationResult> {
-    let mut results = on_two_threads(&eqs, |e| {
+    let mut results = on_all_cores(&eqs, |e| {
         let mut r = judge_with_print(
             e,
             &e.checks
@@ -209,36 +209,11 @@ fn verify_list(eqs: Vec<Equation>, cfg: &Config) -> Vec<EquationResult> {
     results
 }
 
-/// `f` of every item, in order, on two worker threads that each take the next item when done
-/// (the cost of a display varies thirtyfold: a fixed split left one thread idle while the
-/// other finished). Items are taken from the last: the particle displays at the end are the
-/// costliest, and starting them first leaves the short ones to even out the finish.
-pub fn on_two_threads<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Vec<R> {
-    use std::sync::atomic::{AtomicUsize, Ordering};
-    let taken = AtomicUsize::new(0);
-    let mut done: Vec<(usize, R)> = std::thread::scope(|scope| {
-        let workers: Vec<_> = (0..2)
-            .map(|_| {
-                scope.spawn(|| {
-                    let mut out = Vec::new();
-                    loop {
-                        let k = taken.fetch_add(1, Ordering::Relaxed);
-                        if k >= items.len() {
-                            return out;
-                        }
-                        let i = items.len() - 1 - k;
-                        out.push((i, f(&items[i])));
-                    }
-                })
-            })
-            .collect();
-        workers
-            .into_iter()
-            .flat_map(|h| h.join().expect("a verification worker panicked"))
-            .collect()
-    });
-    done.sort_by_key(|d| d.0);
-    done.into_iter().map(|d| d.1).collect()
+/// `f` of every item, in order, on rayon's pool (a thread per core): the cost of a display
+/// varies thirtyfold, and work stealing keeps both cores busy where a fixed split left one idle.
+pub fn on_all_cores<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync + Send) -> Vec<R> {
+    use rayon::prelude::*;
+    items.par_iter().map(f).collect()
 }
 
 /// Print coverage: (displays fully parsed, displays, forms parsed, forms, displays whose Rust
@@ -284,7 +259,7 @@ pub struct MethodResult {
 
 /// Check every method of the note ([`crate::method::methods`]).
 pub fn check_methods(cfg: &Config) -> Vec<MethodResult> {
-    on_two_threads(&crate::method::methods(), |(name, checks)| {
+    on_all_cores(&crate::method::methods(), |(name, checks)| {
         let reports: Vec<CheckReport> = checks.iter().map(|c| run_check(c, cfg)).collect();
         let problems = reports
             .iter()

@@ -122,18 +122,18 @@ pub struct ProseUnits {
 }
 
 /// Footnote 4 in dimensions: F_w = m l sin θ Ω² (3 cos θ − 2 cos θ0), zero at
-/// cos θ = (2/3) cos θ0, with `omega_squared` for Ω² = 3g/4l. cos θ0 is not declared a pure
+/// cos θ = (2/3) cos θ0, with `big_omega_squared` for Ω² = 3g/4l. cos θ0 is not declared a pure
 /// number: it is computed from the state by the energy from rest at θ0,
-/// θ̇² = 2Ω² (cos θ0 − cos θ) (eq. (10) at θ0 = 0), as cos θ + θ̇²/(2Ω²), and must come out one.
-/// A wrong Ω² (or θ̇) makes that sum, or the pure number it must be, fail.
-pub fn footnote_4(l: &Ladder<Dim>, s: &State<Dim>, omega_squared: Dim) -> UnitsFindings {
+/// θ̇² = 2Ω² (cos θ0 − cos θ) (eq. (10) is its case θ0 = 0), as cos θ + θ̇²/(2Ω²), and must
+/// come out a pure number. A wrong Ω² (or θ̇) makes that sum, or that requirement, fail.
+pub fn footnote_4(l: &Ladder<Dim>, s: &State<Dim>, big_omega_squared: Dim) -> UnitsFindings {
     let rate2 = sq(&s.rate);
-    let cos0 = (s.cos.clone() + rate2 / (Dim::int(2) * omega_squared.clone()))
+    let cos0 = (s.cos.clone() + rate2 / (Dim::int(2) * big_omega_squared.clone()))
         .require_dimensionless("cos θ0 = cos θ + θ̇²/(2Ω²)");
     let f_w = l.m.clone()
         * l.l.clone()
         * s.sin.clone()
-        * omega_squared
+        * big_omega_squared
         * (Dim::int(3) * s.cos.clone() - Dim::int(2) * cos0.clone());
     judge_chains(&[
         vec![
