@@ -15,11 +15,10 @@
 //!    and at least [`MIN_STEPS`] = 10 steps in every phase: on fewer the error moves with whole
 //!    steps, the first step's guess and the last step to the event, and the order of the method
 //!    is not visible (dop853 from θ0 = 1 reaches 5e-15 in 9 steps: its five runs above the floor,
-//!    of 5 to 9 steps, gave a slope of 12.7 ± 4.3). Those fixed costs come once per phase, so a
-//!    full fall (wall phase, then floor phase) needs 10 in each: dop853's starting guess from
-//!    θ0 = 0.3 at 1e-12 is 0.029 √(l/g), under a seventh of the 0.22 the controller settles on, and the
-//!    floor phase starts over with a guess as small. Counted over both phases together, its runs
-//!    of 8 + 6 to 15 + 11 steps gave 9.5 ± 1.2;
+//!    of 5 to 9 steps, gave a slope of 12.7 ± 4.3). Those costs come once per phase, so a full
+//!    fall needs 10 in each: dop853's first guess from θ0 = 0.3 at 1e-12 is under a seventh of
+//!    the settled step, in each phase; over both phases together its runs of 8 + 6 to 15 + 11
+//!    steps gave 9.5 ± 1.2 (`tests/order_per_phase.rs`);
 //! 3. bought by the tolerance: no other run of the method takes exactly as many steps (several
 //!    tolerances with the same work all measured the step limit, not the method: the loosest of
 //!    them is as step-limited as the rest), and its steps are strictly above those of the last
