@@ -27,26 +27,19 @@ const ONCE: Timing = Timing {
 };
 
 /// The criterion on its scenes, with the fitting rule of `work_precision_fit` (runs of
-/// at least 10 steps above the sweep's rounding floor, fitted against steps). Where that range
-/// holds three runs, dop853 comes out within 1 of 8: upright with a push, θ0 = 0.1 and 0.3 from
-/// rest. From θ0 = 1 and 1.5 it reaches the rounding floor in fewer than 10 steps, so no order
-/// is reported (held: every run above the floor is that short). The full fall's error is the
-/// wall phase's (θ0 = 0.3) over the steps of both phases: printed, and held consistent with 8
-/// within max(1, 2σ) (a wrong slope with a small standard error is caught).
+/// at least 10 steps in every phase above the sweep's rounding floor, fitted against steps).
+/// Every order reported is within 1 of 8, and one is reported where the range holds three runs:
+/// upright with a push, θ0 = 0.1 and 0.3 from rest. From θ0 = 1 and 1.5 dop853 reaches the
+/// rounding floor in fewer than 10 steps; in the full fall to flat from 0.3, fewer than three
+/// runs above the floor take 10 steps in each phase. There no order is reported, and the test
+/// holds the reason: the runs above the floor that rule 2 keeps are fewer than three.
 #[test]
 fn dop853_order_is_within_one_of_eight_on_the_fitted_range() {
     for sc in default_scenes() {
         let runs = measure(&sc, &["dop853"], ONCE, |_| {}).unwrap();
         let fit = observed_order(&runs, "dop853");
         println!("{}: {fit:?}", sc.file);
-        if sc.end == End::Flat {
-            let f = fit.expect("the full fall has a fitted range");
-            assert!(
-                (f.order - 8.0).abs() <= (2.0 * f.std_error).max(1.0),
-                "{}: {f:?}",
-                sc.file
-            );
-        } else if sc.theta0 < 0.5 {
+        if sc.end == End::Separation && sc.theta0 < 0.5 {
             let f = fit.expect("a fitted range");
             assert!((f.order - 8.0).abs() <= 1.0, "{}: {f:?}", sc.file);
             assert!(f.runs >= 3 && f.error_range.1 >= f.floor, "{f:?}");
@@ -58,7 +51,11 @@ fn dop853_order_is_within_one_of_eight_on_the_fitted_range() {
                 .iter()
                 .filter(|r| (floor..=ASYMPTOTIC).contains(&r.error()))
                 .collect();
-            assert!(!above.is_empty() && above.iter().all(|r| r.steps < MIN_STEPS));
+            let long = above
+                .iter()
+                .filter(|r| r.shortest_phase_steps() >= MIN_STEPS)
+                .count();
+            assert!(above.len() >= 3 && long < 3, "{}: {long}", sc.file);
         }
     }
 }

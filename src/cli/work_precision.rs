@@ -139,7 +139,7 @@ fn print_report(rep: &SceneReport) {
         println!("ode_solvers-*: the peers (--features peers), handed the exact t_s (no event location): θ there, time error 0 by construction, not on the Pareto front");
     }
     println!(
-        "observed order: least-squares slope of −ln(error) against ln(steps) over runs with error in [floor, {:.0e}], at least {} steps, steps not tied with another run and growing, error falling (floor: min({:.0e}, {} × the sweep's rounding level); see work_precision_fit)",
+        "observed order: least-squares slope of −ln(error) against ln(steps) over runs with error in [floor, {:.0e}], at least {} steps in each phase (a full fall has two), steps not tied with another run and growing, error falling (floor: min({:.0e}, {} × the sweep's rounding level); see work_precision_fit)",
         crate::report::work_precision_fit::ASYMPTOTIC,
         crate::report::work_precision_fit::MIN_STEPS,
         crate::report::work_precision_fit::FLOOR,
@@ -152,7 +152,7 @@ fn print_report(rep: &SceneReport) {
                 "  {m:<17} theoretical {theory:<6} observed {:.2} ± {:.2} over {} runs, steps {}..{}, rhs {}..{}, error {:.1e}..{:.1e} (floor {:.0e})",
                 f.order, f.std_error, f.runs, f.steps_range.0, f.steps_range.1, f.rhs_range.0, f.rhs_range.1, f.error_range.0, f.error_range.1, f.floor
             ),
-            None => println!("  {m:<17} theoretical {theory:<6} observed n/a (fewer than 3 runs in range: ≥ 10 steps, error between the floor and 1e-4)"),
+            None => println!("  {m:<17} theoretical {theory:<6} observed n/a (fewer than 3 runs in range: ≥ 10 steps in each phase, error between the floor and 1e-4)"),
         }
     }
     println!("Pareto front (median run time against the worse error; no listed run is dominated):");

@@ -49,6 +49,8 @@ pub struct Run {
     pub rhs_evals: u64,
     /// Accepted steps, both phases of a full fall together.
     pub steps: u64,
+    /// Accepted steps of the floor phase (a full fall; `steps` includes them).
+    pub floor_steps: Option<u64>,
     /// Median wall-clock seconds per solve (warm).
     pub seconds: f64,
     /// First and third quartile of the repeats (the spread).
@@ -66,6 +68,10 @@ impl Point for Run {
     }
     fn steps(&self) -> u64 {
         self.steps
+    }
+    fn shortest_phase_steps(&self) -> u64 {
+        self.floor_steps
+            .map_or(self.steps, |f| f.min(self.steps - f))
     }
     fn seconds(&self) -> f64 {
         self.seconds
@@ -268,6 +274,7 @@ pub fn measure(
                 energy_error: o.energy_error.unwrap_or(f64::NAN),
                 rhs_evals: o.work.wall.rhs_evals + o.work.floor.map_or(0, |f| f.rhs_evals),
                 steps: o.work.wall.steps + o.work.floor.map_or(0, |f| f.steps),
+                floor_steps: o.work.floor.map(|f| f.steps),
                 seconds,
                 seconds_iqr,
                 repeats,

@@ -12,10 +12,13 @@
 //!    reference itself is good to 2 ulps). A sweep that never reaches rounding keeps 1e-13.
 //! 2. in the asymptotic regime: error ≤ [`ASYMPTOTIC`] = 1e-4 (the leading error term dominates;
 //!    looser tolerances also meet the event-safe step limit, so work stops following tolerance),
-//!    and at least [`MIN_STEPS`] = 10 steps: on fewer the error moves with whole steps, the
-//!    first step's guess and the last step to the event, and the order of the method is not
-//!    visible (dop853 from θ0 = 1 reaches 5e-15 in 9 steps: its five runs above the floor, of
-//!    5 to 9 steps, gave a slope of 12.7 ± 4.3);
+//!    and at least [`MIN_STEPS`] = 10 steps in every phase: on fewer the error moves with whole
+//!    steps, the first step's guess and the last step to the event, and the order of the method
+//!    is not visible (dop853 from θ0 = 1 reaches 5e-15 in 9 steps: its five runs above the floor,
+//!    of 5 to 9 steps, gave a slope of 12.7 ± 4.3). Those costs come once per phase, so a full
+//!    fall needs 10 in each: dop853's first guess from θ0 = 0.3 at 1e-12 is under a seventh of
+//!    the settled step, in each phase; over both phases together its runs of 8 + 6 to 15 + 11
+//!    steps gave 9.5 ± 1.2 (`tests/order_per_phase.rs`);
 //! 3. bought by the tolerance: no other run of the method takes exactly as many steps (several
 //!    tolerances with the same work all measured the step limit, not the method: the loosest of
 //!    them is as step-limited as the rest), and its steps are strictly above those of the last
@@ -50,6 +53,10 @@ pub trait Point {
     fn rhs_evals(&self) -> u64;
     /// Steps taken (accepted).
     fn steps(&self) -> u64;
+    /// Accepted steps of the run's shortest phase (rule 2); a one-phase run's are all its steps.
+    fn shortest_phase_steps(&self) -> u64 {
+        self.steps()
+    }
     /// Median seconds per solve.
     fn seconds(&self) -> f64;
     /// The error judged (the worse of the scene's error measures).
@@ -101,7 +108,7 @@ pub fn fit_range<'a, P: Point>(runs: &'a [P], method: &str) -> Vec<&'a P> {
     let mut kept: Vec<&P> = Vec::new();
     for &r in &mine {
         let e = r.error();
-        if !(floor..=ASYMPTOTIC).contains(&e) || r.steps() < MIN_STEPS || tied(r) {
+        if !(floor..=ASYMPTOTIC).contains(&e) || r.shortest_phase_steps() < MIN_STEPS || tied(r) {
             continue;
         }
         if kept

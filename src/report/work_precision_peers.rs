@@ -77,6 +77,7 @@ pub fn measure_peers(scene: &Scene, timing: Timing) -> Result<Vec<Run>, String> 
                 energy_error: f64::NAN,
                 rhs_evals,
                 steps,
+                floor_steps: None,
                 seconds,
                 seconds_iqr,
                 repeats,

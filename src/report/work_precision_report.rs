@@ -62,11 +62,11 @@ pub fn report(
 /// Every run of every scene as CSV (`runs.csv`).
 pub fn csv(reports: &[SceneReport]) -> String {
     let mut s = String::from(
-        "scene,method,tolerance,angle_error,time_error,flat_time_error,energy_error,rhs_evals,steps,seconds_median,seconds_q1,seconds_q3,repeats\n",
+        "scene,method,tolerance,angle_error,time_error,flat_time_error,energy_error,rhs_evals,steps,floor_steps,seconds_median,seconds_q1,seconds_q3,repeats\n",
     );
     for r in reports.iter().flat_map(|p| &p.runs) {
         s += &format!(
-            "\"{}\",{},{:e},{:e},{:e},{},{:e},{},{},{:e},{:e},{:e},{}\n",
+            "\"{}\",{},{:e},{:e},{:e},{},{:e},{},{},{},{:e},{:e},{:e},{}\n",
             r.scene,
             r.method,
             r.tolerance,
@@ -77,6 +77,7 @@ pub fn csv(reports: &[SceneReport]) -> String {
             r.energy_error,
             r.rhs_evals,
             r.steps,
+            r.floor_steps.map_or(String::new(), |f| f.to_string()),
             r.seconds,
             r.seconds_iqr.0,
             r.seconds_iqr.1,
