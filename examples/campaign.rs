@@ -12,7 +12,8 @@
 //! Run: `cargo run --release --example campaign -- --scenes 10000 --seed 1` (exit 1 if any of
 //! the five counts is nonzero). `--only I` runs scene I alone and prints it; `--out DIR` writes
 //! every scene that is not fine to DIR/scene-I.toml, ready for `ladder simulate`;
-//! `--work-cap W` and `--contact MODEL` narrow the run, counting what they leave out. CI runs
+//! `--work-cap W`, `--work-above W` (the scenes a cap of W leaves out) and `--contact MODEL`
+//! narrow the run, counting what they leave out. CI runs
 //! `--scenes 10000 --seed 1 --work-cap 1e5 --budget 30` (README says why; both contact models).
 
 use clap::Parser;
@@ -63,6 +64,10 @@ struct Args {
     /// was wrong). Default: every scene the tool accepts (its limit, 1e7 steps a phase).
     #[arg(long, default_value_t = fall::MAX_STEPS as f64)]
     work_cap: f64,
+    /// Run only scenes whose busier phase needs more than this many steps by the plan's
+    /// estimate: the scenes a run at `--work-cap W` leaves out (counted apart). Default: 0.
+    #[arg(long, default_value_t = 0.0)]
+    work_above: f64,
     /// Run only the scenes of this contact model (`rigid` or `penalty`); the others are drawn
     /// as usual (scene I stays scene I) and counted as excluded. Default: both.
     #[arg(long, value_parser = ["rigid", "penalty"])]
@@ -76,6 +81,8 @@ enum Verdict {
     Fine,
     Refused(String),
     Skipped,
+    /// At most `--work-above` steps a phase: a capped campaign's share, not run here.
+    Light,
     Excluded,
     Panic(String),
     NonFinite(String),
@@ -117,7 +124,7 @@ const OVERRUN: f64 = 100.0;
 
 /// Scene `text` through the command's path, judged; not run when the plan estimates more
 /// than `cap` steps in a phase or its contact model is not `only`.
-fn run_scene(text: &str, cap: f64, only: Option<&str>) -> Verdict {
+fn run_scene(text: &str, (above, cap): (f64, f64), only: Option<&str>) -> Verdict {
     let scene = match scene::parse("campaign.toml", text) {
         Ok(s) => s,
         Err(e) => return Verdict::Refused(e.place()),
@@ -135,8 +142,12 @@ fn run_scene(text: &str, cap: f64, only: Option<&str>) -> Verdict {
             scene.end,
             scene.contact,
         );
-        if steps[0].max(steps[1]) > cap {
+        let busier = steps[0].max(steps[1]);
+        if busier > cap {
             return Verdict::Skipped;
+        }
+        if busier <= above {
+            return Verdict::Light;
         }
     }
     // A run the plan estimated at most `cap` steps a phase may take OVERRUN times that; one
@@ -172,7 +183,7 @@ fn run_scene(text: &str, cap: f64, only: Option<&str>) -> Verdict {
 }
 
 /// Run scene `text` with the panic caught and its wall time measured.
-fn judged(text: &str, cap: f64, only: Option<&str>) -> (Verdict, f64) {
+fn judged(text: &str, cap: (f64, f64), only: Option<&str>) -> (Verdict, f64) {
     let t = Instant::now();
     let v = catch_unwind(AssertUnwindSafe(|| run_scene(text, cap, only))).unwrap_or_else(|e| {
         let msg = e
@@ -187,7 +198,7 @@ fn judged(text: &str, cap: f64, only: Option<&str>) -> (Verdict, f64) {
 
 /// A worker's watchdog (`campaign_judge::Watchdog`): scenes run on a thread of their own.
 fn watchdog(a: &Args) -> Watchdog<String, (Verdict, f64)> {
-    let (cap, only) = (a.work_cap, a.contact.clone());
+    let (cap, only) = ((a.work_above, a.work_cap), a.contact.clone());
     Watchdog::new(move |text: String| judged(&text, cap, only.as_deref()))
 }
 
@@ -216,6 +227,7 @@ fn judge(
 struct Tally {
     fine: u64,
     skipped: u64,
+    light: u64,
     excluded: u64,
     refused: BTreeMap<String, u64>,
     counts: [u64; 5],
@@ -277,6 +289,7 @@ fn main() -> ExitCode {
                     match &v {
                         Verdict::Fine => t.fine += 1,
                         Verdict::Skipped => t.skipped += 1,
+                        Verdict::Light => t.light += 1,
                         Verdict::Excluded => t.excluded += 1,
                         Verdict::Refused(field) => {
                             *t.refused.entry(field.clone()).or_default() += 1
@@ -294,6 +307,7 @@ fn main() -> ExitCode {
                 let mut all = total.lock().unwrap_or_else(|e| e.into_inner());
                 all.fine += t.fine;
                 all.skipped += t.skipped;
+                all.light += t.light;
                 all.excluded += t.excluded;
                 for (k, n) in t.refused {
                     *all.refused.entry(k).or_default() += n;
@@ -332,6 +346,12 @@ fn main() -> ExitCode {
         "| not run: more than {:e} steps in a phase by the plan's estimate | {} |",
         a.work_cap, t.skipped
     );
+    if a.work_above > 0.0 {
+        println!(
+            "| not run: at most {:e} steps in every phase (`--work-above`) | {} |",
+            a.work_above, t.light
+        );
+    }
     if let Some(model) = &a.contact {
         println!(
             "| not run: not {model} contact (`--contact {model}`) | {} |",

@@ -16,6 +16,7 @@ pub use super::outcome::{FlatState, FloorReport, Outcome, Plan, Sample, Separati
 use super::rigid::{self, Ladder, WallPhase};
 use super::run::{integrate_phase, Observer, RunError};
 use super::scene::{ContactModel, End, Scene, MAX_END_TIME};
+use super::trace::Kept;
 use super::units::Units;
 use std::cell::Cell;
 
@@ -112,7 +113,7 @@ fn run_rigid(
     let plan = Plan::of(scene);
     let ladder = scene.ladder;
     let (m, l, g) = (ladder.mass, ladder.half_length, ladder.gravity);
-    let mut trace = plan.trace.then(Vec::new);
+    let mut trace = plan.trace.then(Kept::default);
     let mut work = Work::default();
     let t_end = match scene.end {
         End::Time(t) => t,
@@ -173,7 +174,6 @@ fn run_rigid(
     let mut obs = TraceObserver {
         ladder,
         phase: 1,
-        forces: plan.forces,
         trace: trace.as_mut(),
         monitor: None,
         force_evals: 0,
@@ -190,7 +190,7 @@ fn run_rigid(
     if t0 > 0.0 && t0 >= t_end {
         // The end came within the linear lead-in (`run` gave its state there): nothing to step.
         work.force_evals = obs.force_evals;
-        work.stored_samples = trace.as_ref().map_or(0, Vec::len);
+        let trace = finished(trace, &ladder, plan.forces, &mut work);
         let energy = rigid::energy(&ladder, y_lead[0], y_lead[1]);
         return Ok(Outcome {
             plan,
@@ -267,7 +267,6 @@ fn run_rigid(
         let mut obs2 = TraceObserver {
             ladder,
             phase: 2,
-            forces: plan.forces,
             trace: trace.as_mut(),
             monitor,
             force_evals: 0,
@@ -312,7 +311,7 @@ fn run_rigid(
             });
         }
     }
-    work.stored_samples = trace.as_ref().map_or(0, Vec::len);
+    let trace = finished(trace, &ladder, plan.forces, &mut work);
     let energy_error = e0.zip(energy_end).map(|(a, b)| (b - a).abs() / (m * g * l));
     Ok(Outcome {
         plan,
@@ -325,6 +324,19 @@ fn run_rigid(
         trace,
         work,
     })
+}
+
+/// The kept samples of a trace with their forces when asked, counted in `work`.
+fn finished(
+    trace: Option<Kept>,
+    ladder: &Ladder,
+    forces: bool,
+    work: &mut Work,
+) -> Option<Vec<Sample>> {
+    let (samples, evals) = trace?.finish(ladder, forces);
+    work.force_evals += evals;
+    work.stored_samples = samples.len();
+    Some(samples)
 }
 
 #[cfg(test)]

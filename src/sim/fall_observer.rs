@@ -7,6 +7,7 @@ use super::minimum::minimum_on;
 use super::outcome::{FloorReport, Sample};
 use super::rigid::{self, Ladder};
 use super::run::Observer;
+use super::trace::Kept;
 use std::cell::Cell;
 
 /// Dense samples per step kept for plots and monitors.
@@ -16,8 +17,7 @@ pub(super) const SAMPLES_PER_STEP: usize = 4;
 pub(super) struct TraceObserver<'a> {
     pub(super) ladder: Ladder,
     pub(super) phase: u8,
-    pub(super) forces: bool,
-    pub(super) trace: Option<&'a mut Vec<Sample>>,
+    pub(super) trace: Option<&'a mut Kept>,
     pub(super) monitor: Option<FloorReport>,
     pub(super) force_evals: u64,
     /// Start of the phase: the top clearance is 0 there by construction (eq. (7)), so its
@@ -29,24 +29,14 @@ pub(super) struct TraceObserver<'a> {
 
 impl TraceObserver<'_> {
     fn record(&mut self, t: f64, theta: f64, rate: f64, centre_x: f64) {
-        let forces = (self.forces && self.trace.is_some()).then(|| {
-            self.force_evals += 2;
-            if self.phase == 1 {
-                (
-                    rigid::wall_force(&self.ladder, theta, rate),
-                    rigid::floor_force(&self.ladder, theta, rate),
-                )
-            } else {
-                (0.0, floor::floor_force(&self.ladder, theta, rate))
-            }
-        });
+        // The forces of the kept samples are evaluated when the trace is finished.
         if let Some(tr) = self.trace.as_deref_mut() {
-            tr.push(Sample {
+            tr.offer(Sample {
                 phase: self.phase,
                 t,
                 theta,
                 rate,
-                forces,
+                forces: None,
             });
         }
         if let Some(m) = self.monitor.as_mut() {

@@ -44,4 +44,5 @@ pub mod scene_parts;
 mod scene_shape;
 pub mod scene_work;
 mod start;
+pub mod trace;
 pub mod units;

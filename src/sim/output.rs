@@ -29,9 +29,9 @@ pub enum Output {
     FinalState,
     /// Evaluation counters (`work.*`).
     RhsEvals,
-    /// θ and θ̇ against t (CSV + SVG with --out).
+    /// θ and θ̇ against t (CSV + SVG with --out), at most 2 [`super::trace::TRACE_CAP`] samples.
     Trajectory,
-    /// F_w and F_f against t and θ (CSV + SVG with --out).
+    /// F_w and F_f against t and θ (CSV + SVG with --out), at the trajectory's samples.
     Forces,
 }
 
