@@ -9,12 +9,11 @@ use sliding_ladder::sim::extreme::linear_lead_in;
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::integrators::any::AnyStepper;
 use sliding_ladder::sim::integrators::Control;
-use sliding_ladder::sim::penalty::{
-    preloaded_start, separate_with, separation, Contact, Law, PenaltyModel, OMEGA2,
-};
+use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel, OMEGA2};
 use sliding_ladder::sim::penalty_confirm::{
     rigid_separation_angle, separation_bound, zero_amplification, MODEL_CONSTANT,
 };
+use sliding_ladder::sim::penalty_run::{separate_with, separation};
 use sliding_ladder::sim::scene::parse;
 use std::f64::consts::FRAC_PI_2;
 use std::process::Command;

@@ -13,8 +13,9 @@
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use sliding_ladder::sim::integrators::Control;
-use sliding_ladder::sim::penalty::{separation, Contact, Law, OMEGA2};
+use sliding_ladder::sim::penalty::{Contact, Law, OMEGA2};
 use sliding_ladder::sim::penalty_confirm::{rigid_separation_angle, separation_bound};
+use sliding_ladder::sim::penalty_run::separation;
 use sliding_ladder::sim::scene::SOFTEST_CONTACT;
 use sliding_ladder::sim::scene_work::{
     starting_wall_force, wall_force_rate, RESOLVED_WALL_FORCE, RESOLVED_WALL_FORCE_RATE,

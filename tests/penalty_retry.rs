@@ -9,9 +9,8 @@
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::integrators::any::AnyStepper;
 use sliding_ladder::sim::integrators::Control;
-use sliding_ladder::sim::penalty::{
-    preloaded_start, separate_with, separation, Contact, Law, PenaltyModel,
-};
+use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel};
+use sliding_ladder::sim::penalty_run::{separate_with, separation};
 use sliding_ladder::sim::run::RunError;
 use sliding_ladder::sim::scene::{parse, ContactModel, Scene};
 

@@ -31,8 +31,9 @@
 use super::stability_case::{blank, Case, Expect, Verdict, U};
 use crate::sim::constrained::{self, Constrained};
 use crate::sim::integrators::{order, Control};
-use crate::sim::penalty::{separation, Contact, Law};
+use crate::sim::penalty::{Contact, Law};
 use crate::sim::penalty_confirm::separation_bound;
+use crate::sim::penalty_run::separation;
 use serde::Serialize;
 use std::fmt;
 use std::time::Instant;

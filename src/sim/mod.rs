@@ -32,6 +32,7 @@ pub mod output;
 pub mod penalty;
 pub mod penalty_confirm;
 pub mod penalty_plan;
+pub mod penalty_run;
 pub mod penalty_scene;
 pub mod penalty_start;
 pub mod rigid;

@@ -5,7 +5,8 @@
 
 use super::integrators::Control;
 use super::outcome::{Outcome, Plan, SeparationState, Work};
-use super::penalty::{separation, Contact, Law};
+use super::penalty::{Contact, Law};
+use super::penalty_run::separation;
 use super::run::RunError;
 use super::scene::Scene;
 

@@ -125,7 +125,7 @@ pub fn wall_force_rate(theta: f64, rate: f64) -> f64 {
 
 /// The angle (rad) where a penalty run's integration starts from (θ0, θ̇0) (dimensionless) and
 /// the rigid wall force (m g) there: at the lead-in's hand-over for a tiny start
-/// (`sim::lead_in`), as `penalty::separation` does.
+/// (`sim::lead_in`), as `penalty_run::separation` does.
 pub fn starting_wall_force(theta0: f64, rate0: f64) -> (f64, f64) {
     let (_, theta, rate) = linear_lead_in(OMEGA2, theta0, rate0).unwrap_or((0.0, theta0, rate0));
     (theta, rigid_forces(theta, rate).0)
