@@ -14,6 +14,7 @@
 //! inside the asymptotic range; the next term of the error expansion moves the slope by O(h)).
 
 use num_dual::DualNum;
+use sliding_ladder::report::work_precision_fit::line_fit;
 use sliding_ladder::sim::integrators::any::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Ode, Stepper};
 
@@ -66,12 +67,7 @@ fn observed_order(method: &str) -> (f64, Vec<f64>) {
         .zip(&errs)
         .map(|(h, e)| (h.ln(), e.ln()))
         .collect();
-    let n = pts.len() as f64;
-    let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
-    let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    (sxy / sxx, errs)
+    (line_fit(&pts).0, errs)
 }
 
 #[test]

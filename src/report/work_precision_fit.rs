@@ -149,6 +149,12 @@ fn log_slope<'a, P: Point + 'a>(runs: impl Iterator<Item = &'a P>) -> (f64, f64,
     let pts: Vec<(f64, f64)> = runs
         .map(|r| ((r.steps() as f64).ln(), -r.error().ln()))
         .collect();
+    line_fit(&pts)
+}
+
+/// The least-squares line through `pts` (x, y): its slope, Σ(x − x̄)² and the sum of squared
+/// residuals (for the slope's standard error, √(Σ r² / ((n − 2) Σ (x − x̄)²))).
+pub fn line_fit(pts: &[(f64, f64)]) -> (f64, f64, f64) {
     let n = pts.len() as f64;
     let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
     let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
