@@ -18,7 +18,7 @@
 
 use clap::Parser;
 use sliding_ladder::cli::simulate::{files, to_json};
-use sliding_ladder::report::campaign::{draw, selected};
+use sliding_ladder::report::campaign::{draw, selected, work_share, WorkShare};
 use sliding_ladder::report::campaign_judge::{non_finite, out_of_tolerance, Problem, Watchdog};
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::outcome::unreached_end;
@@ -142,14 +142,10 @@ fn run_scene(text: &str, (above, cap): (f64, f64), only: Option<&str>) -> Verdic
             scene.end,
             scene.contact,
         );
-        let busier = steps[0].max(steps[1]);
-        if busier > cap {
-            return Verdict::Skipped;
-        }
-        // `--work-above 0` (the default) leaves nothing out: an adaptive rigid scene's
-        // estimate is 0, and a plain `busier <= 0` skipped all of them (commit 5e0da1b).
-        if above > 0.0 && busier <= above {
-            return Verdict::Light;
+        match work_share(steps[0].max(steps[1]), cap, above) {
+            WorkShare::OverCap => return Verdict::Skipped,
+            WorkShare::Light => return Verdict::Light,
+            WorkShare::Run => {}
         }
     }
     // A run the plan estimated at most `cap` steps a phase may take OVERRUN times that; one

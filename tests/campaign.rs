@@ -293,3 +293,18 @@ fn the_lead_in_end_state_is_the_linear_closed_form() {
         );
     }
 }
+
+/// The work shares of `--work-cap` and `--work-above`: by default every scene under the cap
+/// runs, including an adaptive scene whose estimate is 0; with `--work-above W` only the
+/// scenes over W run. The check can fail: the rule `busier <= above` without `above > 0`
+/// (commit 5e0da1b) calls the estimate-0 scene light and skips it.
+#[test]
+fn the_default_campaign_runs_every_scene_under_the_cap() {
+    use sliding_ladder::report::campaign::{work_share, WorkShare};
+    assert_eq!(work_share(0.0, 1e7, 0.0), WorkShare::Run);
+    assert_eq!(work_share(5e4, 1e5, 0.0), WorkShare::Run);
+    assert_eq!(work_share(2e5, 1e5, 0.0), WorkShare::OverCap);
+    assert_eq!(work_share(0.0, 1e7, 1e4), WorkShare::Light);
+    assert_eq!(work_share(1e4, 1e7, 1e4), WorkShare::Light);
+    assert_eq!(work_share(2e4, 1e7, 1e4), WorkShare::Run);
+}

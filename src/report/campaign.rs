@@ -90,6 +90,31 @@ pub fn selected(contact: &ContactModel, only: Option<&str>) -> bool {
     only.is_none_or(|m| m == model_name(contact))
 }
 
+/// Which share of a campaign a scene falls in by the plan's estimate of its busier phase.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum WorkShare {
+    /// Run it.
+    Run,
+    /// Over `--work-cap`: not run.
+    OverCap,
+    /// At most `--work-above` (when given, > 0): a capped campaign's share, not run.
+    Light,
+}
+
+/// The share of a scene whose busier phase needs `busier` steps (0 for an adaptive method whose
+/// steps follow its tolerance alone), for `--work-cap cap` and `--work-above above`. With
+/// `above` = 0 (the default) nothing is light: a plain `busier <= above` once skipped every
+/// adaptive rigid scene (commit 5e0da1b, fixed in 8ed692f).
+pub fn work_share(busier: f64, cap: f64, above: f64) -> WorkShare {
+    if busier > cap {
+        WorkShare::OverCap
+    } else if above > 0.0 && busier <= above {
+        WorkShare::Light
+    } else {
+        WorkShare::Run
+    }
+}
+
 /// The start: θ0 as `angle`, or (next to the floor) φ0 = π/2 − θ0 as `angle_from_floor`.
 #[derive(Clone, Copy)]
 enum Start {
