@@ -1,5 +1,5 @@
 //! Störmer-Verlet on an acceleration that depends on the velocity: its implicit half kick
-//! v½ = v0 + h/2 a(q0, v½), solved by fixed-point iteration, for every velocity component.
+//! v1 = v½ + h/2 a(q1, v1), solved by fixed-point iteration, for every velocity component.
 //! (`tests/sim_integrators.rs` fits every method's order on q'' = 2q³, whose acceleration does
 //! not depend on the velocity, so that path of the method is not seen there.)
 //!
