@@ -3,7 +3,7 @@
 //! An entry names the equation (number, section, title, kind, printed LaTeX), the functions that
 //! encode it, and its checks. A check is a generic function that evaluates the printed forms of
 //! the display, side by side with independent references, as *chains* of values that must all be
-//! equal; it is instantiated for every scalar type by the [`ladder_fns`] and [`particle_fns`]
+//! equal; it is instantiated for every scalar type by the `ladder_fns!` and `particle_fns!`
 //! macros, so the same code runs in f64, with running error bounds, in exact rationals and in
 //! degree-counting mode. [`check`] runs the checks; [`sample`] draws the states.
 

@@ -2,8 +2,8 @@
 //!
 //! A float sample is drawn in plain f64 (what a user would compute with) and carried both as f64
 //! and as [`Bound`], whose error bound gives the check its tolerance. An exact sample is a set of
-//! random integers, turned into a state by the same generic builder in [`Rational`] (to evaluate)
-//! and in [`Degree`] (to bound the degree for the Schwartz-Zippel lemma). Exact points on the
+//! random integers, turned into a state by the same generic builder in [`Rational`](crate::scalar::Rational) (to evaluate)
+//! and in [`Degree`](crate::scalar::Degree) (to bound the degree for the Schwartz-Zippel lemma). Exact points on the
 //! unit circle come from sin θ = 2t/(1+t²), cos θ = (1−t²)/(1+t²).
 
 use crate::ladder::floor_phase::Slide;

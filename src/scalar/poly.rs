@@ -18,7 +18,7 @@
 //! (`ring.add(a, b)`), which does not fit the project's [`Scalar`](super::Scalar) trait, whose
 //! values carry their own `+ − × ÷` so that one generic function serves every number type; and
 //! the only ideal needed here has a one-line Gröbner basis. Coefficients are [`Coeff`]: machine
-//! words while they fit, `BigRational` beyond (see [`super::coeff`]).
+//! words while they fit, `BigRational` beyond (see the `coeff` module).
 
 use super::Coeff;
 use num_traits::{One, Zero};

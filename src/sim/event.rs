@@ -161,7 +161,7 @@ pub fn crosses(dir: Direction, before: f64, after: f64) -> bool {
 }
 
 /// Brent's root finder on `[a, b]` with `f(a)`, `f(b)` of opposite signs (or one zero).
-/// Iterates until the bracket is as narrow as f64 allows; at most [`MAX_ITERATIONS`] iterations.
+/// Iterates until the bracket is as narrow as f64 allows; at most 2,200 iterations (`MAX_ITERATIONS`).
 /// (R. P. Brent, *Algorithms for Minimization without Derivatives*, 1973, ch. 4, `zero`.)
 pub fn brent(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, mut fa: f64, mut fb: f64) -> f64 {
     if fa == 0.0 {

@@ -1,6 +1,6 @@
 //! The parts of a scene below its parsing ([`super::scene`]): where a run ends, the contact
-//! model, the limits, and the raw TOML tables. [`super::scene_checks`],
-//! [`super::scene_shape`] and [`super::output`] build on these, and `scene` on all of them.
+//! model, the limits, and the raw TOML tables. `scene_checks`,
+//! `scene_shape` and [`super::output`] build on these, and `scene` on all of them.
 
 use serde::Deserialize;
 use toml::Spanned;

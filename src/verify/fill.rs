@@ -93,7 +93,7 @@ fn label_end(line: &str) -> Option<usize> {
 }
 
 /// One line filled to `width` columns: unchanged when it fits, else broken at spaces. A line
-/// with a label column ([`label_end`]) keeps its label as it is and continues under its text;
+/// with a label column (`label_end`) keeps its label as it is and continues under its text;
 /// any other line continues two columns right of its indent.
 pub fn fill_line(line: &str, width: usize) -> String {
     if self::width(line) <= width {

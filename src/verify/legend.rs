@@ -6,7 +6,7 @@ use super::EquationResult;
 use crate::registry::check::{Config, TOLERANCE_FACTOR};
 use crate::registry::prove::PARTICLE_COUNTS;
 
-/// One entry per column of [`super::table`] (the test in `tests/verify_table.rs` holds every
+/// One entry per column of [`super::table::table`] (the test in `tests/verify_table.rs` holds every
 /// column header to an entry here), and what a row's status means. One line per entry (the kinds
 /// one each): `ladder verify` fills them to the terminal's width, continuing under the text.
 pub fn legend(cfg: &Config) -> String {
@@ -48,7 +48,7 @@ pub fn proved_particle_counts() -> String {
     }
 }
 
-/// The columns of the two layouts of [`super::table`] that `legend` text does not explain: a
+/// The columns of the two layouts of [`super::table::table`] that `legend` text does not explain: a
 /// column is explained by a line that starts with two spaces and its header, then a space.
 pub fn unexplained_columns(legend: &str) -> Vec<&'static str> {
     super::table::COLUMNS

@@ -165,11 +165,11 @@ pub trait Stepper<const N: usize> {
         None
     }
     /// The Taylor method's series of the last step (in τ = t − t_prev), from which an event may
-    /// form its own polynomial ([`crate::sim::event::Event::series`]); None for other methods.
+    /// form its own polynomial ([`Taylor::series`](taylor::Taylor::series)); None for other methods.
     fn step_series(&self) -> Option<&taylor::Series<N>> {
         None
     }
-    /// (sin, cos) of y[0] at the current state when the stepper carries them (the Taylor
+    /// (sin, cos) of `y[0]` at the current state when the stepper carries them (the Taylor
     /// method: the values of their own series), so an event needs no sin or cos per step
     /// ([`crate::sim::event::Event::value_with_trig`]); None for other methods.
     fn trig(&self) -> Option<(f64, f64)> {

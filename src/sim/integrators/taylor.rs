@@ -11,7 +11,7 @@
 //! laws then give the next orders: θ_{k+1} = θ̇_k/(k+1) and θ̇_{k+1} = a_k/(k+1), with a_k the
 //! k-th coefficient of the acceleration, a product/quotient of series built from s, c and θ̇.
 //! Only sin θ0 and cos θ0 enter; nothing else transcendental. The recursions are written once,
-//! generic over [`Scalar`], so they run in f64, in exact rationals (where the tests give s0, c0
+//! generic over [`Scalar`](crate::scalar::Scalar), so they run in f64, in exact rationals (where the tests give s0, c0
 //! as a rational point of the circle) and in the error-bound scalar. The f64 stepper carries
 //! (sin θ, cos θ) from step to step by evaluating their own series, so `sin_cos` is taken once,
 //! at the start (and after an event restarts the stepper).

@@ -42,9 +42,9 @@ pub struct Series<const N: usize> {
     unit_over_k: [f64; MAX_ORDER + 2],
     /// `y[i][k]`: coefficient k of component i.
     pub y: [[f64; MAX_ORDER + 1]; N],
-    /// Coefficients of sin y[0].
+    /// Coefficients of sin `y[0]`.
     pub sin: [f64; MAX_ORDER + 1],
-    /// Coefficients of cos y[0].
+    /// Coefficients of cos `y[0]`.
     pub cos: [f64; MAX_ORDER + 1],
     /// Scratch of the f64 fast path ([`super::taylor_f64`]): (cos, sin) of each order.
     pairs: [super::taylor_f64::Pair; MAX_ORDER + 1],
