@@ -36,6 +36,14 @@ fn worst_ratio(p: &PhaseOne, big_omega2: f64, t_end: f64) -> f64 {
         // First order: (θ, θ̇) with their t-derivatives.
         let (th, rt) = p.theta_rate_dual(Dual64::new(t, 1.0));
         let (theta, rate) = (th.re, rt.re);
+        // The one-value accessors give the pair checked here: the f64 and dual paths round
+        // differently, each within the C·u of the error model.
+        let (theta_f, rate_f) = (p.theta(t), p.rate(t));
+        assert!(
+            (theta_f - theta).abs() <= 2.0 * C * U * theta
+                && (rate_f - rate).abs() <= 2.0 * C * U * rate,
+            "accessors at t = {t}: ({theta_f}, {rate_f}) against ({theta}, {rate})"
+        );
         let accel = big_omega2 * theta.sin();
         // dθ/dt from the angle formula against the separate rate formula.
         let r1 = (th.eps - rate).abs() / (C * U * rate.max(f64::MIN_POSITIVE));

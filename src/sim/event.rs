@@ -292,6 +292,38 @@ mod tests {
         assert!((r - 1.3).abs() <= 8.0 * f64::EPSILON * 1.3, "{r}");
     }
 
+    /// Brent's interpolation is what makes the method fast: on smooth simple roots it
+    /// converges superlinearly, where bisection alone needs about 52 evaluations to narrow
+    /// [1, 2] to adjacent floats. Measured on these three: 5-6 evaluations; 12 allows twice
+    /// that. An interpolant the safeguard keeps rejecting leaves the root right but falls back
+    /// to bisection: `(b − a) + (r − 1)` for `(b − a) (r − 1)` takes 21 on the cubic.
+    #[test]
+    fn brent_converges_superlinearly_on_smooth_roots() {
+        let cases: [(fn(f64) -> f64, f64, f64, f64); 3] = [
+            (f64::cos, 1.0, 2.0, std::f64::consts::FRAC_PI_2),
+            (
+                |x| x * x * x - 2.0 * x - 5.0,
+                2.0,
+                3.0,
+                2.094_551_481_542_326_6,
+            ),
+            (|x| x.exp() - 3.0, 1.0, 2.0, 3f64.ln()),
+        ];
+        for (g, a, b, root) in cases {
+            let evals = std::cell::Cell::new(0);
+            let f = |x: f64| {
+                evals.set(evals.get() + 1);
+                g(x)
+            };
+            let r = brent(f, a, b, g(a), g(b));
+            assert!(
+                (r - root).abs() <= 4.0 * f64::EPSILON * root,
+                "{r} vs {root}"
+            );
+            assert!(evals.get() <= 12, "{} evaluations for {root}", evals.get());
+        }
+    }
+
     #[test]
     fn crossing_needs_the_right_direction() {
         assert!(crosses(Direction::Falling, 1.0, -1.0));
