@@ -248,6 +248,32 @@ mod tests {
     use super::*;
     use crate::sim::rigid::{angular_acceleration, separation_factor};
 
+    /// The lift-off event's value (the floor force from (φ, φ̇)) is `floor::floor_force` at
+    /// θ = π/2 − φ, θ̇ = −φ̇. The rigid floor phase never lifts off, so no run can see this
+    /// value go wrong; this check does. Error model: each form sums m g and m l (|θ̈| + θ̇²)
+    /// with a few roundings each, and θ = π/2 − φ is rounded once (u, moving sin and cos by
+    /// at most u): 16 u times that scale.
+    #[test]
+    fn the_lift_off_value_is_the_floor_force_of_the_floor_phase() {
+        let ladder = Ladder {
+            mass: 3.0,
+            half_length: 0.7,
+            gravity: 9.81,
+        };
+        let u = f64::EPSILON / 2.0;
+        for (phi, rate) in [(1.2, -0.4), (0.6, 2.5), (0.05, 4.0), (1e-3, 0.1)] {
+            let got = floor_force(&ladder, phi, rate);
+            let want = super::super::floor::floor_force(&ladder, FRAC_PI_2 - phi, -rate);
+            let acc = floor_theta_acceleration(ladder.gravity / ladder.half_length, phi, rate);
+            let scale =
+                ladder.mass * (ladder.gravity + ladder.half_length * (acc.abs() + rate * rate));
+            assert!(
+                (got - want).abs() <= 16.0 * u * scale,
+                "φ = {phi}, φ̇ = {rate}: {got} against {want}"
+            );
+        }
+    }
+
     #[test]
     fn the_complement_is_exact_and_fails_without_the_low_part() {
         // θ0 = π/2 − 1e-12 as f64: its complement, from the f64 sum, against the long subtraction
