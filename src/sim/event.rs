@@ -325,7 +325,9 @@ mod tests {
     /// to bisection: `(b − a) + (r − 1)` for `(b − a) (r − 1)` takes 21 on the cubic.
     #[test]
     fn brent_converges_superlinearly_on_smooth_roots() {
-        let cases: [(fn(f64) -> f64, f64, f64, f64); 3] = [
+        // (function, bracket, root)
+        type Case = (fn(f64) -> f64, f64, f64, f64);
+        let cases: [Case; 3] = [
             (f64::cos, 1.0, 2.0, std::f64::consts::FRAC_PI_2),
             (
                 |x| x * x * x - 2.0 * x - 5.0,
