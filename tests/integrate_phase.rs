@@ -3,7 +3,8 @@
 //! order must not matter), a system that sets no step limit (`Ode::max_step`'s default) lets an
 //! adaptive method take steps as long as its error allows, and the explicit methods' stage
 //! times are right (the ladder's systems do not depend on t, so only a system that does sees
-//! them).
+//! them), a Taylor step's event rate is a time derivative, and radau5 gives up when Newton
+//! cannot converge at any usable step.
 
 use num_dual::DualNum;
 use sliding_ladder::sim::event::{Direction, Event};
@@ -151,4 +152,51 @@ fn the_taylor_rate_is_the_derivative_of_its_interpolant() {
             }
         }
     }
+}
+
+/// A Taylor step's event rate on one series (`taylor_poly::value_and_rate_on`, the flat event's
+/// Newton refinement): the τ-derivative of c(τ/H) is c'(τ/H)/H. Written out for
+/// c(x) = 1 + 2x + 3x² + 4x³ with H = 0.37: all terms positive, so a few ulps of each (16 u
+/// of the sum) cover the rounding. Mutation testing found `d · (1/H)` → `d / (1/H)` unseen.
+#[test]
+fn a_taylor_series_rate_is_its_time_derivative() {
+    use sliding_ladder::sim::integrators::taylor_poly::value_and_rate_on;
+    let (h, tau) = (0.37f64, 0.21f64);
+    let x = tau / h;
+    let (v, d) = value_and_rate_on(&[1.0, 2.0, 3.0, 4.0, 99.0], 3, 1.0 / h, tau);
+    let want_v = 1.0 + 2.0 * x + 3.0 * x * x + 4.0 * x * x * x;
+    let want_d = (2.0 + 6.0 * x + 12.0 * x * x) / h;
+    let u = f64::EPSILON / 2.0;
+    assert!(
+        (v - want_v).abs() <= 16.0 * u * want_v,
+        "{v} against {want_v}"
+    );
+    assert!(
+        (d - want_d).abs() <= 16.0 * u * want_d,
+        "{d} against {want_d}"
+    );
+}
+
+/// ẏ = −1e20 y whose Jacobian reads 0 (the value is taken off the dual number): radau5's
+/// simplified Newton iteration is then a fixed-point iteration, which contracts only for
+/// h < 1e-20, below the step floor 1e-14 max(|t|, 1). The step must give up with
+/// `NewtonFailed`, not halve on towards zero (a step of 1e-20 is no integration).
+struct BlindJacobian;
+
+impl Ode<1> for BlindJacobian {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 1]) -> [D; 1] {
+        [D::from(-1e20 * y[0].re())]
+    }
+}
+
+#[test]
+fn radau5_gives_up_when_newton_cannot_converge_at_any_usable_step() {
+    use sliding_ladder::sim::integrators::StepError;
+    let mut st = AnyStepper::new("radau5", Control::Tolerance(1e-8), 0.0, [1.0]).unwrap();
+    let r = st.step(&BlindJacobian, 1.0);
+    assert!(
+        matches!(r, Err(StepError::NewtonFailed { .. })),
+        "{r:?} at t = {}",
+        st.t()
+    );
 }
