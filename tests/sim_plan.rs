@@ -76,6 +76,23 @@ fn the_floor_phase_is_built_only_for_its_outputs() {
     assert!(flat.work.floor.is_some() && flat.flat.is_some());
     // flat without monitors: only the lift-off watch evaluates the floor force
     assert!(flat.work.force_evals > 0 && flat.floor_report.is_none());
+    // With the floor-force monitor the same run also searches each floor step for the force's
+    // minimum (`sim::minimum::minimum_on`: both ends, SAMPLES_PER_STEP = 4 interior samples and
+    // the two golden-section points before its first pass, 8 or more evaluations), and those
+    // evaluations are counted too (mutation testing: the search's count was dropped unseen).
+    let watched = run(
+        vec![Output::FlatTime, Output::FloorForceMin],
+        End::Flat,
+        Control::Tolerance(1e-10),
+    );
+    let steps = watched.work.floor.unwrap().steps;
+    assert_eq!(steps, flat.work.floor.unwrap().steps);
+    assert!(
+        watched.work.force_evals >= flat.work.force_evals + 8 * steps,
+        "{} force evaluations with the monitor, {} without, {steps} floor steps",
+        watched.work.force_evals,
+        flat.work.force_evals
+    );
 }
 
 #[test]

@@ -1,7 +1,8 @@
 //! The whole fall is scale-invariant (issue 11): for random m, l, g in 1e-30..1e30, every
 //! adaptive method and random tolerances τ in [1e-12, 1e-4], the run to flat never fails, the
 //! separation angle is within its error bound of the closed form, and flat time / √(l/g) and the
-//! energy error equal those of m = l = 1, g = 9.81 up to rounding.
+//! energy error equal those of m = l = 1, g = 9.81 up to rounding, and so do the floor-phase
+//! monitors in units of m g and l.
 //!
 //! **Error model of the angle** (the one of `ladder stability`'s extreme cases): an adaptive
 //! method with relative tolerance τ on the scale max(θ, θ̇/ω) that takes N steps moves
@@ -41,6 +42,8 @@ fn scene(ladder: Ladder, theta0: f64, rate0: f64, method: &str, tol: f64) -> Sce
             Output::SeparationAngle,
             Output::FlatTime,
             Output::EnergyError,
+            Output::FloorForceMin,
+            Output::TopClearanceMin,
         ],
         contact: ContactModel::Rigid,
     }
@@ -100,6 +103,13 @@ proptest! {
         let (t, t1) = (o.flat.unwrap().time / unit_time(&ladder), o1.flat.unwrap().time / unit_time(&unit));
         prop_assert!((t - t1).abs() <= 4.0 * U * t1, "flat time / T {t} vs {t1}");
         prop_assert_eq!(o.energy_error, o1.energy_error);
+        // The floor-phase monitors in units of m g and l: one product on the way out and one
+        // quotient here, 4 ulps. (Mutation testing: `· l` → `/ l` for the clearance went unseen.)
+        let (r, r1) = (o.floor_report.unwrap(), o1.floor_report.unwrap());
+        let (f, f1) = (r.floor_force_min / (ladder.mass * ladder.gravity), r1.floor_force_min / (unit.mass * unit.gravity));
+        prop_assert!((f - f1).abs() <= 4.0 * U * f1.abs(), "floor_force_min / (m g) {f} vs {f1}");
+        let (c, c1) = (r.top_clearance_min / ladder.half_length, r1.top_clearance_min / unit.half_length);
+        prop_assert!((c - c1).abs() <= 4.0 * U * c1.abs(), "top_clearance_min / l {c} vs {c1}");
     }
 
     /// With a push θ̇0 = f ω √(cos θ0), f in [0, 1) (faster and the wall would pull at once): no
