@@ -100,35 +100,3 @@ impl Ode<4> for FloorPhase {
         true
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::sim::complement::{complement, floor_state_at_separation, floor_to_theta};
-
-    /// The floor phase's start in θ (used by the work-precision tests' θ-form reference) is the
-    /// complement's start mapped back: X = l sin θ = l cos φ and Ẋ = l cos θ θ̇ = l sin φ θ̇,
-    /// each a product of a sine or cosine (a few ulps, including θ = π/2 − φ rounded once)
-    /// with l and θ̇: 8 ulps of l (|θ̇| + 1).
-    #[test]
-    fn the_start_in_theta_is_the_complement_s_start() {
-        let ladder = Ladder {
-            mass: 2.0,
-            half_length: 0.6,
-            gravity: 9.81,
-        };
-        for (theta, rate) in [(0.84, 1.1), (1.2, 0.3), (0.3, 2.0)] {
-            let got = state_at_separation(&ladder, theta, rate);
-            let want = floor_to_theta(&floor_state_at_separation(&ladder, complement(theta), rate));
-            let bound = 8.0 * f64::EPSILON * ladder.half_length * (rate.abs() + 1.0);
-            for i in 0..4 {
-                assert!(
-                    (got[i] - want[i]).abs() <= bound,
-                    "θ = {theta}: component {i}: {} against {}",
-                    got[i],
-                    want[i]
-                );
-            }
-        }
-    }
-}
