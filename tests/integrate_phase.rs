@@ -200,3 +200,44 @@ fn radau5_gives_up_when_newton_cannot_converge_at_any_usable_step() {
         st.t()
     );
 }
+
+/// ẏ = e^{3t}: the probe of the starting step sees the time.
+struct Exponential;
+
+impl Ode<1> for Exponential {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, t: f64, y: &[D; 1]) -> [D; 1] {
+        [y[0] * 0.0 + (3.0 * t).exp()]
+    }
+}
+
+/// The starting step is Hairer, Nørsett & Wanner's (*Solving ODEs I*, sec. II.4, steps a-f),
+/// written out here for ẏ = e^{3t}, y(0) = 1, τ = 1e-6, order 5: d0 = d1 = 1e6 (weights τ |y0|),
+/// h0 = 0.01 d0/d1, the Euler probe at t0 + h0, d2 = |f1 − f0|/(τ h0), h1 = (0.01/max(d1, d2))^(1/6),
+/// the step min(100 h0, h1). A handful of roundings, then a sixth root: 8 ulps. The systems of
+/// the crate are autonomous, so only a system like this one sees the probe's time (mutation
+/// testing: `t + h0` → `t − h0` and `t · h0` went unseen).
+#[test]
+fn the_starting_step_is_hairer_s() {
+    use sliding_ladder::sim::integrators::initial_step;
+    let tol = 1e-6f64;
+    let (d0, d1) = (1.0 / tol, 1.0 / tol);
+    let h0 = 0.01 * d0 / d1;
+    let d2 = ((3.0 * h0).exp() - 1.0) / tol / h0;
+    let want = (100.0 * h0).min((0.01 / d1.max(d2)).powf(1.0 / 6.0));
+    let mut evals = 0;
+    let got = initial_step(
+        &Exponential,
+        0.0,
+        &[1.0],
+        &[1.0],
+        tol,
+        5,
+        f64::INFINITY,
+        &mut evals,
+    );
+    assert!(
+        (got - want).abs() <= 8.0 * f64::EPSILON * want,
+        "{got} against {want}"
+    );
+    assert_eq!(evals, 1, "one probe");
+}
