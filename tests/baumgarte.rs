@@ -1,0 +1,81 @@
+//! The constrained wall phase (`sim::constrained`) obeys Baumgarte's law off the constraint
+//! manifold: each constraint g (top on the wall g₁ = x − sin θ, foot on the floor
+//! g₂ = y − cos θ) satisfies g̈ + 2α ġ + β² g = 0 along the model's motion, which is what turns
+//! the index-1 drift into a damped oscillator. The derivatives are written out here from the
+//! constraints alone: ġ₁ = ẋ − cos θ θ̇, g̈₁ = ẍ + sin θ θ̇² − cos θ θ̈, ġ₂ = ẏ + sin θ θ̇,
+//! g̈₂ = ÿ + cos θ θ̇² + sin θ θ̈, with (ẍ, ÿ, θ̈) the model's right-hand side.
+//!
+//! Error model: each residual sums terms of size at most 1 + θ̇² + 2α|ġ| + β²|g| + |q̈|, each
+//! carrying a few roundings (the multipliers' closed form, products, sums): 32 u of that scale.
+//! Mutation testing found the gain 2α → 2 + α in the multipliers unseen.
+
+use sliding_ladder::sim::constrained::Constrained;
+use sliding_ladder::sim::integrators::eval;
+
+const U: f64 = f64::EPSILON / 2.0;
+
+/// The two residuals g̈ + 2α ġ + β² g and their rounding bound, at state `y`.
+fn residuals(c: &Constrained, y: &[f64; 6]) -> ([f64; 2], f64) {
+    let f = eval(c, 0.0, y);
+    let (s, co) = y[2].sin_cos();
+    let w = y[5];
+    let g = [y[0] - s, y[1] - co];
+    let gd = [y[3] - co * w, y[4] + s * w];
+    let gdd = [f[3] + s * w * w - co * f[5], f[4] + co * w * w + s * f[5]];
+    let r = [0, 1].map(|i| gdd[i] + 2.0 * c.alpha * gd[i] + c.beta * c.beta * g[i]);
+    let scale = 1.0
+        + w * w
+        + 2.0 * c.alpha * gd[0].abs().max(gd[1].abs())
+        + c.beta * c.beta * g[0].abs().max(g[1].abs())
+        + f[3].abs().max(f[4].abs()).max(f[5].abs());
+    (r, 32.0 * U * scale)
+}
+
+/// States off the manifold (constraint errors of 1e-3..1e-1 and rates of them).
+const STATES: [[f64; 6]; 3] = [
+    [0.5, 0.9, 0.45, 0.2, -0.1, 0.7],
+    [0.05, 0.98, 0.1, 0.01, 0.03, 0.2],
+    [0.9, 0.3, 1.3, -0.4, 0.5, 1.1],
+];
+
+#[test]
+fn each_constraint_is_a_damped_oscillator_off_the_manifold() {
+    for (alpha, beta) in [(0.0, 0.0), (1.0, 1.0), (5.0, 3.0), (0.3, 20.0)] {
+        let c = Constrained { alpha, beta };
+        for y in STATES {
+            let (r, bound) = residuals(&c, &y);
+            for (i, ri) in r.iter().enumerate() {
+                assert!(
+                    ri.abs() <= bound,
+                    "α = {alpha}, β = {beta}, g{}: residual {ri:e} > {bound:e} at {y:?}",
+                    i + 1
+                );
+            }
+        }
+    }
+}
+
+/// The check sees a wrong gain: the residuals of the model with gain α, judged as if it were
+/// α + 1, are 2 ġ, far outside the bound.
+#[test]
+fn a_wrong_gain_fails_the_check() {
+    let c = Constrained {
+        alpha: 5.0,
+        beta: 3.0,
+    };
+    let judged = Constrained {
+        alpha: 6.0,
+        beta: 3.0,
+    };
+    for y in STATES {
+        let f = eval(&c, 0.0, &y);
+        let (s, co) = y[2].sin_cos();
+        let w = y[5];
+        let gd = y[3] - co * w;
+        let gdd = f[3] + s * w * w - co * f[5];
+        let g = y[0] - s;
+        let r = gdd + 2.0 * judged.alpha * gd + judged.beta * judged.beta * g;
+        let (_, bound) = residuals(&judged, &y);
+        assert!(r.abs() > bound, "{r:e} within {bound:e} at {y:?}");
+    }
+}
