@@ -18,14 +18,13 @@
 
 use clap::Parser;
 use sliding_ladder::cli::simulate::{files, to_json};
-use sliding_ladder::report::campaign::{draw, selected, work_share, WorkShare};
+use sliding_ladder::report::campaign::{busier_steps, draw, selected, work_share, WorkShare};
 use sliding_ladder::report::campaign_judge::{non_finite, out_of_tolerance, Problem, Watchdog};
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::outcome::unreached_end;
 use sliding_ladder::sim::output::Output;
 use sliding_ladder::sim::run::RunError;
 use sliding_ladder::sim::scene;
-use sliding_ladder::sim::scene_work::phase_steps;
 use std::collections::BTreeMap;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::PathBuf;
@@ -132,21 +131,7 @@ fn run_scene(text: &str, (above, cap): (f64, f64), only: Option<&str>) -> Verdic
     if !selected(&scene.contact, only) {
         return Verdict::Excluded;
     }
-    // A scene without a control (the closed form, `method = "exact"`) takes no steps: its
-    // busier phase is 0 steps, so it is light, not heavy. (Until 2026-11-25 it skipped this
-    // check and ran in both shares: about 6,900 of each heavy chunk's 17,200 were closed forms.)
-    let busier = scene.control.map_or(0.0, |c| {
-        let start = (scene.theta0, scene.rate0);
-        let steps = phase_steps(
-            &scene.ladder,
-            start,
-            &scene.method,
-            c,
-            scene.end,
-            scene.contact,
-        );
-        steps[0].max(steps[1])
-    });
+    let busier = busier_steps(&scene);
     match work_share(busier, cap, above) {
         WorkShare::OverCap => return Verdict::Skipped,
         WorkShare::Light => return Verdict::Light,

@@ -308,3 +308,24 @@ fn the_default_campaign_runs_every_scene_under_the_cap() {
     assert_eq!(work_share(1e4, 1e7, 1e4), WorkShare::Light);
     assert_eq!(work_share(2e4, 1e7, 1e4), WorkShare::Run);
 }
+
+/// A closed-form scene takes no steps, so a heavy-share campaign leaves it to the light share;
+/// a fixed-step scene's estimate is its steps. The check can fail: before 2026-11-25 a scene
+/// without a control skipped the estimate and ran in both shares.
+#[test]
+fn a_closed_form_scene_is_light() {
+    use sliding_ladder::report::campaign::{busier_steps, work_share, WorkShare};
+    use sliding_ladder::sim::integrators::Control;
+    use sliding_ladder::sim::scene::End;
+    let mut sc = sliding_ladder::report::work_precision::scene_at(0.3, 0.0);
+    sc.method = "exact".into();
+    sc.control = None;
+    sc.end = End::Flat;
+    assert_eq!(busier_steps(&sc), 0.0);
+    assert_eq!(work_share(busier_steps(&sc), 1e7, 1e4), WorkShare::Light);
+    sc.method = "rk4".into();
+    sc.control = Some(Control::Fixed(1e-5));
+    let steps = busier_steps(&sc);
+    assert!(steps > 1e4, "{steps}");
+    assert_eq!(work_share(steps, 1e7, 1e4), WorkShare::Run);
+}

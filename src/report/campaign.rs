@@ -27,7 +27,8 @@
 
 use crate::sim::integrators::{METHODS, RIGID_METHODS};
 use crate::sim::output::Output;
-use crate::sim::scene::{ContactModel, End};
+use crate::sim::scene::{ContactModel, End, Scene};
+use crate::sim::scene_work::phase_steps;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::f64::consts::FRAC_PI_2;
@@ -99,6 +100,24 @@ pub enum WorkShare {
     OverCap,
     /// At most `--work-above` (when given, > 0): a capped campaign's share, not run.
     Light,
+}
+
+/// The plan's estimate of the steps of `scene`'s busier phase (`sim::scene_work::phase_steps`);
+/// 0 for a scene without a control, the closed form (`method = "exact"`), which takes no steps.
+/// (Until 2026-11-25 the campaign skipped the estimate for such a scene, so it ran in both
+/// shares: about 6,900 closed forms a chunk were counted as heavy.)
+pub fn busier_steps(scene: &Scene) -> f64 {
+    scene.control.map_or(0.0, |c| {
+        let steps = phase_steps(
+            &scene.ladder,
+            (scene.theta0, scene.rate0),
+            &scene.method,
+            c,
+            scene.end,
+            scene.contact,
+        );
+        steps[0].max(steps[1])
+    })
 }
 
 /// The share of a scene whose busier phase needs `busier` steps (0 for an adaptive method whose
