@@ -19,7 +19,7 @@
 
 use sliding_ladder::sim::integrators::any::AnyStepper;
 use sliding_ladder::sim::integrators::fixed::{FixedMethod, FixedStep};
-use sliding_ladder::sim::integrators::{eval, Control, Ode};
+use sliding_ladder::sim::integrators::{eval, Control, Ode, Stepper};
 use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel};
 use sliding_ladder::sim::penalty_confirm::{rigid_separation_angle, separation_bound};
 use sliding_ladder::sim::penalty_run::{separate_with, PenaltySeparation};
@@ -90,24 +90,21 @@ fn step() -> f64 {
     H_OMEGA / (2.0 * KAPPA.sqrt())
 }
 
-fn with_stepper(y0: [f64; 6], method: &str, control: Control) -> Run {
-    let (_, m) = model();
-    let mut st = AnyStepper::new(method, control, 0.0, y0).unwrap();
-    let run = separate_with(&m, &mut st, 100_000_000);
+/// The model's separation with `stepper`, which must reach it.
+fn separate<St: Stepper<6>>(stepper: &mut St) -> Run {
+    let run = separate_with(&model().1, stepper, 100_000_000);
     Run {
         separation: run.result.unwrap(),
         steps: run.stats.steps,
     }
 }
 
+fn with_stepper(y0: [f64; 6], method: &str, control: Control) -> Run {
+    separate(&mut AnyStepper::new(method, control, 0.0, y0).unwrap())
+}
+
 fn mid_step(y0: [f64; 6]) -> Run {
-    let (_, m) = model();
-    let mut st = FixedStep::<MidStepKicks, 6>::new(0.0, y0, step());
-    let run = separate_with(&m, &mut st, 100_000_000);
-    Run {
-        separation: run.result.unwrap(),
-        steps: run.stats.steps,
-    }
+    separate(&mut FixedStep::<MidStepKicks, 6>::new(0.0, y0, step()))
 }
 
 /// |θ_s(run) − θ_s(reference)| and the two runs' integration bounds added (module docs).
