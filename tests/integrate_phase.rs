@@ -241,3 +241,71 @@ fn the_starting_step_is_hairer_s() {
     );
     assert_eq!(evals, 1, "one probe");
 }
+
+/// A step the integrator cannot take ends the phase with that step's error (`RunError::Step`).
+#[test]
+fn a_failed_step_ends_the_phase_with_its_error() {
+    use sliding_ladder::sim::integrators::StepError;
+    use sliding_ladder::sim::run::RunError;
+    let mut st = AnyStepper::new("radau5", Control::Tolerance(1e-8), 0.0, [1.0]).unwrap();
+    let r = integrate_phase(&BlindJacobian, &mut st, &[], 1.0, 1000, &mut Worst(0.0, 0));
+    assert!(
+        matches!(r, Err(RunError::Step(StepError::NewtonFailed { .. }))),
+        "{r:?}"
+    );
+}
+
+/// An event that gives no rate says so (`Event::rate`'s default is None), so its root is
+/// refined by Brent's method and never by Newton's with a made-up slope.
+#[test]
+fn an_event_without_a_rate_gives_none() {
+    for y in [-1.0, 0.0, 0.3, 7.0] {
+        assert_eq!(Reaches(0.5).rate(0.0, &[y], &[1.0]), None);
+    }
+}
+
+/// ẋ = 1 − x from x = 0 (x = 1 − e^{−t} < 1), whose right-hand side is NaN past x = 1: a long
+/// trial step's stages overshoot there although the motion never does. Counts the NaNs given.
+struct Relax(std::cell::Cell<u64>);
+
+impl Ode<1> for Relax {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 1]) -> [D; 1] {
+        if y[0].re() > 1.0 {
+            self.0.set(self.0.get() + 1);
+            return [D::from(f64::NAN)];
+        }
+        [-y[0] + 1.0]
+    }
+    fn scale(&self, _y: &[f64; 1]) -> [f64; 1] {
+        [1.0]
+    }
+}
+
+/// dopri5 and dop853 reject a trial step whose stages or error are not finite and shrink it,
+/// and go on to the end on the motion (`AdaptiveState::reject_non_finite`). Error model: the
+/// global error of a run at tolerance τ on this contracting motion stays within a few τ; 10 τ
+/// is allowed. Without the rejection a NaN would be accepted or the step never shrunk.
+#[test]
+fn non_finite_trial_steps_are_rejected_and_the_run_goes_on() {
+    let tol = 1e-3;
+    for method in ["dopri5", "dop853"] {
+        let sys = Relax(std::cell::Cell::new(0));
+        let mut st = AnyStepper::new(method, Control::Tolerance(tol), 0.0, [0.0]).unwrap();
+        while st.t() < 40.0 {
+            st.step(&sys, 40.0)
+                .unwrap_or_else(|e| panic!("{method}: {e:?} at t = {}", st.t()));
+            assert!(st.y()[0].is_finite(), "{method}: accepted {:?}", st.y());
+        }
+        let exact = 1.0 - (-40.0f64).exp();
+        assert!(
+            sys.0.get() > 0,
+            "{method}: no stage overshot x = 1, the path is not run"
+        );
+        assert!(st.stats().rejected > 0, "{method}: {:?}", st.stats());
+        assert!(
+            (st.y()[0] - exact).abs() <= 10.0 * tol,
+            "{method}: x(40) = {} against {exact}",
+            st.y()[0]
+        );
+    }
+}

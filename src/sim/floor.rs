@@ -47,11 +47,6 @@ pub fn energy(ladder: &Ladder, theta: f64, rate: f64, centre_velocity_x: f64) ->
         + m * g * l * theta.cos()
 }
 
-/// Horizontal momentum p_x = m Ẋ (conserved: no horizontal force).
-pub fn momentum_x(ladder: &Ladder, centre_velocity_x: f64) -> f64 {
-    ladder.mass * centre_velocity_x
-}
-
 /// Abscissa of the top C: X − l sin θ (the wall is x = 0; the top is clear of it when > 0).
 pub fn top_x(ladder: &Ladder, theta: f64, centre_x: f64) -> f64 {
     centre_x - ladder.half_length * theta.sin()

@@ -98,16 +98,6 @@ impl Contact {
     }
 }
 
-/// Wall penetration p_w = −x_C = sin θ − x = f_w/κ (units of l; positive inside the wall).
-pub fn wall_penetration(contact: &Contact, y: &[f64; 6]) -> f64 {
-    y[1] / contact.kappa
-}
-
-/// Floor penetration p_f = −y_D = cos θ − y = f_f/κ (units of l; positive inside the floor).
-pub fn floor_penetration(contact: &Contact, y: &[f64; 6]) -> f64 {
-    y[2] / contact.kappa
-}
-
 /// A one-sided spring-dashpot in force units: max(0, f + (γ/κ) v) while f = κ p > 0, zero
 /// otherwise. (The kinks are where the force is zero; num-dual differentiates the active branch.)
 pub fn one_sided<D: DualNum<Primitive = f64> + Copy>(contact: &Contact, f: D, rate: D) -> D {

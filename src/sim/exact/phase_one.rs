@@ -177,11 +177,6 @@ impl PhaseOne {
         self.rate0
     }
 
-    /// Ω² = 3g/(4l), 1/s².
-    pub fn big_omega2(&self) -> f64 {
-        self.big_omega2
-    }
-
     /// The complete integral K(k) of the orbit's modulus (∞ on the separatrix, 0 at rest).
     pub fn quarter_period(&self) -> f64 {
         match &self.orbit {

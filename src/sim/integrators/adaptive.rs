@@ -121,15 +121,6 @@ impl<const N: usize> AdaptiveState<N> {
         }
     }
 
-    /// A fresh start at `(t, y)` that keeps the tolerance, the counters and the step proposal
-    /// (the dynamics change at an event, not their time scale).
-    pub fn restarted(&self, t: f64, y: [f64; N]) -> Self {
-        let mut s = AdaptiveState::new(t, y, self.rtol);
-        s.stats = self.stats;
-        s.h = self.h;
-        s
-    }
-
     /// [`start_step`] from the current point, reusing the cached slope.
     pub fn start<S: Ode<N>>(&mut self, sys: &S, order: i32) -> Result<([f64; N], f64), StepError> {
         let (t, y, f) = (self.t, self.y, self.f);

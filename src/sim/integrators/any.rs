@@ -117,9 +117,6 @@ impl<const N: usize> Stepper<N> for AnyStepper<N> {
     fn trig(&self) -> Option<(f64, f64)> {
         each!(self, s => s.trig())
     }
-    fn restart(&mut self, t: f64, y: [f64; N]) {
-        each!(self, s => s.restart(t, y))
-    }
     fn stats(&self) -> Stats {
         each!(self, s => s.stats())
     }

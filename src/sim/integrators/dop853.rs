@@ -199,14 +199,6 @@ impl<const N: usize> Stepper<N> for Dop853<N> {
         })
     }
 
-    fn restart(&mut self, t: f64, y: [f64; N]) {
-        // Keep the step-size proposal: the dynamics change at an event, not their time scale.
-        *self = Dop853 {
-            state: self.state.restarted(t, y),
-            ..Dop853::new(t, y, self.state.rtol)
-        };
-    }
-
     fn stats(&self) -> Stats {
         self.state.stats
     }

@@ -153,11 +153,6 @@ impl<const N: usize> Stepper<N> for Dopri5<N> {
         })
     }
 
-    fn restart(&mut self, t: f64, y: [f64; N]) {
-        self.state = self.state.restarted(t, y);
-        self.k = [[0.0; N]; 7];
-    }
-
     fn stats(&self) -> Stats {
         self.state.stats
     }

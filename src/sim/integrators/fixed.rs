@@ -134,14 +134,6 @@ impl<M: FixedMethod<N>, const N: usize> Stepper<N> for FixedStep<M, N> {
         hermite(self.t_prev, h, &self.y_prev, &self.f_prev, &self.y, &f1, t)
     }
 
-    fn restart(&mut self, t: f64, y: [f64; N]) {
-        self.t = t;
-        self.y = y;
-        self.f = None;
-        self.t_prev = t;
-        self.y_prev = y;
-    }
-
     fn stats(&self) -> Stats {
         self.stats
     }

@@ -175,8 +175,6 @@ pub trait Stepper<const N: usize> {
     fn trig(&self) -> Option<(f64, f64)> {
         None
     }
-    /// Start again at `(t, y)` (after an event ends a phase).
-    fn restart(&mut self, t: f64, y: [f64; N]);
     /// Counters so far.
     fn stats(&self) -> Stats;
 }

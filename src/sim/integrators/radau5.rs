@@ -227,7 +227,7 @@ impl<const N: usize> Stepper<N> for Radau5<N> {
                 self.stats.rejected += 1;
                 continue;
             }
-            // Predictor: extrapolate the last collocation polynomial (zero after a restart).
+            // Predictor: extrapolate the last collocation polynomial (zero at the start).
             let mut z = [[0.0; N]; 3];
             if self.have_prev {
                 let hp = self.t - self.t_prev;
@@ -365,13 +365,6 @@ impl<const N: usize> Stepper<N> for Radau5<N> {
             return self.y;
         }
         self.collocation((t - self.t_prev) / h)
-    }
-
-    fn restart(&mut self, t: f64, y: [f64; N]) {
-        let (rtol, newton_rtol, stats, h) = (self.rtol, self.newton_rtol, self.stats, self.h);
-        *self = Radau5::new(t, y, rtol).with_newton_rtol(newton_rtol);
-        self.stats = stats;
-        self.h = h;
     }
 
     fn stats(&self) -> Stats {

@@ -14,7 +14,7 @@
 //! generic over [`Scalar`](crate::scalar::Scalar), so they run in f64, in exact rationals (where the tests give s0, c0
 //! as a rational point of the circle) and in the error-bound scalar. The f64 stepper carries
 //! (sin θ, cos θ) from step to step by evaluating their own series, so `sin_cos` is taken once,
-//! at the start (and after an event restarts the stepper).
+//! at the start of each phase (each phase starts a stepper of its own).
 //!
 //! **Order and step** (Á. Jorba and M. Zou, "A software package for the numerical integration of
 //! ODEs by means of high-order Taylor methods", *Experimental Mathematics* 14 (2005), sec. 3.2):
@@ -276,13 +276,6 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
             }
             acc * inv_unit
         }))
-    }
-
-    fn restart(&mut self, t: f64, y: [f64; N]) {
-        let order = self.series.order;
-        let stats = self.stats;
-        *self = Taylor::with_order(t, y, self.tol, order);
-        self.stats = stats;
     }
 
     fn stats(&self) -> Stats {

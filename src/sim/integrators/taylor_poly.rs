@@ -115,12 +115,6 @@ impl<const N: usize> Series<N> {
         let y = std::array::from_fn(|j| ye[j] + x * yo[j]);
         (y, (se + x * so, ce + x * co))
     }
-
-    /// H/k for k = 0..=p+1 in f64: what the recursions take for 1/k to give the coefficients in
-    /// the unit H (for models' `Ode::taylor_series`).
-    pub fn inv(&self) -> &[f64] {
-        &self.unit_over_k[..self.order + 2]
-    }
 }
 
 /// The largest power of two ≤ `x` for a positive normal `x` (its exponent bits alone); 1 for
