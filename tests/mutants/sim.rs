@@ -1,0 +1,99 @@
+//! The quick `src/sim` test files in one test binary, for mutation testing only
+//! (`equations/EXTENDING.md`, "src/sim"). Each file below is also a test target of its own, and
+//! `cargo test` runs it there: this target has `test = false` in `Cargo.toml`, so `cargo test`
+//! does not build it and nothing runs twice. It is built only when named
+//! (`cargo mutants ... --cargo-arg=--test=sim_mutants`).
+//!
+//! Why one binary: a mutant of the library makes cargo rebuild and link every test target that
+//! uses it. Built one by one, the 43 files cost 43 crate compilations and links a mutant; here
+//! they cost one. The files are included unchanged (`#[path]`), so a test fails here exactly
+//! when it fails in its own target. The list is the one in EXTENDING.md: every `src/sim` test
+//! file that runs in under about 5 s at opt-level 0.
+#![allow(dead_code, unused_imports)]
+
+#[path = "../angle_from_floor.rs"]
+mod angle_from_floor;
+#[path = "../baumgarte.rs"]
+mod baumgarte;
+#[path = "../campaign.rs"]
+mod campaign;
+#[path = "../cli_scene_errors.rs"]
+mod cli_scene_errors;
+#[path = "../constrained_drift_checkpoints.rs"]
+mod constrained_drift_checkpoints;
+#[path = "../exact_ode.rs"]
+mod exact_ode;
+#[path = "../exact_quadrature.rs"]
+mod exact_quadrature;
+#[path = "../exact_reference.rs"]
+mod exact_reference;
+#[path = "../exact_robust.rs"]
+mod exact_robust;
+#[path = "../fall_figures.rs"]
+mod fall_figures;
+#[path = "../floor_minima.rs"]
+mod floor_minima;
+#[path = "../floor_starts.rs"]
+mod floor_starts;
+#[path = "../integrate_phase.rs"]
+mod integrate_phase;
+#[path = "../near_flat_starts.rs"]
+mod near_flat_starts;
+#[path = "../order_per_phase.rs"]
+mod order_per_phase;
+#[path = "../penalty_confirm.rs"]
+mod penalty_confirm;
+#[path = "../penalty_energy.rs"]
+mod penalty_energy;
+#[path = "../penalty_estimate_margin.rs"]
+mod penalty_estimate_margin;
+#[path = "../penalty_refusals.rs"]
+mod penalty_refusals;
+#[path = "../penalty_retry.rs"]
+mod penalty_retry;
+#[path = "../scene_errors.rs"]
+mod scene_errors;
+#[path = "../scene_work.rs"]
+mod scene_work;
+#[path = "../sim_fall.rs"]
+mod sim_fall;
+#[path = "../sim_floor.rs"]
+mod sim_floor;
+#[path = "../sim_integrators.rs"]
+mod sim_integrators;
+#[path = "../sim_plan.rs"]
+mod sim_plan;
+#[path = "../sim_scale.rs"]
+mod sim_scale;
+#[path = "../stability_extreme.rs"]
+mod stability_extreme;
+#[path = "../stability_memory.rs"]
+mod stability_memory;
+#[path = "../stability_penalty.rs"]
+mod stability_penalty;
+#[path = "../taylor.rs"]
+mod taylor;
+#[path = "../taylor_every_scene.rs"]
+mod taylor_every_scene;
+#[path = "../taylor_f64.rs"]
+mod taylor_f64;
+#[path = "../taylor_order.rs"]
+mod taylor_order;
+#[path = "../taylor_poly.rs"]
+mod taylor_poly;
+#[path = "../taylor_scaled.rs"]
+mod taylor_scaled;
+#[path = "../taylor_step.rs"]
+mod taylor_step;
+#[path = "../tiny_starts.rs"]
+mod tiny_starts;
+#[path = "../top_clearance.rs"]
+mod top_clearance;
+#[path = "../unit_free_steps.rs"]
+mod unit_free_steps;
+#[path = "../verlet_penalty_start.rs"]
+mod verlet_penalty_start;
+#[path = "../verlet_velocity_dependent.rs"]
+mod verlet_velocity_dependent;
+#[path = "../work_precision.rs"]
+mod work_precision;
