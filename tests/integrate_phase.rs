@@ -309,3 +309,35 @@ fn non_finite_trial_steps_are_rejected_and_the_run_goes_on() {
         );
     }
 }
+
+/// At an equilibrium (ẏ = 0 and a zero state) the slope and its change are both zero, and
+/// Hairer, Nørsett & Wanner's starting step takes its fall-back branch (step e: d1, d2 ≤ 1e-15
+/// gives h1 = max(1e-6, 1e-3 h0)). Here h0 = 1e-6 (step b, d0 < 1e-5), so h1 = 1e-6 and the
+/// step min(100 h0, h1) is exactly 1e-6. (Mutation testing: h0 · 1e-3 → h0 + 1e-3 went unseen;
+/// it starts at 1e-4.)
+#[test]
+fn the_starting_step_at_an_equilibrium_is_hairer_s_fall_back() {
+    use sliding_ladder::sim::integrators::initial_step;
+    let mut evals = 0;
+    let got = initial_step(
+        &Still,
+        0.0,
+        &[0.0],
+        &[0.0],
+        1e-6,
+        5,
+        f64::INFINITY,
+        &mut evals,
+    );
+    assert_eq!(got, 1e-6);
+    assert_eq!(evals, 1, "one probe");
+}
+
+/// ẏ = 0: every state is an equilibrium.
+struct Still;
+
+impl Ode<1> for Still {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 1]) -> [D; 1] {
+        [y[0] * 0.0]
+    }
+}

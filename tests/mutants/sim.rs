@@ -21,6 +21,8 @@ mod campaign;
 mod cli_scene_errors;
 #[path = "../constrained_drift_checkpoints.rs"]
 mod constrained_drift_checkpoints;
+#[path = "../error_units.rs"]
+mod error_units;
 #[path = "../exact_ode.rs"]
 mod exact_ode;
 #[path = "../exact_quadrature.rs"]
