@@ -246,4 +246,69 @@ mod tests {
         assert!((t8 - 1.0 / 9.0).abs() <= 8.0 * f64::EPSILON / 9.0, "{t8:e}");
         assert!((gauss_legendre_5(|_| 1.0, 0.0, 2.0) - 2.0).abs() <= f64::EPSILON);
     }
+
+    /// An observer of the unit-Ω ladder (m = l = 1, g = 4/3) that computes only `impulse` and
+    /// `monitor`, from the phase start `t0`.
+    fn observer(t0: f64, impulse: bool, monitor: bool) -> TraceObserver<'static> {
+        TraceObserver {
+            ladder: Ladder {
+                mass: 1.0,
+                half_length: 1.0,
+                gravity: 4.0 / 3.0,
+            },
+            phase: 1,
+            trace: None,
+            monitor: monitor.then_some(FloorReport {
+                floor_force_min: f64::INFINITY,
+                top_clearance_min: f64::INFINITY,
+            }),
+            force_evals: 0,
+            phase_start: t0,
+            impulse: impulse.then_some(0.0),
+        }
+    }
+
+    /// A wall-phase step is split by its own length h into ⌈h (|θ̇| + Ω)/0.25⌉ pieces of five
+    /// force evaluations, wherever it lies in time (mutation testing: `t1 − t0` → `t1 + t0` went
+    /// unseen: same impulse, up to 64 pieces). A constant force F integrates to F h up to
+    /// rounding: GL5's weights sum to 2 within an ulp, and each of the n pieces' ends and the
+    /// step's end t0 + h are rounded at the size of t: |F| (4 u h + 2 (n + 2) u (|t0| + h)).
+    #[test]
+    fn a_wall_step_is_split_by_its_own_length() {
+        let (theta, rate) = (0.3, 0.1);
+        for (t0, h) in [(0.0, 0.1), (100.0, 0.1), (100.0, 1.0), (1e6, 0.5)] {
+            let mut ob = observer(t0, true, false);
+            Observer::<2>::step(&mut ob, t0, t0 + h, &|_| [theta, rate]);
+            let pieces = (h * (rate + 1.0) / 0.25).ceil() as u64;
+            assert_eq!(ob.force_evals, 5 * pieces, "step [{t0}, {t0} + {h}]");
+            let want = rigid::wall_force(&ob.ladder, theta, rate) * h;
+            let got = ob.impulse.unwrap();
+            let u = f64::EPSILON;
+            let bound = want.abs() / h * (4.0 * u * h + 2.0 * (pieces + 2) as f64 * u * (t0 + h));
+            assert!((got - want).abs() <= bound, "{got} against {want}");
+        }
+    }
+
+    /// The top clearance is 0 at the floor phase's start by construction, so the first step's
+    /// minimum is searched after its start, not at its end: a top that dips into the wall by
+    /// h²/4 within the first step is seen (mutation testing: the search's start `(t1 − t0)/5` →
+    /// `(t1 − t0) % 5` moved it to the step's end, where the clearance is 0 again). The dip is
+    /// found to rounding: the golden section's 1e-9 h in t moves a parabola's value by 1e-18 h²,
+    /// and X − sin θ cancels 0.48 to 0.06: 8 ulps of 1.
+    #[test]
+    fn the_first_floor_step_sees_the_top_dip_into_the_wall() {
+        let theta = 0.5f64;
+        for (t0, h) in [(0.0, 0.5), (3.0, 0.5), (3.0, 2.0)] {
+            let t1 = t0 + h;
+            let mut ob = observer(t0, false, true);
+            let dense = |t: f64| [theta, theta.sin() + (t - t0) * (t - t1), 0.0, 0.0];
+            Observer::<4>::step(&mut ob, t0, t1, &dense);
+            let got = ob.monitor.unwrap().top_clearance_min;
+            let want = -h * h / 4.0;
+            assert!(
+                (got - want).abs() <= 8.0 * f64::EPSILON,
+                "[{t0}, {t1}]: {got} against {want}"
+            );
+        }
+    }
 }
