@@ -1,0 +1,164 @@
+//! The root finders of `sim::event` on functions with known roots: accuracy, cost, fall-backs.
+
+use super::*;
+
+#[test]
+fn brent_finds_cos_root_to_the_last_ulp() {
+    let r = brent(f64::cos, 1.0, 2.0, 1f64.cos(), 2f64.cos());
+    assert!((r - std::f64::consts::FRAC_PI_2).abs() <= 2.0 * f64::EPSILON * 2.0);
+}
+
+#[test]
+fn newton_finds_cos_root_and_falls_back_without_derivative() {
+    let f = |t: f64| Some((t.cos(), -t.sin()));
+    let r = newton_in_bracket(f, 1.0, 2.0, 1f64.cos(), 2f64.cos()).unwrap();
+    assert!((r - std::f64::consts::FRAC_PI_2).abs() <= 8.0 * f64::EPSILON * 2.0);
+    // A wrong derivative still ends inside the bracket at the root (bisection guard).
+    let g = |t: f64| Some((t.cos(), 1.0));
+    let r = newton_in_bracket(g, 1.0, 2.0, 1f64.cos(), 2f64.cos()).unwrap();
+    assert!(
+        (r - std::f64::consts::FRAC_PI_2).abs() <= 4.0 * f64::EPSILON * 2.0,
+        "{r}"
+    );
+    assert!(newton_in_bracket(|_| None, 1.0, 2.0, 0.5, -0.4).is_none());
+}
+
+/// rtsafe's guarantee: a poor derivative costs speed, never more than bisection would
+/// take plus the Newton steps between bisections. With a slope 100 times too steep each
+/// Newton step covers 1 % of the way to the root; the "not halving" test bisects instead,
+/// so [1, 2] narrows in at most about 2 × 53 evaluations (a Newton step and a bisection in
+/// turn). Without that test Newton crawls and 2,200 iterations end 1e-10 short of the root.
+/// The noise stop trusts the derivative: a correction under 8 ulps stands for a distance
+/// 100 times that here, so the root is held to 100 × 8 ulps. (The events' rates are their
+/// exact derivatives along the motion, each checked against a difference quotient.)
+#[test]
+fn a_poor_derivative_costs_at_most_a_bisection_s_count_twice() {
+    let evals = std::cell::Cell::new(0);
+    let f = |t: f64| {
+        evals.set(evals.get() + 1);
+        Some((t.cos(), -100.0 * t.sin()))
+    };
+    let r = newton_in_bracket(f, 1.0, 2.0, 1f64.cos(), 2f64.cos()).unwrap();
+    let half_pi = std::f64::consts::FRAC_PI_2;
+    assert!(
+        (r - half_pi).abs() <= 100.0 * 8.0 * f64::EPSILON * 2.0,
+        "{r}"
+    );
+    assert!(evals.get() <= 2 * 53 + 4, "{} evaluations", evals.get());
+}
+
+#[test]
+fn newton_stops_when_the_correction_is_below_an_ulp() {
+    // f = (t − 2) + 1e-17: from t = 3 Newton lands on t = 2 exactly, where f is 1e-17 and
+    // the correction 1e-17 vanishes in t. That is converged; bisecting on from there
+    // towards the other end of the bracket took 50 more evaluations.
+    let evals = std::cell::Cell::new(0);
+    let f = |t: f64| {
+        evals.set(evals.get() + 1);
+        Some(((t - 2.0) + 1e-17, 1.0))
+    };
+    let r = newton_in_bracket(f, 1.0, 3.0, -1.0, 1.0).unwrap();
+    assert_eq!(r, 2.0);
+    assert!(evals.get() <= 3, "{} evaluations", evals.get());
+}
+
+#[test]
+fn newton_stops_when_two_corrections_bound_the_rest_within_the_noise() {
+    // cos from the secant's start on [1, 2]: the contraction rule saves the evaluation that
+    // would only confirm the root, and the root is still within the noise (8 ulps).
+    let evals = std::cell::Cell::new(0);
+    let f = |t: f64| {
+        evals.set(evals.get() + 1);
+        Some((t.cos(), -t.sin()))
+    };
+    let r = newton_in_bracket(f, 1.0, 2.0, 1f64.cos(), 2f64.cos()).unwrap();
+    let half_pi = std::f64::consts::FRAC_PI_2;
+    assert!((r - half_pi).abs() <= 8.0 * f64::EPSILON * 2.0, "{r}");
+    // Secant start, then corrections 7e-3, 1e-7, 5e-22: the third (converged by the
+    // contraction rule) is not evaluated again, so three evaluations, not four.
+    assert_eq!(evals.get(), 3);
+    // A linearly contracting iteration (slope 4/3 of the true one: each correction a
+    // quarter of the last) may stop by the rule, but only within the noise of the root.
+    let g = |t: f64| Some((t - 1.3, 4.0 / 3.0));
+    let r = newton_in_bracket(g, 1.0, 2.0, -0.3, 0.7).unwrap();
+    assert!((r - 1.3).abs() <= 8.0 * f64::EPSILON * 1.3, "{r}");
+}
+
+/// Brent's interpolation is what makes the method fast: on smooth simple roots it
+/// converges superlinearly, where bisection alone needs about 52 evaluations to narrow
+/// [1, 2] to adjacent floats. Measured on these three: 5-6 evaluations; 12 allows twice
+/// that. An interpolant the safeguard keeps rejecting leaves the root right but falls back
+/// to bisection: `(b − a) + (r − 1)` for `(b − a) (r − 1)` takes 21 on the cubic.
+#[test]
+fn brent_converges_superlinearly_on_smooth_roots() {
+    // (function, bracket, root)
+    type Case = (fn(f64) -> f64, f64, f64, f64);
+    let cases: [Case; 3] = [
+        (f64::cos, 1.0, 2.0, std::f64::consts::FRAC_PI_2),
+        (
+            |x| x * x * x - 2.0 * x - 5.0,
+            2.0,
+            3.0,
+            2.094_551_481_542_326_6,
+        ),
+        (|x| x.exp() - 3.0, 1.0, 2.0, 3f64.ln()),
+    ];
+    for (g, a, b, root) in cases {
+        let evals = std::cell::Cell::new(0);
+        let f = |x: f64| {
+            evals.set(evals.get() + 1);
+            g(x)
+        };
+        let r = brent(f, a, b, g(a), g(b));
+        assert!(
+            (r - root).abs() <= 4.0 * f64::EPSILON * root,
+            "{r} vs {root}"
+        );
+        assert!(evals.get() <= 12, "{} evaluations for {root}", evals.get());
+    }
+}
+
+#[test]
+fn crossing_needs_the_right_direction() {
+    assert!(crosses(Direction::Falling, 1.0, -1.0));
+    assert!(!crosses(Direction::Falling, -1.0, 1.0));
+    assert!(crosses(Direction::Rising, -1.0, 0.0));
+    assert!(!crosses(Direction::Rising, 0.0, 1.0));
+}
+
+/// Newton's method in a bracket does not depend on the scale of the event's value: with f and
+/// its derivative times a power of two λ every quotient and comparison (the secant start, the
+/// correction v/d, rtsafe's test |2v| > |dx_old d|) is the same in f64, so the root and the
+/// number of evaluations are identical bit for bit (mutation testing: `dx_old · d` →
+/// `dx_old / d` in that test went unseen; it compares a value with a time² over a value, so
+/// λ = 2^60 bisects where Newton would do).
+#[test]
+fn newton_in_a_bracket_does_not_depend_on_the_value_s_scale() {
+    // (value and derivative, bracket)
+    type Case = (fn(f64) -> (f64, f64), f64, f64);
+    let cases: [Case; 3] = [
+        (|x| (x.cos(), -x.sin()), 1.0, 2.0),
+        (|x| (x * x * x - 2.0 * x - 5.0, 3.0 * x * x - 2.0), 2.0, 3.0),
+        (
+            |x| ((x - 0.3).tanh(), 1.0 / (x - 0.3).cosh().powi(2)),
+            -1.0,
+            4.0,
+        ),
+    ];
+    for (g, a, b) in cases {
+        let run = |scale: f64| {
+            let evals = std::cell::Cell::new(0);
+            let f = |x: f64| {
+                evals.set(evals.get() + 1);
+                let (v, d) = g(x);
+                Some((scale * v, scale * d))
+            };
+            let r = newton_in_bracket(f, a, b, scale * g(a).0, scale * g(b).0).unwrap();
+            (r, evals.get())
+        };
+        let unit = run(1.0);
+        for scale in [2f64.powi(-60), 2f64.powi(60)] {
+            assert_eq!(run(scale), unit, "[{a}, {b}] at a scale {scale:e}");
+        }
+    }
+}
