@@ -5,7 +5,7 @@
 //! (`cargo mutants ... --cargo-arg=--test=sim_mutants`).
 //!
 //! Why one binary: a mutant of the library makes cargo rebuild and link every test target that
-//! uses it. Built one by one, the 44 files cost 44 crate compilations and links a mutant; here
+//! uses it. Built one by one, the 45 files cost 45 crate compilations and links a mutant; here
 //! they cost one. The files are included unchanged (`#[path]`), so a test fails here exactly
 //! when it fails in its own target. The list is the one in EXTENDING.md: every `src/sim` test
 //! file that runs in under about 5 s at opt-level 0.
@@ -53,6 +53,8 @@ mod penalty_estimate_margin;
 mod penalty_refusals;
 #[path = "../penalty_retry.rs"]
 mod penalty_retry;
+#[path = "../radau5_step_reuse.rs"]
+mod radau5_step_reuse;
 #[path = "../scene_errors.rs"]
 mod scene_errors;
 #[path = "../scene_work.rs"]

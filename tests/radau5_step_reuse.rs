@@ -1,0 +1,46 @@
+//! radau5 keeps its step size while Newton contracts fast and the controller would grow the
+//! step by less than 20 % (Hairer & Wanner II, sec. IV.8; radau5.f's QUOT1 = 1, QUOT2 = 1.2), so
+//! the LU factors of the step's linear systems are reused instead of formed again. On a linear
+//! system with its exact Jacobian the first Newton iterate is exact and the contraction is
+//! rounding, so the rule applies at every step whose proposal grows by 0-20 %: such steps repeat
+//! the last size exactly, and most steps do. (Mutation testing: the proposal's ratio h_new/h → h_new % h went
+//! unseen; it is never in [1, 1.2] for h < 1, so every step took a new size and new factors.)
+
+use num_dual::DualNum;
+use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::{Control, Ode, Stepper};
+
+/// ẏ = −y: linear, so Newton's first iterate solves each step's system exactly.
+struct Decay;
+
+impl Ode<1> for Decay {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 1]) -> [D; 1] {
+        [-y[0]]
+    }
+    fn scale(&self, _y: &[f64; 1]) -> [f64; 1] {
+        [1.0]
+    }
+}
+
+#[test]
+fn radau5_keeps_its_step_size_while_the_proposal_grows_by_less_than_a_fifth() {
+    let mut st = AnyStepper::new("radau5", Control::Tolerance(1e-8), 0.0, [1.0]).unwrap();
+    let mut sizes = Vec::new();
+    while st.t() < 10.0 {
+        let t0 = st.t();
+        st.step(&Decay, 10.0).unwrap();
+        sizes.push(st.t() - t0);
+    }
+    // A size read as a difference of times carries their rounding: 2 ulps of t ≤ 10.
+    let rounding = 2.0 * f64::EPSILON * 16.0;
+    let repeats = sizes
+        .windows(2)
+        .filter(|w| (w[1] - w[0]).abs() <= rounding)
+        .count();
+    // Measured: 103 of 117 (the first steps grow by more); with the mutant 0.
+    assert!(
+        2 * repeats >= sizes.len(),
+        "{repeats} of {} steps repeat the last size",
+        sizes.len()
+    );
+}
