@@ -289,6 +289,35 @@ mod tests {
         }
     }
 
+    /// The pieces tile the step: on a motion θ = θ0 + w (t − t0) (θ̇ = w) the impulse of
+    /// F_w = m l sin θ (Ω² cos θ − θ̇²) (eq. (14)) is, in closed form,
+    /// m l (Ω² (sin²θ1 − sin²θ0)/(2w) − w (cos θ0 − cos θ1)). Pieces of 0.25/(w + Ω) turn θ by
+    /// under 1/4 rad, where GL5's error (tenth derivative, h¹¹) is below 1e-20: what is left is
+    /// rounding, of the 5n forces and weights (16 u of |F|max h) and of the pieces' ends at the
+    /// size of t (2 (n + 2) u (|t0| + h) |F|max), with |F|max ≤ m l (Ω² + w²). (A constant force
+    /// cannot see the pieces' length: any chain of pieces from t0 to t1 sums to F h. Mutation
+    /// testing: the piece length (t1 − t0)/n → (t1 − t0) · n and → (t1 − t0) % n went unseen.)
+    #[test]
+    fn the_wall_impulse_of_a_turning_ladder_is_its_closed_form() {
+        let (theta0, w) = (0.3f64, 0.5f64);
+        for (t0, h) in [(0.0, 1.0), (100.0, 1.0), (100.0, 2.5)] {
+            let mut ob = observer(t0, true, false);
+            let dense = |t: f64| [theta0 + w * (t - t0), w];
+            Observer::<2>::step(&mut ob, t0, t0 + h, &dense);
+            let theta1 = theta0 + w * h;
+            let want = (theta1.sin().powi(2) - theta0.sin().powi(2)) / (2.0 * w)
+                - w * (theta0.cos() - theta1.cos());
+            let got = ob.impulse.unwrap();
+            let n = (h * (w + 1.0) / 0.25).ceil();
+            let (u, f_max) = (f64::EPSILON, 1.0 + w * w);
+            let bound = f_max * (16.0 * u * h + 2.0 * (n + 2.0) * u * (t0 + h));
+            assert!(
+                (got - want).abs() <= bound,
+                "[{t0}, {t0} + {h}]: {got} against {want}"
+            );
+        }
+    }
+
     /// The top clearance is 0 at the floor phase's start by construction, so the first step's
     /// minimum is searched after its start, not at its end: a top that dips into the wall by
     /// h²/4 within the first step is seen (mutation testing: the search's start `(t1 − t0)/5` →
