@@ -5,7 +5,7 @@
 //! (`cargo mutants ... --cargo-arg=--test=sim_mutants`).
 //!
 //! Why one binary: a mutant of the library makes cargo rebuild and link every test target that
-//! uses it. Built one by one, the 45 files cost 45 crate compilations and links a mutant; here
+//! uses it. Built one by one, the 46 files cost 46 crate compilations and links a mutant; here
 //! they cost one. The files are included unchanged (`#[path]`), so a test fails here exactly
 //! when it fails in its own target. The list is the one in EXTENDING.md: every `src/sim` test
 //! file that runs in under about 5 s at opt-level 0.
@@ -63,6 +63,8 @@ mod scene_work;
 mod sim_fall;
 #[path = "../sim_floor.rs"]
 mod sim_floor;
+#[path = "../sim_forces.rs"]
+mod sim_forces;
 #[path = "../sim_integrators.rs"]
 mod sim_integrators;
 #[path = "../sim_plan.rs"]
