@@ -45,6 +45,36 @@ fn two_events_in_one_step_end_the_phase_at_the_earlier() {
     }
 }
 
+/// (y − 1)(y − 2): falls through zero at y = 1 and rises again at y = 2, so a step across both
+/// ends on the same sign; only samples inside the step see the dip (as the floor force's lift-off
+/// is watched: it could dip and recover within one step).
+struct Dips;
+
+impl Event<1> for Dips {
+    fn value(&self, _t: f64, y: &[f64; 1]) -> f64 {
+        (y[0] - 1.0) * (y[0] - 2.0)
+    }
+    fn direction(&self) -> Direction {
+        Direction::Falling
+    }
+    fn interior_samples(&self) -> usize {
+        3
+    }
+}
+
+/// An event with interior samples is found inside a step whose ends show no crossing: one rk4
+/// step of 3 on y = t (its dense output is exact on a line) samples 0.75, 1.5, 2.25 and brackets
+/// the root 1 between the first two (mutation testing: `k > 0` → `k < 0`, never sampling, went
+/// unseen: the rigid floor phase never lifts off). Brent's method finds it to 4 ulps.
+#[test]
+fn an_event_that_dips_within_one_step_is_found_by_its_interior_samples() {
+    let mut stepper = AnyStepper::new("rk4", Control::Fixed(3.0), 0.0, [0.0]).unwrap();
+    let events = [&Dips as &dyn Event<1>];
+    let end = integrate_phase(&Clock, &mut stepper, &events, 10.0, 100, &mut ()).unwrap();
+    assert_eq!(end.event, Some(0));
+    assert!((end.t - 1.0).abs() <= 4.0 * f64::EPSILON, "{}", end.t);
+}
+
 /// dopri5 is exact on ẏ = 1 (from y = 1: the default error scale is |y|), so its steps grow by its largest factor each time (10): from
 /// t = 0 to 1e6 that is a few dozen steps, where any finite default limit L would need 1e6/L.
 #[test]
