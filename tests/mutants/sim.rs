@@ -5,7 +5,7 @@
 //! (`cargo mutants ... --cargo-arg=--test=sim_mutants`).
 //!
 //! Why one binary: a mutant of the library makes cargo rebuild and link every test target that
-//! uses it. Built one by one, the 46 files cost 46 crate compilations and links a mutant; here
+//! uses it. Built one by one, the 47 files cost 47 crate compilations and links a mutant; here
 //! they cost one. The files are included unchanged (`#[path]`), so a test fails here exactly
 //! when it fails in its own target. The list is the one in EXTENDING.md: every `src/sim` test
 //! file that runs in under about 5 s at opt-level 0.
@@ -13,6 +13,8 @@
 
 #[path = "../angle_from_floor.rs"]
 mod angle_from_floor;
+#[path = "../any_stepper.rs"]
+mod any_stepper;
 #[path = "../baumgarte.rs"]
 mod baumgarte;
 #[path = "../campaign.rs"]
