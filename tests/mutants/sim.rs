@@ -5,7 +5,7 @@
 //! (`cargo mutants ... --cargo-arg=--test=sim_mutants`).
 //!
 //! Why one binary: a mutant of the library makes cargo rebuild and link every test target that
-//! uses it. Built one by one, the 47 files cost 47 crate compilations and links a mutant; here
+//! uses it. Built one by one, the 48 files cost 48 crate compilations and links a mutant; here
 //! they cost one. The files are included unchanged (`#[path]`), so a test fails here exactly
 //! when it fails in its own target. The list is the one in EXTENDING.md: every `src/sim` test
 //! file that runs in under about 5 s at opt-level 0.
@@ -101,6 +101,8 @@ mod top_clearance;
 mod unit_free_steps;
 #[path = "../verlet_penalty_start.rs"]
 mod verlet_penalty_start;
+#[path = "../verlet_step.rs"]
+mod verlet_step;
 #[path = "../verlet_velocity_dependent.rs"]
 mod verlet_velocity_dependent;
 #[path = "../work_precision.rs"]

@@ -1,0 +1,53 @@
+//! One Störmer-Verlet step on a velocity-free acceleration with two degrees of freedom, against
+//! the method written out here: v½ = v0 + h/2 a(q0), q1 = q0 + h v½, v1 = v½ + h/2 a(q1).
+//! The order fit of `tests/sim_integrators.rs` has one degree of freedom and the velocity-
+//! dependent path of `tests/verlet_velocity_dependent.rs` iterates the last kick to its fixed
+//! point, so a last kick that read the wrong component's acceleration (mutation testing:
+//! `f1[d + i]` → `f1[d − i]`, the same index for d = 1) was seen by neither. The step does the
+//! same roundings as the formula: 2 ulps allowed.
+
+use num_dual::DualNum;
+use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::{Control, Ode, Stepper};
+
+/// Two oscillators, ẍ = −x and ÿ = −4y: the accelerations differ, and neither uses a velocity.
+struct Oscillators;
+
+impl Ode<4> for Oscillators {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 4]) -> [D; 4] {
+        [y[2], y[3], -y[0], y[1] * -4.0]
+    }
+    fn accel_uses_velocity(&self) -> bool {
+        false
+    }
+}
+
+fn accel(q: [f64; 2]) -> [f64; 2] {
+    [-q[0], -4.0 * q[1]]
+}
+
+#[test]
+fn a_verlet_step_kicks_each_velocity_with_its_own_acceleration() {
+    let (h, y0) = (0.1, [0.3, -0.2, 0.7, 0.4]);
+    let mut st = AnyStepper::new("verlet", Control::Fixed(h), 0.0, y0).unwrap();
+    st.step(&Oscillators, 1.0).unwrap();
+    let a0 = accel([y0[0], y0[1]]);
+    let half = [y0[2] + 0.5 * h * a0[0], y0[3] + 0.5 * h * a0[1]];
+    let q1 = [y0[0] + h * half[0], y0[1] + h * half[1]];
+    let a1 = accel(q1);
+    let want = [
+        q1[0],
+        q1[1],
+        half[0] + 0.5 * h * a1[0],
+        half[1] + 0.5 * h * a1[1],
+    ];
+    let got = st.y();
+    for i in 0..4 {
+        assert!(
+            (got[i] - want[i]).abs() <= 2.0 * f64::EPSILON * want[i].abs(),
+            "y{i}: {} against {}",
+            got[i],
+            want[i]
+        );
+    }
+}
