@@ -5,7 +5,7 @@
 //! (`cargo mutants ... --cargo-arg=--test=sim_mutants`).
 //!
 //! Why one binary: a mutant of the library makes cargo rebuild and link every test target that
-//! uses it. Built one by one, the 48 files cost 48 crate compilations and links a mutant; here
+//! uses it. Built one by one, the 49 files cost 49 crate compilations and links a mutant; here
 //! they cost one. The files are included unchanged (`#[path]`), so a test fails here exactly
 //! when it fails in its own target. The list is the one in EXTENDING.md: every `src/sim` test
 //! file that runs in under about 5 s at opt-level 0.
@@ -25,6 +25,8 @@ mod cli_scene_errors;
 mod constrained_drift_checkpoints;
 #[path = "../error_units.rs"]
 mod error_units;
+#[path = "../event_defaults.rs"]
+mod event_defaults;
 #[path = "../exact_ode.rs"]
 mod exact_ode;
 #[path = "../exact_quadrature.rs"]
