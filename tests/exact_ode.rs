@@ -79,14 +79,22 @@ fn closed_form_obeys_equation_of_motion_and_energy() {
         assert!(ratio <= 1.0, "{row:?}: residual/tolerance = {ratio}");
         worst = worst.max(ratio);
     }
-    // The separatrix itself (a = 0 exactly): sin(θ₀/2) = θ̇₀/(2Ω) with Ω = 1.
+    // The separatrix itself (a = 0 exactly): sin(θ₀/2) = θ̇₀/(2Ω), with Ω = 1, 2 and 1/2 (powers
+    // of two keep a = 0 exact; with Ω = 1 alone the time scale Ω t was not seen: mutation testing
+    // found Ω t → t/Ω in the separatrix's θ(t) unseen).
     let theta0 = 0.4f64;
-    let rate0 = 2.0 * (0.5 * theta0).sin();
-    let p = PhaseOne::new(theta0, rate0, 1.0).unwrap();
-    assert_eq!(p.quarter_period(), f64::INFINITY, "not on the separatrix");
-    let s = p.separation().unwrap();
-    worst = worst.max(worst_ratio(&p, 1.0, s.time));
-    assert!(worst <= 1.0, "separatrix: {worst}");
+    for big_omega in [1.0, 2.0, 0.5] {
+        let rate0 = 2.0 * big_omega * (0.5 * theta0).sin();
+        let p = PhaseOne::new(theta0, rate0, big_omega * big_omega).unwrap();
+        assert_eq!(
+            p.quarter_period(),
+            f64::INFINITY,
+            "Ω = {big_omega}: not on the separatrix"
+        );
+        let s = p.separation().unwrap();
+        worst = worst.max(worst_ratio(&p, big_omega * big_omega, s.time));
+        assert!(worst <= 1.0, "separatrix, Ω = {big_omega}: {worst}");
+    }
     println!("worst residual/tolerance: {worst:.3}");
 }
 
