@@ -3,8 +3,10 @@
 //! the LU factors of the step's linear systems are reused instead of formed again. On a linear
 //! system with its exact Jacobian the first Newton iterate is exact and the contraction is
 //! rounding, so the rule applies at every step whose proposal grows by 0-20 %: such steps repeat
-//! the last size exactly, and most steps do. (Mutation testing: the proposal's ratio h_new/h → h_new % h went
-//! unseen; it is never in [1, 1.2] for h < 1, so every step took a new size and new factors.)
+//! the last size exactly, and most steps do; and the Jacobian, formed once at the start, is
+//! kept for the whole run. (Mutation testing: the proposal's ratio h_new/h → h_new % h went
+//! unseen; it is never in [1, 1.2] for h < 1, so every step took a new size and new factors.
+//! So did `!keep_jac` → `keep_jac`, which dropped the Jacobian exactly when Newton contracted.)
 
 use num_dual::DualNum;
 use sliding_ladder::sim::integrators::any::AnyStepper;
@@ -37,6 +39,7 @@ fn radau5_keeps_its_step_size_while_the_proposal_grows_by_less_than_a_fifth() {
         .windows(2)
         .filter(|w| (w[1] - w[0]).abs() <= rounding)
         .count();
+    assert_eq!(st.stats().jacobians, 1, "{:?}", st.stats());
     // Measured: 103 of 117 (the first steps grow by more); with the mutant 0.
     assert!(
         2 * repeats >= sizes.len(),

@@ -5,7 +5,7 @@
 //! (`cargo mutants ... --cargo-arg=--test=sim_mutants`).
 //!
 //! Why one binary: a mutant of the library makes cargo rebuild and link every test target that
-//! uses it. Built one by one, the 49 files cost 49 crate compilations and links a mutant; here
+//! uses it. Built one by one, the 50 files cost 50 crate compilations and links a mutant; here
 //! they cost one. The files are included unchanged (`#[path]`), so a test fails here exactly
 //! when it fails in its own target. The list is the one in EXTENDING.md: every `src/sim` test
 //! file that runs in under about 5 s at opt-level 0.
@@ -37,6 +37,8 @@ mod exact_reference;
 mod exact_robust;
 #[path = "../fall_figures.rs"]
 mod fall_figures;
+#[path = "../fixed_step_stop.rs"]
+mod fixed_step_stop;
 #[path = "../floor_minima.rs"]
 mod floor_minima;
 #[path = "../floor_starts.rs"]
