@@ -143,3 +143,30 @@ fn flat_state_from_conservation_laws() {
     let rhs = m * g * l * 0.3f64.cos();
     assert!((lhs - rhs).abs() <= 1e-13 * rhs, "{lhs} vs {rhs}");
 }
+
+/// The floor phase's error scale (`Ode::scale`, the size each component's error is measured
+/// against) is the motion's own: an angle of size max(|θ|, |θ̇|/Ω) (what θ̇ turns the ladder by
+/// in a time 1/Ω), a length of max(|X|, |Ẋ|/Ω, l times that angle), and the rates Ω times those.
+/// Checked where each maximum is taken by the other term (mutation testing: |θ̇|/Ω → |θ̇| % Ω
+/// went unseen; it changes only how tightly the runs are controlled).
+#[test]
+fn the_floor_phase_measures_errors_in_its_own_scales() {
+    use sliding_ladder::sim::integrators::Ode;
+    let ladder = Ladder {
+        mass: 1.0,
+        half_length: 2.0,
+        gravity: 24.0, // Ω² = 3g/(4l) = 9: Ω = 3
+    };
+    let sys = floor::FloorPhase::new(&ladder);
+    // (θ, X, θ̇, Ẋ) → (angle, length): the rate's term wins, then the position's.
+    for (y, angle, length) in [
+        ([0.1, 0.5, 6.0, 0.3], 2.0, 4.0),
+        ([0.5, 0.2, 0.3, 9.0], 0.5, 3.0),
+    ] {
+        assert_eq!(
+            sys.scale(&y),
+            [angle, length, 3.0 * angle, 3.0 * length],
+            "{y:?}"
+        );
+    }
+}

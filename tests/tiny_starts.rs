@@ -204,3 +204,42 @@ fn a_tiny_start_s_step_estimate_is_its_separation_time_over_the_step() {
         );
     }
 }
+
+/// Above 1e-100 rad the plan's estimate of the wall phase is the closed form's separation time
+/// in the scene's units, θ̇0 taken in units of 1/T: the same as the closed form in SI (Ω² =
+/// 3g/4l) up to the rounding of the unit conversion and of the closed form, 16 ulps. Pushed
+/// starts at g = 9.81 tell θ̇0 T from θ̇0/T (mutation testing: the latter went unseen: every
+/// other estimate test starts at rest or has T = 1).
+#[test]
+fn a_pushed_start_s_step_estimate_is_its_separation_time_over_the_step() {
+    use sliding_ladder::sim::integrators::Control;
+    use sliding_ladder::sim::rigid::Ladder;
+    use sliding_ladder::sim::scene::{ContactModel, End};
+    use sliding_ladder::sim::scene_work::phase_steps;
+    let ladder = Ladder {
+        mass: 1.0,
+        half_length: 1.0,
+        gravity: G,
+    };
+    let h = 1e-3;
+    for (theta0, rate0) in [(0.3, 0.5), (1e-6, 2.0), (0.0, 1.0)] {
+        let want = PhaseOne::new(theta0, rate0, 0.75 * G)
+            .unwrap()
+            .separation()
+            .unwrap()
+            .time;
+        let [wall, _] = phase_steps(
+            &ladder,
+            (theta0, rate0),
+            "rk4",
+            Control::Fixed(h),
+            End::Separation,
+            ContactModel::Rigid,
+        );
+        let got = wall * h;
+        assert!(
+            (got - want).abs() <= 16.0 * f64::EPSILON * want,
+            "θ0 = {theta0}, θ̇0 = {rate0}: {got} s against {want} s"
+        );
+    }
+}
