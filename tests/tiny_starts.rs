@@ -165,15 +165,9 @@ fn an_end_within_the_lead_in_is_the_linear_motion() {
     }
 }
 
-/// The plan's step estimate for a fixed step from a start below 1e-100 rad (`phase_steps`): the
-/// time the linear growth takes to reach 1e-100, then the exact wall phase from there at rest,
-/// over the step. Held against this file's reference (the same construction at 1e-12, through
-/// the closed form), the two agree to O(θ1²) and the rounding of a logarithm and of the closed
-/// form's time: 16 ulps of t_s (1 measured). Mutation testing: the lead-in's ln(grow)/Ω →
-/// ln(grow) · Ω (25 % short) and → ln(grow) % Ω (a few √(l/g)) went unseen, and so did the
-/// grown push in units of T, θ̇0 grow · T → θ̇0 grow / T (the pushed start 0.4 % short).
-#[test]
-fn a_tiny_start_s_step_estimate_is_its_separation_time_over_the_step() {
+/// The plan's estimate of the wall phase's length in seconds (`phase_steps` for a fixed rk4
+/// step h at g = 9.81, times h) from (θ0, θ̇0 in rad/s); its floor phase's steps must be 0.
+fn estimated_wall_time(theta0: f64, rate0: f64) -> f64 {
     use sliding_ladder::sim::integrators::Control;
     use sliding_ladder::sim::rigid::Ladder;
     use sliding_ladder::sim::scene::{ContactModel, End};
@@ -183,21 +177,33 @@ fn a_tiny_start_s_step_estimate_is_its_separation_time_over_the_step() {
         half_length: 1.0,
         gravity: G,
     };
-    let h = 1e-2;
+    let h = 1e-3;
+    let [wall, floor] = phase_steps(
+        &ladder,
+        (theta0, rate0),
+        "rk4",
+        Control::Fixed(h),
+        End::Separation,
+        ContactModel::Rigid,
+    );
+    assert_eq!(floor, 0.0, "no floor phase is run");
+    wall * h
+}
+
+/// The plan's step estimate for a fixed step from a start below 1e-100 rad (`phase_steps`): the
+/// time the linear growth takes to reach 1e-100, then the exact wall phase from there at rest,
+/// over the step. Held against this file's reference (the same construction at 1e-12, through
+/// the closed form), the two agree to O(θ1²) and the rounding of a logarithm and of the closed
+/// form's time: 16 ulps of t_s (1 measured). Mutation testing: the lead-in's ln(grow)/Ω →
+/// ln(grow) · Ω (25 % short) and → ln(grow) % Ω (a few √(l/g)) went unseen, and so did the
+/// grown push in units of T, θ̇0 grow · T → θ̇0 grow / T (the pushed start 0.4 % short).
+#[test]
+fn a_tiny_start_s_step_estimate_is_its_separation_time_over_the_step() {
     // (θ0, θ̇0 in rad/s): from rest, and pushed from 0 (its linear start a = θ̇0/ω).
     let starts = [(1e-200, 0.0), (1e-250, 0.0), (1e-300, 0.0), (0.0, 1e-250)];
     for (theta0, rate0) in starts {
         let want = reference_time(theta0 + rate0 / omega(), 1.0);
-        let [wall, floor] = phase_steps(
-            &ladder,
-            (theta0, rate0),
-            "rk4",
-            Control::Fixed(h),
-            End::Separation,
-            ContactModel::Rigid,
-        );
-        let got = wall * h;
-        assert_eq!(floor, 0.0, "no floor phase is run");
+        let got = estimated_wall_time(theta0, rate0);
         assert!(
             (got - want).abs() <= 16.0 * f64::EPSILON * want,
             "θ0 = {theta0:e}, θ̇0 = {rate0:e}: {got} s against {want} s"
@@ -212,31 +218,13 @@ fn a_tiny_start_s_step_estimate_is_its_separation_time_over_the_step() {
 /// other estimate test starts at rest or has T = 1).
 #[test]
 fn a_pushed_start_s_step_estimate_is_its_separation_time_over_the_step() {
-    use sliding_ladder::sim::integrators::Control;
-    use sliding_ladder::sim::rigid::Ladder;
-    use sliding_ladder::sim::scene::{ContactModel, End};
-    use sliding_ladder::sim::scene_work::phase_steps;
-    let ladder = Ladder {
-        mass: 1.0,
-        half_length: 1.0,
-        gravity: G,
-    };
-    let h = 1e-3;
     for (theta0, rate0) in [(0.3, 0.5), (1e-6, 2.0), (0.0, 1.0)] {
         let want = PhaseOne::new(theta0, rate0, 0.75 * G)
             .unwrap()
             .separation()
             .unwrap()
             .time;
-        let [wall, _] = phase_steps(
-            &ladder,
-            (theta0, rate0),
-            "rk4",
-            Control::Fixed(h),
-            End::Separation,
-            ContactModel::Rigid,
-        );
-        let got = wall * h;
+        let got = estimated_wall_time(theta0, rate0);
         assert!(
             (got - want).abs() <= 16.0 * f64::EPSILON * want,
             "θ0 = {theta0}, θ̇0 = {rate0}: {got} s against {want} s"
