@@ -147,8 +147,9 @@ fn flat_state_from_conservation_laws() {
 /// The floor phase's error scale (`Ode::scale`, the size each component's error is measured
 /// against) is the motion's own: an angle of size max(|θ|, |θ̇|/Ω) (what θ̇ turns the ladder by
 /// in a time 1/Ω), a length of max(|X|, |Ẋ|/Ω, l times that angle), and the rates Ω times those.
-/// Checked where each maximum is taken by the other term (mutation testing: |θ̇|/Ω → |θ̇| % Ω
-/// went unseen; it changes only how tightly the runs are controlled).
+/// Checked where each maximum is taken by the other term, with l a ≠ l + a (mutation testing:
+/// |θ̇|/Ω → |θ̇| % Ω and l a → l + a went unseen; they change only how tightly runs are
+/// controlled).
 #[test]
 fn the_floor_phase_measures_errors_in_its_own_scales() {
     use sliding_ladder::sim::integrators::Ode;
@@ -160,7 +161,7 @@ fn the_floor_phase_measures_errors_in_its_own_scales() {
     let sys = floor::FloorPhase::new(&ladder);
     // (θ, X, θ̇, Ẋ) → (angle, length): the rate's term wins, then the position's.
     for (y, angle, length) in [
-        ([0.1, 0.5, 6.0, 0.3], 2.0, 4.0),
+        ([0.1, 0.5, 9.0, 0.3], 3.0, 6.0),
         ([0.5, 0.2, 0.3, 9.0], 0.5, 3.0),
     ] {
         assert_eq!(

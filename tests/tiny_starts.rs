@@ -231,3 +231,30 @@ fn a_pushed_start_s_step_estimate_is_its_separation_time_over_the_step() {
         );
     }
 }
+
+/// The lead-in is for tiny starts only: a start at or above `LINEAR_AMPLITUDE` in θ or θ̇/Ω, or
+/// a ladder whose Ω is not a positive finite number, gets None and is integrated as it is
+/// (mutation testing: two of the guard's `&&` → `||` went unseen: the callers ask only for
+/// tiny starts, so only the contract itself shows the guard).
+#[test]
+fn a_start_that_is_not_tiny_has_no_lead_in() {
+    use sliding_ladder::sim::lead_in::{linear_lead_in, LINEAR_AMPLITUDE};
+    let amp = LINEAR_AMPLITUDE;
+    assert!(
+        linear_lead_in(0.75, 0.5 * amp, 0.0).is_some(),
+        "a tiny start has one"
+    );
+    for (big_omega2, theta0, rate0) in [
+        (0.75, 0.3, 0.0),
+        (0.75, amp, 0.0),
+        (0.75, 0.0, amp * 0.75f64.sqrt()),
+        (0.0, 0.5 * amp, 0.0),
+        (f64::INFINITY, 0.5 * amp, 0.0),
+    ] {
+        assert_eq!(
+            linear_lead_in(big_omega2, theta0, rate0),
+            None,
+            "Ω² = {big_omega2}, θ0 = {theta0:e}, θ̇0 = {rate0:e}"
+        );
+    }
+}

@@ -5,7 +5,7 @@
 //! (`cargo mutants ... --cargo-arg=--test=sim_mutants`).
 //!
 //! Why one binary: a mutant of the library makes cargo rebuild and link every test target that
-//! uses it. Built one by one, the 50 files cost 50 crate compilations and links a mutant; here
+//! uses it. Built one by one, the 51 files cost 51 crate compilations and links a mutant; here
 //! they cost one. The files are included unchanged (`#[path]`), so a test fails here exactly
 //! when it fails in its own target. The list is the one in EXTENDING.md: every `src/sim` test
 //! file that runs in under about 5 s at opt-level 0.
@@ -19,6 +19,8 @@ mod any_stepper;
 mod baumgarte;
 #[path = "../campaign.rs"]
 mod campaign;
+#[path = "../carlson_fallback.rs"]
+mod carlson_fallback;
 #[path = "../cli_scene_errors.rs"]
 mod cli_scene_errors;
 #[path = "../constrained_drift_checkpoints.rs"]

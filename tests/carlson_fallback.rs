@@ -1,0 +1,24 @@
+//! Carlson's R_F where the `ellip` crate's iteration cap is reached (two unequal arguments some
+//! 1e-250 times the third) and `sim::exact::carlson_rf` applies duplication steps first (DLMF
+//! 19.26.18). Held against R_F's limit for two small arguments (DLMF §19.27(ii)):
+//! R_F(x, y, z) = ln(16 z/(√x + √y)²)/(2√z) + O(√((x + y)/z) ln), here 1e-125 off (mpmath's
+//! elliprf at 50 digits agreed to all of them when this was written). The duplication's
+//! rounding and `ellip`'s few ulps: 16 ulps. (Mutation testing: λ = √x√y + √y√z + √z√x with −
+//! for its last + went unseen; the fallback had only a finiteness check.)
+
+use sliding_ladder::sim::exact::carlson_rf;
+
+#[test]
+fn r_f_with_two_tiny_arguments_is_its_limit() {
+    let x = 1e-250f64;
+    let y = 2.0 * x;
+    // ln(16/(√x (1 + √2))²)/2 with ln x = −250 ln 10, formed without the tiny numbers.
+    let want = 0.5 * (16f64.ln() + 250.0 * 10f64.ln() - 2.0 * (1.0 + 2f64.sqrt()).ln());
+    for (a, b, c) in [(x, y, 1.0), (1.0, x, y), (y, 1.0, x)] {
+        let got = carlson_rf(a, b, c);
+        assert!(
+            (got - want).abs() <= 16.0 * f64::EPSILON * want,
+            "R_F({a:e}, {b:e}, {c:e}) = {got} against {want}"
+        );
+    }
+}
