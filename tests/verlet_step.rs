@@ -57,12 +57,15 @@ fn a_verlet_step_kicks_each_velocity_with_its_own_acceleration() {
 /// (1 + c h/2), written out here. The fixed-point iteration stops at a change within 4 ulps:
 /// 8 ulps allowed. (Mutation testing: the iteration's time `t + h` → `t · h` and `t − h` went
 /// unseen: the other velocity-dependent test is autonomous.)
-struct Driven;
+/// It counts its evaluations, which the step's statistics must match (the implicit kick's
+/// iterations included: `*evals += 1` → `*evals *= 1` there went unseen).
+struct Driven(std::cell::Cell<u64>);
 
 const C: f64 = 0.8;
 
 impl Ode<2> for Driven {
     fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, t: f64, y: &[D; 2]) -> [D; 2] {
+        self.0.set(self.0.get() + 1);
         [y[1], y[1] * -C + t.cos()]
     }
 }
@@ -71,7 +74,10 @@ impl Ode<2> for Driven {
 fn a_verlet_step_solves_its_implicit_kick_at_the_step_s_end_time() {
     let (t0, h, y0) = (0.7, 0.1, [0.3, -0.4]);
     let mut st = AnyStepper::new("verlet", Control::Fixed(h), t0, y0).unwrap();
-    st.step(&Driven, 2.0).unwrap();
+    let sys = Driven(std::cell::Cell::new(0));
+    st.step(&sys, 2.0).unwrap();
+    assert_eq!(st.stats().rhs_evals, sys.0.get(), "evaluations counted");
+    assert!(sys.0.get() >= 3, "the implicit kick iterates");
     let half = y0[1] + 0.5 * h * (-C * y0[1] + t0.cos());
     let q1 = y0[0] + h * half;
     let v1 = (half + 0.5 * h * (t0 + h).cos()) / (1.0 + 0.5 * C * h);
