@@ -47,3 +47,33 @@ fn radau5_keeps_its_step_size_while_the_proposal_grows_by_less_than_a_fifth() {
         sizes.len()
     );
 }
+
+/// ẏ = −y until t = 1, then ẏ = −1000 y: a step across t = 1 sees a stiffness 1000 times
+/// larger than the one its size was chosen for (λ h in the hundreds), so its error estimate
+/// is far above the tolerance and the step must be rejected and retried shorter.
+struct Stiffens;
+
+impl Ode<1> for Stiffens {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, t: f64, y: &[D; 1]) -> [D; 1] {
+        [y[0] * if t < 1.0 { -1.0 } else { -1000.0 }]
+    }
+    fn scale(&self, _y: &[f64; 1]) -> [f64; 1] {
+        [1.0]
+    }
+}
+
+/// A rejected step is counted (the statistics work-precision reports; mutation testing:
+/// `rejected += 1` → `*= 1` went unseen: no test looked for a rejection by radau5).
+#[test]
+fn radau5_counts_the_step_it_rejects_where_the_system_stiffens() {
+    let mut st = AnyStepper::new("radau5", Control::Tolerance(1e-8), 0.0, [1.0]).unwrap();
+    let mut before = None;
+    while st.t() < 2.0 {
+        if st.t() < 1.0 {
+            before = Some(st.stats().rejected);
+        }
+        st.step(&Stiffens, 2.0).unwrap();
+    }
+    let before = before.unwrap();
+    assert!(st.stats().rejected > before, "{:?}", st.stats());
+}
