@@ -10,8 +10,8 @@
 //! overflows f64. With H near the model's time scale they stay of the order of (H/ρ)^k, whatever
 //! the units. Every recursion gives the scaled coefficients when run with H/k in place of 1/k
 //! (each order is one integration, d/dσ = H d/dt, and products of series scale alike), so the
-//! models' recursions read their "reciprocals" from [`Series::inv`]. H is a power of two, so the
-//! scaling and σ = τ/H are exact: the bits are those of the plain recursion scaled.
+//! models' recursions read their "reciprocals" H/k from `unit_over_k`. H is a power of two, so
+//! the scaling and σ = τ/H are exact: the bits are those of the plain recursion scaled.
 use super::taylor_f64::FloorPairs;
 
 /// Highest order the f64 stepper stores.
