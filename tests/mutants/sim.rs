@@ -1,5 +1,5 @@
 //! The quick `src/sim` test files in one test binary, for mutation testing only
-//! (`equations/EXTENDING.md`, "src/sim"). Each file below is also a test target of its own, and
+//! (`equations/MUTATION-SIM.md`). Each file below is also a test target of its own, and
 //! `cargo test` runs it there: this target has `test = false` in `Cargo.toml`, so `cargo test`
 //! does not build it and nothing runs twice. It is built only when named
 //! (`cargo mutants ... --cargo-arg=--test=sim_mutants`).
@@ -7,8 +7,8 @@
 //! Why one binary: a mutant of the library makes cargo rebuild and link every test target that
 //! uses it. Built one by one, the 51 files cost 51 crate compilations and links a mutant; here
 //! they cost one. The files are included unchanged (`#[path]`), so a test fails here exactly
-//! when it fails in its own target. The list is the one in EXTENDING.md: every `src/sim` test
-//! file that runs in under about 5 s at opt-level 0.
+//! when it fails in its own target. The list: every `src/sim` test file that runs in under
+//! about 5 s at opt-level 0 (a new one belongs here too).
 #![allow(dead_code, unused_imports)]
 
 #[path = "../angle_from_floor.rs"]
