@@ -243,6 +243,27 @@ fn every_bad_scene_gets_one_line_exit_2_and_no_file() {
             "end.at = \"flat\"",
         ),
         (
+            "floor_force_min at separation",
+            with("\"trajectory\"]", "\"floor_force_min\"]"),
+            Some(16),
+            "outputs.want",
+            "belongs to the floor phase",
+        ),
+        (
+            "top_clearance_min at separation",
+            with("\"trajectory\"]", "\"top_clearance_min\"]"),
+            Some(16),
+            "outputs.want",
+            "belongs to the floor phase",
+        ),
+        (
+            "momentum_error at separation",
+            with("\"trajectory\"]", "\"momentum_error\"]"),
+            Some(16),
+            "outputs.want",
+            "belongs to the floor phase",
+        ),
+        (
             "exact with trajectory",
             with(
                 "method = \"dop853\"\ntolerance = 1e-12",

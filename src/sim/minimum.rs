@@ -86,4 +86,26 @@ mod tests {
         // A NaN everywhere comes out as NaN (for the caller's non-finite check), not a loop.
         assert!(minimum_on(|_| f64::NAN, a, b, 4).is_nan());
     }
+
+    #[test]
+    fn the_search_starts_from_the_smallest_of_the_promised_samples() {
+        // The contract: `samples` interior samples at a + (b − a) j/(samples + 1) and both ends,
+        // the result never above the smallest. A narrow dip of depth 1 sits on the first
+        // interior sample and a broad shallow basin (depth 0) near 0.7; any other grid (j/samples,
+        // j/(samples − 1): mutation testing) misses the dip, whose half-width is a tenth of the
+        // distance to the nearest point of such a grid, and returns the basin's 0.
+        for samples in 1..=6 {
+            let n = (samples + 1) as f64;
+            let (dip, width) = (1.0 / n, 0.1 / (n * (n - 1.0)));
+            let f = |t: f64| 0.1 * (t - 0.7) * (t - 0.7) - (-((t - dip) / width).powi(2)).exp();
+            let promised = (0..=samples + 1)
+                .map(|j| f(j as f64 / n))
+                .fold(f64::INFINITY, f64::min);
+            let m = minimum_on(f, 0.0, 1.0, samples);
+            assert!(
+                promised < -0.9 && m <= promised,
+                "{samples}: {m} > {promised}"
+            );
+        }
+    }
 }

@@ -79,5 +79,11 @@ mod tests {
         assert_eq!(too_close_to_flat(5.0, (1e-12, 0.0)), None);
         // A start the wall cannot hold is left to the run (it leaves at once).
         assert_eq!(too_close_to_flat(1e6, (0.3, 2.0)), None);
+        // So is the limiting push θ̇0² = Ω² cos θ0, where cos θ_r is 1 and the top leaves at
+        // t = 0: from θ0 = 0 with θ̇0 = √(3/4), cos θ_r comes out exactly 1 in f64
+        // (mutation testing: `cos_r < 1` → `<= 1` refused it as "cannot tell from flat").
+        let limiting = (0.0, OMEGA2.sqrt());
+        assert_eq!(separation_cos(limiting.0, limiting.1, OMEGA2), 1.0);
+        assert_eq!(too_close_to_flat(1e6, limiting), None);
     }
 }

@@ -5,7 +5,7 @@
 //! (`cargo mutants ... --cargo-arg=--test=sim_mutants`).
 //!
 //! Why one binary: a mutant of the library makes cargo rebuild and link every test target that
-//! uses it. Built one by one, the 51 files cost 51 crate compilations and links a mutant; here
+//! uses it. Built one by one, the 54 files cost 54 crate compilations and links a mutant; here
 //! they cost one. The files are included unchanged (`#[path]`), so a test fails here exactly
 //! when it fails in its own target. The list: every `src/sim` test file that runs in under
 //! about 5 s at opt-level 0 (a new one belongs here too).
@@ -29,6 +29,8 @@ mod constrained_drift_checkpoints;
 mod error_units;
 #[path = "../event_defaults.rs"]
 mod event_defaults;
+#[path = "../event_interior_samples.rs"]
+mod event_interior_samples;
 #[path = "../exact_ode.rs"]
 mod exact_ode;
 #[path = "../exact_quadrature.rs"]
@@ -61,8 +63,12 @@ mod penalty_estimate_margin;
 mod penalty_refusals;
 #[path = "../penalty_retry.rs"]
 mod penalty_retry;
+#[path = "../radau5_domain.rs"]
+mod radau5_domain;
 #[path = "../radau5_step_reuse.rs"]
 mod radau5_step_reuse;
+#[path = "../rhs_counts.rs"]
+mod rhs_counts;
 #[path = "../scene_errors.rs"]
 mod scene_errors;
 #[path = "../scene_work.rs"]

@@ -162,3 +162,15 @@ fn newton_in_a_bracket_does_not_depend_on_the_value_s_scale() {
         }
     }
 }
+
+/// Nothing in the root finder assumes positive times: a bracket across t = 0, [−3, 1], holds
+/// the root of tanh t + 1/2 at −atanh(1/2) (closed form), found to the noise (8 ulps). The
+/// bracket's width is measured as h − l (mutation testing: h + l, which is negative here, stopped
+/// at its first bisection, t = −0.436 for the root −0.549).
+#[test]
+fn a_bracket_across_zero_time_finds_its_root() {
+    let f = |t: f64| Some((t.tanh() + 0.5, 1.0 - t.tanh() * t.tanh()));
+    let root = -0.5f64.atanh();
+    let r = newton_in_bracket(f, -3.0, 1.0, (-3f64).tanh() + 0.5, 1f64.tanh() + 0.5).unwrap();
+    assert!((r - root).abs() <= 8.0 * f64::EPSILON * root.abs(), "{r}");
+}

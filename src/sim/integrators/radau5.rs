@@ -302,11 +302,11 @@ impl<const N: usize> Stepper<N> for Radau5<N> {
             let f2: [f64; N] =
                 std::array::from_fn(|i| (0..3).map(|a| DD[a] * z[a][i]).sum::<f64>() / h);
             let mut est: Vec<f64> = (0..N).map(|i| f0[i] + f2[i]).collect();
-            let mut err = f64::INFINITY;
+            let mut err = f64::INFINITY; // clamp, not max: NaN.max(1e-10) is 1e-10; NaN rejects
             if ok {
                 lu_solve(&self.e1, &self.piv1, &mut est, N);
                 let e: [f64; N] = std::array::from_fn(|i| est[i]);
-                err = step_norm(sys, &e, &y, &y1, self.rtol, h).max(1e-10);
+                err = step_norm(sys, &e, &y, &y1, self.rtol, h).clamp(1e-10, f64::INFINITY);
                 if err >= 1.0 {
                     // The second estimate, (U1/h I − J)⁻¹ applied once more, filters the stiff
                     // components. radau5.f forms it only on the first or a rejected step, so on
@@ -318,7 +318,7 @@ impl<const N: usize> Stepper<N> for Radau5<N> {
                     let mut est2: Vec<f64> = (0..N).map(|i| ft[i] + f2[i]).collect();
                     lu_solve(&self.e1, &self.piv1, &mut est2, N);
                     let e2: [f64; N] = std::array::from_fn(|i| est2[i]);
-                    err = step_norm(sys, &e2, &y, &y1, self.rtol, h).max(1e-10);
+                    err = step_norm(sys, &e2, &y, &y1, self.rtol, h).clamp(1e-10, f64::INFINITY);
                 }
             }
             let quot = (err.powf(0.25) / 0.9).clamp(0.125, 5.0);
