@@ -74,4 +74,6 @@ fn an_infinite_jacobian_ends_the_step_with_an_error() {
         "{err:?}"
     );
     assert_eq!(st.t(), 1.0);
+    // Each failed factorisation is a rejected trial step, counted as such.
+    assert!(st.stats().rejected > 0, "{:?}", st.stats());
 }

@@ -5,7 +5,7 @@
 //! (`cargo mutants ... --cargo-arg=--test=sim_mutants`).
 //!
 //! Why one binary: a mutant of the library makes cargo rebuild and link every test target that
-//! uses it. Built one by one, the 54 files cost 54 crate compilations and links a mutant; here
+//! uses it. Built one by one, the 56 files cost 56 crate compilations and links a mutant; here
 //! they cost one. The files are included unchanged (`#[path]`), so a test fails here exactly
 //! when it fails in its own target. The list: every `src/sim` test file that runs in under
 //! about 5 s at opt-level 0 (a new one belongs here too).
@@ -97,6 +97,8 @@ mod taylor;
 mod taylor_every_scene;
 #[path = "../taylor_f64.rs"]
 mod taylor_f64;
+#[path = "../taylor_models.rs"]
+mod taylor_models;
 #[path = "../taylor_order.rs"]
 mod taylor_order;
 #[path = "../taylor_poly.rs"]
@@ -105,6 +107,8 @@ mod taylor_poly;
 mod taylor_scaled;
 #[path = "../taylor_step.rs"]
 mod taylor_step;
+#[path = "../tiny_error_scale.rs"]
+mod tiny_error_scale;
 #[path = "../tiny_starts.rs"]
 mod tiny_starts;
 #[path = "../top_clearance.rs"]
