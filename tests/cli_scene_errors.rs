@@ -264,6 +264,14 @@ fn every_bad_scene_gets_one_line_exit_2_and_no_file() {
             "belongs to the floor phase",
         ),
         (
+            "flat output at a time",
+            with("\"trajectory\"]", "\"flat_time\"]")
+                .replace("at = \"separation\"", "at = \"time\"\ntime = 2.0"),
+            Some(17),
+            "outputs.want",
+            "needs end.at = \"flat\"",
+        ),
+        (
             "exact with trajectory",
             with(
                 "method = \"dop853\"\ntolerance = 1e-12",

@@ -71,6 +71,26 @@ mod tests {
             .unwrap();
         assert!(too_close_to_flat(least * 1.01, near).is_none());
         assert!(too_close_to_flat(least * 0.99, near).is_some());
+        // A start at rest from 1.17 rad separates at θ_r = 1.31 (sin θ_r = 0.966, not 1), 0.26
+        // rad from flat: its least κ is near the softest springs, and the shift's κ sin θ_r
+        // is tried there 1 % either side (mutation testing: κ + sin θ_r and κ/sin θ_r, which
+        // near flat agree with κ sin θ_r, went unseen).
+        let (far, soft) = (
+            (1.17, 0.0),
+            too_close_to_flat(1.0, (1.17, 0.0)).expect("κ = 1"),
+        );
+        let least: f64 = soft
+            .split("κ > ")
+            .nth(1)
+            .unwrap()
+            .split(' ')
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap();
+        assert!((3.0..10.0).contains(&least), "{least}");
+        assert!(too_close_to_flat(least * 1.01, far).is_none());
+        assert!(too_close_to_flat(least * 0.99, far).is_some());
         // The last float below π/2 cannot be told from flat at any κ ≤ 1e15.
         let last = f64::from_bits(FRAC_PI_2.to_bits() - 1);
         assert!(too_close_to_flat(1e15, (last, 0.0)).is_some());
