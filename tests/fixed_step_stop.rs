@@ -5,7 +5,7 @@
 
 use num_dual::DualNum;
 use sliding_ladder::sim::integrators::any::AnyStepper;
-use sliding_ladder::sim::integrators::{Control, Ode, Stepper};
+use sliding_ladder::sim::integrators::{Control, Ode, StepError, Stepper};
 
 /// ẏ = 1, no step cap.
 struct Clock;
@@ -26,5 +26,29 @@ fn a_fixed_step_is_cut_only_to_land_on_the_stop() {
             ends.push(st.t());
         }
         assert_eq!(ends, [7.0, 8.0], "{method}");
+    }
+}
+
+/// A fixed step below the rounding of t (4 ulps of t) cannot advance t and is refused with
+/// StepTooSmall: h = 1 at t = 1e20, where t + 1 = t. (Mutation testing: the floor
+/// 4 u max(|t|, 1) → 4 u / max(|t|, 1), the same for t ≤ 1, went unseen; it took the step and
+/// left t where it was, so a run would loop to its step limit.)
+#[test]
+fn a_fixed_step_below_the_rounding_of_t_is_refused() {
+    for method in ["euler", "rk4"] {
+        let mut st = AnyStepper::new(method, Control::Fixed(1.0), 1e20, [0.0]).unwrap();
+        let r = st.step(&Clock, 2e20);
+        assert!(
+            matches!(r, Err(StepError::StepTooSmall { t, h }) if t == 1e20 && h == 1.0),
+            "{method}: {r:?}"
+        );
+        // 2^16 at 2^66 (1 ulp = 2^14) is 4 ulps: refused; 2^17 is taken.
+        let mut st =
+            AnyStepper::new(method, Control::Fixed(2f64.powi(16)), 2f64.powi(66), [0.0]).unwrap();
+        assert!(st.step(&Clock, 2f64.powi(67)).is_err(), "{method}");
+        let mut st =
+            AnyStepper::new(method, Control::Fixed(2f64.powi(17)), 2f64.powi(66), [0.0]).unwrap();
+        st.step(&Clock, 2f64.powi(67)).unwrap();
+        assert_eq!(st.t(), 2f64.powi(66) + 2f64.powi(17), "{method}");
     }
 }

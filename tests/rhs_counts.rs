@@ -44,3 +44,30 @@ fn each_method_counts_every_right_hand_side_it_evaluates() {
         assert_eq!(st.stats().rhs_evals, sys.0.get(), "{method}");
     }
 }
+
+/// The wall phase's acceleration does not depend on the rate (θ̈ = Ω² sin θ, in θ and in the
+/// complement), and its models say so (`Ode::accel_uses_velocity`), so Verlet's last kick is
+/// explicit and reuses the slope at the new state: one evaluation a step, plus the first
+/// slope. (Mutation testing: `ComplementWall::accel_uses_velocity` → true went unseen: the
+/// implicit kick's iteration gives the same state at twice the cost or more.)
+#[test]
+fn verlet_evaluates_the_wall_phase_once_a_step() {
+    use sliding_ladder::sim::complement::ComplementWall;
+    use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+    let ladder = Ladder {
+        mass: 1.0,
+        half_length: 1.0,
+        gravity: 1.0,
+    };
+    fn count<S: Ode<2>>(sys: &S, y0: [f64; 2]) -> (u64, u64) {
+        let mut st = AnyStepper::new("verlet", Control::Fixed(0.01), 0.0, y0).unwrap();
+        while st.t() < 1.0 {
+            st.step(sys, 1.0).unwrap();
+        }
+        (st.stats().steps, st.stats().rhs_evals)
+    }
+    let (steps, evals) = count(&WallPhase::new(&ladder), [0.3, 0.0]);
+    assert_eq!(evals, steps + 1, "wall phase in θ");
+    let (steps, evals) = count(&ComplementWall::new(&ladder), [1.2, 0.0]);
+    assert_eq!(evals, steps + 1, "wall phase in the complement");
+}

@@ -59,35 +59,44 @@ fn a_verlet_step_kicks_each_velocity_with_its_own_acceleration() {
 /// unseen: the other velocity-dependent test is autonomous.)
 /// It counts its evaluations, which the step's statistics must match (the implicit kick's
 /// iterations included: `*evals += 1` → `*evals *= 1` there went unseen).
-struct Driven(std::cell::Cell<u64>);
+/// The drive has an amplitude A (ẍ = −c ẋ + A cos t): the iteration's stop is relative, so a
+/// motion scaled by a power of two takes the same iterations and the same bits, scaled
+/// (mutation testing: the change `|Δv| / |v|` → `|Δv| % |v|`, an absolute change below 1,
+/// went unseen at A = 1).
+struct Driven(std::cell::Cell<u64>, f64);
 
 const C: f64 = 0.8;
 
 impl Ode<2> for Driven {
     fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, t: f64, y: &[D; 2]) -> [D; 2] {
         self.0.set(self.0.get() + 1);
-        [y[1], y[1] * -C + t.cos()]
+        [y[1], y[1] * -C + self.1 * t.cos()]
     }
 }
 
 #[test]
 fn a_verlet_step_solves_its_implicit_kick_at_the_step_s_end_time() {
-    let (t0, h, y0) = (0.7, 0.1, [0.3, -0.4]);
-    let mut st = AnyStepper::new("verlet", Control::Fixed(h), t0, y0).unwrap();
-    let sys = Driven(std::cell::Cell::new(0));
-    st.step(&sys, 2.0).unwrap();
-    assert_eq!(st.stats().rhs_evals, sys.0.get(), "evaluations counted");
-    assert!(sys.0.get() >= 3, "the implicit kick iterates");
-    let half = y0[1] + 0.5 * h * (-C * y0[1] + t0.cos());
-    let q1 = y0[0] + h * half;
-    let v1 = (half + 0.5 * h * (t0 + h).cos()) / (1.0 + 0.5 * C * h);
-    let got = st.y();
-    assert!(
-        (got[0] - q1).abs() <= 2.0 * f64::EPSILON * q1.abs(),
-        "{got:?}"
-    );
-    assert!(
-        (got[1] - v1).abs() <= 8.0 * f64::EPSILON * v1.abs(),
-        "{got:?} against {v1}"
-    );
+    let mut evals = Vec::new();
+    for amplitude in [1.0, 2f64.powi(-40), 2f64.powi(40)] {
+        let (t0, h, y0) = (0.7, 0.1, [0.3 * amplitude, -0.4 * amplitude]);
+        let mut st = AnyStepper::new("verlet", Control::Fixed(h), t0, y0).unwrap();
+        let sys = Driven(std::cell::Cell::new(0), amplitude);
+        st.step(&sys, 2.0).unwrap();
+        assert_eq!(st.stats().rhs_evals, sys.0.get(), "evaluations counted");
+        assert!(sys.0.get() >= 3, "the implicit kick iterates");
+        evals.push(sys.0.get());
+        let half = y0[1] + 0.5 * h * (-C * y0[1] + amplitude * t0.cos());
+        let q1 = y0[0] + h * half;
+        let v1 = (half + 0.5 * h * amplitude * (t0 + h).cos()) / (1.0 + 0.5 * C * h);
+        let got = st.y();
+        assert!(
+            (got[0] - q1).abs() <= 2.0 * f64::EPSILON * q1.abs(),
+            "A = {amplitude:e}: {got:?}"
+        );
+        assert!(
+            (got[1] - v1).abs() <= 8.0 * f64::EPSILON * v1.abs(),
+            "A = {amplitude:e}: {got:?} against {v1}"
+        );
+    }
+    assert!(evals.iter().all(|&n| n == evals[0]), "{evals:?}");
 }

@@ -5,7 +5,7 @@
 //! (`cargo mutants ... --cargo-arg=--test=sim_mutants`).
 //!
 //! Why one binary: a mutant of the library makes cargo rebuild and link every test target that
-//! uses it. Built one by one, the 56 files cost 56 crate compilations and links a mutant; here
+//! uses it. Built one by one, the 57 files cost 57 crate compilations and links a mutant; here
 //! they cost one. The files are included unchanged (`#[path]`), so a test fails here exactly
 //! when it fails in its own target. The list: every `src/sim` test file that runs in under
 //! about 5 s at opt-level 0 (a new one belongs here too).
@@ -53,6 +53,8 @@ mod integrate_phase;
 mod near_flat_starts;
 #[path = "../order_per_phase.rs"]
 mod order_per_phase;
+#[path = "../overflowing_state.rs"]
+mod overflowing_state;
 #[path = "../penalty_confirm.rs"]
 mod penalty_confirm;
 #[path = "../penalty_energy.rs"]
