@@ -289,6 +289,22 @@ mod tests {
         }
     }
 
+    /// A step whose length is exactly k pieces of 0.25/(|θ̇| + Ω) is k pieces, and so is one an
+    /// ulp longer (the length read as a sum of times is rounded); one a millionth of a piece
+    /// longer is k + 1 (mutation testing: the slack's `− 1e-9` → `+ 1e-9` went unseen: a step
+    /// of exactly two pieces became three).
+    #[test]
+    fn a_step_of_exactly_k_pieces_is_not_split_into_more() {
+        for (big_omega, rate, piece) in [(1.0, 0.0, 0.25), (1.0, 1.0, 0.125), (2.0, 2.0, 0.0625)] {
+            for k in 2..=5usize {
+                let h = piece * k as f64;
+                assert_eq!(impulse_pieces(big_omega, rate, h), k, "{h}");
+                assert_eq!(impulse_pieces(big_omega, rate, h.next_up()), k, "{h}");
+                assert_eq!(impulse_pieces(big_omega, rate, h + 1e-6 * piece), k + 1);
+            }
+        }
+    }
+
     /// The pieces tile the step: on a motion θ = θ0 + w (t − t0) (θ̇ = w) the impulse of
     /// F_w = m l sin θ (Ω² cos θ − θ̇²) (eq. (14)) is, in closed form,
     /// m l (Ω² (sin²θ1 − sin²θ0)/(2w) − w (cos θ0 − cos θ1)). Pieces of 0.25/(w + Ω) turn θ by
