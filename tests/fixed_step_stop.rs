@@ -52,3 +52,17 @@ fn a_fixed_step_below_the_rounding_of_t_is_refused() {
         assert_eq!(st.t(), 2f64.powi(66) + 2f64.powi(17), "{method}");
     }
 }
+
+/// The last step is cut to t_stop − t and lands on t_stop exactly, even where t + (t_stop − t)
+/// rounds past it: from 0.7 towards 2.9 with h = 5 the step is 2.1999999999999997 and
+/// 0.7 + 2.1999999999999997 = 2.9000000000000004. (Mutation testing: the landing test
+/// `t + h == t_stop || h == t_stop − t` → `&&` went unseen: the run ended an ulp past its stop.)
+#[test]
+fn the_last_step_lands_on_the_stop_exactly() {
+    assert_ne!(0.7 + (2.9 - 0.7), 2.9, "the case rounds past");
+    for method in ["euler", "rk4"] {
+        let mut st = AnyStepper::new(method, Control::Fixed(5.0), 0.7, [0.0]).unwrap();
+        st.step(&Clock, 2.9).unwrap();
+        assert_eq!(st.t(), 2.9, "{method}");
+    }
+}

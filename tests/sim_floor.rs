@@ -159,15 +159,16 @@ fn the_floor_phase_measures_errors_in_its_own_scales() {
         gravity: 24.0, // Ω² = 3g/(4l) = 9: Ω = 3
     };
     let sys = floor::FloorPhase::new(&ladder);
+    // The simulator's floor phase in the complement, (φ, X, φ̇, Ẋ), measures the same way
+    // (mutation testing: its |Ẋ|/Ω → |Ẋ| % Ω and |Ẋ| Ω went unseen).
+    let comp = sliding_ladder::sim::complement::ComplementFloor::new(&ladder);
     // (θ, X, θ̇, Ẋ) → (angle, length): the rate's term wins, then the position's.
     for (y, angle, length) in [
         ([0.1, 0.5, 9.0, 0.3], 3.0, 6.0),
         ([0.5, 0.2, 0.3, 9.0], 0.5, 3.0),
     ] {
-        assert_eq!(
-            sys.scale(&y),
-            [angle, length, 3.0 * angle, 3.0 * length],
-            "{y:?}"
-        );
+        let want = [angle, length, 3.0 * angle, 3.0 * length];
+        assert_eq!(sys.scale(&y), want, "{y:?}");
+        assert_eq!(comp.scale(&y), want, "complement {y:?}");
     }
 }

@@ -258,3 +258,33 @@ fn a_start_that_is_not_tiny_has_no_lead_in() {
         );
     }
 }
+
+/// An `[end] time` after the lead-in hands over is integrated from the hand-over, not read off
+/// the linear motion: from θ0 = 1e-30 at rest, the end lies 0.97 of the way to the
+/// separation in time, where the exact motion has turned the ladder to 0.366 rad, far outside
+/// the linear regime. Reference: the module's shift, θ(t) = θ₁(t − ln(θ1/θ0)/ω) with θ₁ the
+/// exact closed form from rest at θ1 = 1e-12 (to O(θ1²)). Bound: the error model 10 N τ, N the
+/// steps. (Mutation testing: the closed form's guard `t >= t_end` → true went unseen; it read
+/// every timed end off the linear motion, θ = θ0 cosh Ω t: 0.3667 for 0.3657 here.)
+#[test]
+fn an_end_past_the_lead_in_is_integrated() {
+    let (theta0, theta1, tol) = (1e-30f64, 1e-12f64, 1e-12);
+    let exact = PhaseOne::new(theta1, 0.0, 0.75 * G).unwrap();
+    let shift = (theta1 / theta0).ln() / omega();
+    let t_end = shift + 0.97 * exact.separation().unwrap().time;
+    let text = format!(
+        "[ladder]\nmass = 1.0\nhalf_length = 1.0\ngravity = {G}\n[start]\nangle = {theta0:e}\nangular_velocity = 0.0\n[contact]\nmodel = \"rigid\"\n[integrator]\nmethod = \"dop853\"\ntolerance = {tol:e}\n[end]\nat = \"time\"\ntime = {t_end}\n[outputs]\nwant = [\"final_state\"]\n"
+    );
+    let sc = scene::parse("tiny.toml", &text).unwrap();
+    let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    let (t, theta, rate) = o.last;
+    assert_eq!(t, t_end);
+    let (want, want_rate) = (exact.theta(t_end - shift), exact.rate(t_end - shift));
+    assert!(want > 0.2, "the end lies past the linear regime: {want}");
+    let bound = 10.0 * o.work.wall.steps as f64 * tol;
+    assert!((theta - want).abs() <= bound, "θ {theta} against {want}");
+    assert!(
+        (rate - want_rate).abs() <= bound * omega(),
+        "θ̇ {rate} against {want_rate}"
+    );
+}

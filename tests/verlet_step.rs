@@ -107,3 +107,39 @@ fn a_verlet_step_solves_its_implicit_kick_at_the_step_s_end_time() {
     let most = 1 + ((4.0 * f64::EPSILON).ln() / q.ln()).ceil() as u64 + 2;
     assert!(evals[0] <= most, "{evals:?}, at most {most}");
 }
+
+/// Two damped velocities, ẍ = −c ẋ and ÿ = −c ẏ: the implicit kick's stop compares each new
+/// velocity with its own previous value, so with two degrees of freedom it stops as with one,
+/// after the evaluations the contraction h c/2 predicts (mutation testing: `y1[d + i]` →
+/// `y1[d − i]` in the change, the same index for one degree of freedom, compared the second
+/// velocity with a position and never stopped: 51 evaluations).
+struct Damped;
+
+impl Ode<4> for Damped {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 4]) -> [D; 4] {
+        [y[2], y[3], y[2] * -C, y[3] * -C]
+    }
+}
+
+#[test]
+fn a_verlet_step_with_two_damped_velocities_stops_its_kick_in_time() {
+    let h = 0.1;
+    let mut st = AnyStepper::new("verlet", Control::Fixed(h), 0.0, [0.3, -0.2, 0.7, 0.4]).unwrap();
+    st.step(&Damped, 1.0).unwrap();
+    let q: f64 = 0.5 * h * C;
+    let most = 1 + ((4.0 * f64::EPSILON).ln() / q.ln()).ceil() as u64 + 2;
+    assert!(
+        st.stats().rhs_evals <= most,
+        "{:?}, at most {most}",
+        st.stats()
+    );
+    // Each velocity solves its own linear kick, v1 = v½/(1 + c h/2), v½ = v0 (1 − c h/2).
+    for (i, v0) in [(2, 0.7), (3, 0.4)] {
+        let v1 = v0 * (1.0 - q) / (1.0 + q);
+        assert!(
+            (st.y()[i] - v1).abs() <= 8.0 * f64::EPSILON * v1.abs(),
+            "{:?}",
+            st.y()
+        );
+    }
+}
