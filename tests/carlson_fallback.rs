@@ -22,3 +22,21 @@ fn r_f_with_two_tiny_arguments_is_its_limit() {
         );
     }
 }
+
+/// A third argument 1e600 times the other two: R_F(1e-300, 1e-300, 1e300) and its
+/// permutation. One duplication step gives (2, 2, 1e300): the two small arguments come out
+/// equal (their difference is below the rounding of λ ≥ √(x z)), and `ellip` accepts two equal
+/// small arguments at any ratio (probed down to 1e-316), so the fallback never takes a second
+/// step. With two equal arguments R_F is Carlson's R_C (DLMF 19.2.17):
+/// R_C(z, x) = acosh(√(z/x))/√(z − x) = ln(2 · 1e300)/1e150 to 1e-600 relative. 16 ulps.
+#[test]
+fn r_f_at_a_ratio_of_1e600_is_carlson_s_r_c() {
+    let want = (2f64.ln() + 300.0 * 10f64.ln()) / 1e150;
+    for (a, b, c) in [(1e-300, 1e-300, 1e300), (1e300, 1e-300, 1e-300)] {
+        let got = carlson_rf(a, b, c);
+        assert!(
+            (got - want).abs() <= 16.0 * f64::EPSILON * want,
+            "R_F({a:e}, {b:e}, {c:e}) = {got:e} against {want:e}"
+        );
+    }
+}

@@ -18,14 +18,19 @@ impl Ode<1> for Clock {
 
 #[test]
 fn a_fixed_step_is_cut_only_to_land_on_the_stop() {
-    for method in ["euler", "rk4"] {
-        let mut st = AnyStepper::new(method, Control::Fixed(2.0), 5.0, [5.0]).unwrap();
-        let mut ends = Vec::new();
-        while st.t() < 8.0 {
-            st.step(&Clock, 8.0).unwrap();
-            ends.push(st.t());
+    // From 3 with h = 2 towards 6, t h = t_stop at the first step (mutation testing: the
+    // landing test `t + h == t_stop` → `t · h == t_stop` jumped from 3 to 6 there).
+    for (t0, t_stop, ends_want) in [(5.0, 8.0, [7.0, 8.0]), (3.0, 6.0, [5.0, 6.0])] {
+        for method in ["euler", "rk4"] {
+            let mut st = AnyStepper::new(method, Control::Fixed(2.0), t0, [t0]).unwrap();
+            let mut ends = Vec::new();
+            while st.t() < t_stop {
+                st.step(&Clock, t_stop).unwrap();
+                ends.push(st.t());
+            }
+            assert_eq!(ends, ends_want, "{method} from {t0}");
+            assert_eq!(st.y(), [t_stop], "{method} from {t0}");
         }
-        assert_eq!(ends, [7.0, 8.0], "{method}");
     }
 }
 

@@ -171,6 +171,11 @@ fn cases() -> Vec<(&'static str, String, String)> {
             s("scene.toml:10: [contact] stiffness: k l/(m g) = 2e0 is too soft: the springs sink by about m g/k = 0.500 l and their bounce lifts the foot off the floor before the wall lets go, which the penalty model does not follow; allowed: k l/(m g) ≥ 5 (k ≥ 4.9050e1 N/m)"),
         ),
         (
+            "zero stiffness",
+            PENALTY.replace("stiffness = 9.81e6", "stiffness = 0.0"),
+            s("scene.toml:10: [contact] stiffness: 0 is out of range; allowed: a number > 0 (N/m)"),
+        ),
+        (
             "equilibrium",
             with("angle = 0.3", "angle = 0.0"),
             s("scene.toml:6: [start]: θ0 = 0 with θ̇0 = 0 is the equilibrium: the ladder never leaves the wall; allowed: angle > 0 or angular_velocity > 0 (or end.at = \"time\")"),
