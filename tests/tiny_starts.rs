@@ -288,3 +288,32 @@ fn an_end_past_the_lead_in_is_integrated() {
         "θ̇ {rate} against {want_rate}"
     );
 }
+
+/// The hand-over state of the linear lead-in (`sim::lead_in::linear_lead_in`) is the linear
+/// motion θ = θ0 cosh Ωt + (θ̇0/Ω) sinh Ωt, θ̇ = θ0 Ω sinh Ωt + θ̇0 cosh Ωt (written out here)
+/// at the time it returns, with and without a push. The starts are 1e-10 to 1e-20 rad, where
+/// the decaying part ½ b e^{−Ωt} is up to 3e-3 of the amplitude and so shows. Error model: the
+/// returned t = ln(2A/a)/Ω (a = θ0 + θ̇0/Ω) carries the rounding of the logarithms, u |ln a|
+/// each, which e^{Ωt} turns into a relative error; with exp, two halves and a few products,
+/// 16 u (1 + Ωt + |ln a|). (Mutation testing:
+/// the growing part's a = p + q → p − q, which changes only that small part, went unseen.)
+#[test]
+fn the_lead_in_hands_over_on_the_linear_motion() {
+    use sliding_ladder::sim::lead_in::linear_lead_in;
+    let w2 = 0.75f64;
+    let w = w2.sqrt();
+    for (theta0, rate0) in [(1e-10, 3e-11), (1e-10, 0.0), (2e-20, 1e-20), (1e-12, 5e-11)] {
+        let (t, theta, rate) = linear_lead_in(w2, theta0, rate0).expect("a tiny start");
+        let (ch, sh) = ((w * t).cosh(), (w * t).sinh());
+        let (want, want_rate) = (theta0 * ch + rate0 / w * sh, theta0 * w * sh + rate0 * ch);
+        let rel = 16.0 * f64::EPSILON * (1.0 + w * t + (theta0 + rate0 / w).ln().abs());
+        assert!(
+            (theta - want).abs() <= rel * want,
+            "θ {theta:e} vs {want:e}"
+        );
+        assert!(
+            (rate - want_rate).abs() <= rel * want_rate,
+            "θ̇ {rate:e} vs {want_rate:e}"
+        );
+    }
+}

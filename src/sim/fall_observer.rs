@@ -302,6 +302,9 @@ mod tests {
                 assert_eq!(impulse_pieces(big_omega, rate, h.next_up()), k, "{h}");
                 assert_eq!(impulse_pieces(big_omega, rate, h + 1e-6 * piece), k + 1);
             }
+            // However short, a step is one piece (mutation testing: `n.is_finite() && n > 1`
+            // → `||` gave a step under 1e-9 of a piece none, dropping its impulse).
+            assert_eq!(impulse_pieces(big_omega, rate, 1e-12 * piece), 1);
         }
     }
 

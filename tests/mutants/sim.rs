@@ -5,7 +5,7 @@
 //! (`cargo mutants ... --cargo-arg=--test=sim_mutants`).
 //!
 //! Why one binary: a mutant of the library makes cargo rebuild and link every test target that
-//! uses it. Built one by one, the 57 files cost 57 crate compilations and links a mutant; here
+//! uses it. Built one by one, the 58 files cost 58 crate compilations and links a mutant; here
 //! they cost one. The files are included unchanged (`#[path]`), so a test fails here exactly
 //! when it fails in its own target. The list: every `src/sim` test file that runs in under
 //! about 5 s at opt-level 0 (a new one belongs here too).
@@ -87,6 +87,8 @@ mod sim_integrators;
 mod sim_plan;
 #[path = "../sim_scale.rs"]
 mod sim_scale;
+#[path = "../slow_start.rs"]
+mod slow_start;
 #[path = "../stability_extreme.rs"]
 mod stability_extreme;
 #[path = "../stability_memory.rs"]

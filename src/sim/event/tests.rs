@@ -174,3 +174,22 @@ fn a_bracket_across_zero_time_finds_its_root() {
     let r = newton_in_bracket(f, -3.0, 1.0, (-3f64).tanh() + 0.5, 1f64.tanh() + 0.5).unwrap();
     assert!((r - root).abs() <= 8.0 * f64::EPSILON * root.abs(), "{r}");
 }
+
+/// A falling crossing is a rising crossing of the negated value, zeros included: arriving at 0
+/// is a crossing, leaving it is not (it was counted on arrival). (Mutation testing: Falling's
+/// `before > 0` → `before >= 0` counted a value leaving 0 downwards again.)
+#[test]
+fn falling_is_rising_of_the_negated_value() {
+    let values = [-2.0, -0.0, 0.0, 1.5, f64::MIN_POSITIVE];
+    for a in values {
+        for b in values {
+            assert_eq!(
+                crosses(Direction::Falling, a, b),
+                crosses(Direction::Rising, -a, -b),
+                "{a} → {b}"
+            );
+        }
+    }
+    assert!(crosses(Direction::Falling, 1.0, 0.0));
+    assert!(!crosses(Direction::Falling, 0.0, -1.0));
+}

@@ -73,4 +73,20 @@ mod tests {
             assert!((b[i] - x[i]).abs() <= 8.0 * f64::EPSILON * 3.0, "{b:?}");
         }
     }
+
+    /// A singular matrix (second row twice the first: the second pivot is exactly 0) and one
+    /// with a non-finite entry are refused, not factored into infinities (mutation testing:
+    /// the pivot test `== 0 || !finite` → `&&` went unseen; no test had a singular matrix).
+    #[test]
+    fn singular_and_non_finite_matrices_are_refused() {
+        for a in [
+            [1.0, 2.0, 2.0, 4.0],
+            [0.0, 0.0, 0.0, 1.0],
+            [f64::INFINITY, 1.0, 1.0, 1.0],
+            [f64::NAN, 1.0, 1.0, 1.0],
+        ] {
+            let (mut m, mut piv) = (a.to_vec(), vec![0; 2]);
+            assert!(!lu_factor(&mut m, &mut piv, 2), "{a:?}");
+        }
+    }
 }
