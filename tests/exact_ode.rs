@@ -125,3 +125,30 @@ fn equation_of_motion_check_fails_for_wrong_modulus() {
         );
     }
 }
+
+/// The simulator's energy of the wall phase (`sim::rigid::energy`, eqs. (2)-(3):
+/// E = (2/3) m l² θ̇² + m g l cos θ) is constant along the exact motion of a ladder that is not
+/// the unit one (m = 2 kg, l = 3 m, g = 9.81: Ω² = 3g/(4l)). Error model: each of the two terms
+/// is a product of a few roundings, so E carries 8 u of their size m g l (1 + θ̇²/Ω²). (Mutation
+/// testing: l² → l/l went unseen; the runs use the scene's own units, where l = 1.)
+#[test]
+fn the_wall_phase_energy_is_constant_along_the_exact_motion() {
+    use sliding_ladder::sim::rigid::{energy, Ladder};
+    let ladder = Ladder {
+        mass: 2.0,
+        half_length: 3.0,
+        gravity: 9.81,
+    };
+    let omega2 = 0.75 * 9.81 / 3.0;
+    let motion = PhaseOne::new(0.3, 0.4, omega2).unwrap();
+    let e0 = energy(&ladder, 0.3, 0.4);
+    for t in [0.2, 0.5, 1.0] {
+        let (theta, rate) = (motion.theta(t), motion.rate(t));
+        let size = 2.0 * 9.81 * 3.0 * (1.0 + rate * rate / omega2);
+        let e = energy(&ladder, theta, rate);
+        assert!(
+            (e - e0).abs() <= 8.0 * f64::EPSILON * size,
+            "t = {t}: {e} against {e0}"
+        );
+    }
+}
