@@ -134,4 +134,27 @@ mod tests {
         // The top leaves at once: θ̇0² ≥ Ω² φ0.
         assert!(near_flat(0.75, 1e-20, 1e-9).is_none());
     }
+
+    /// The contract's refusals: a start at or past flat (φ0 ≤ 0), a backward push, and an Ω²
+    /// that is not a positive finite number each give None, while a start just inside them is
+    /// answered (mutation testing: the guard's last `&&` → `||`, which let every finite Ω²
+    /// through, went unseen: the callers pass only valid starts).
+    #[test]
+    fn starts_outside_the_contract_have_no_answer() {
+        assert!(near_flat(0.75, 1e-12, 0.0).is_some());
+        for (omega2, phi0, rate0) in [
+            (0.75, 0.0, 0.0),
+            (0.75, -1e-12, 0.0),
+            (0.75, 1e-12, -1e-9),
+            (0.0, 1e-12, 0.0),
+            (-0.75, 1e-12, 0.0),
+            (f64::INFINITY, 1e-12, 0.0),
+            (f64::NAN, 1e-12, 0.0),
+        ] {
+            assert!(
+                near_flat(omega2, phi0, rate0).is_none(),
+                "{omega2} {phi0} {rate0}"
+            );
+        }
+    }
 }
