@@ -38,6 +38,16 @@ impl Event<1> for Dip {
     }
 }
 
+/// The phase end (event, time) of one rk4 step of 3 from t = 0 on y = t, watching a dip from
+/// `lo` to `hi` with `k` interior samples.
+fn one_step_with(lo: f64, hi: f64, k: usize) -> (Option<usize>, f64) {
+    let dip = Dip { lo, hi, k };
+    let mut stepper = AnyStepper::new("rk4", Control::Fixed(3.0), 0.0, [0.0]).unwrap();
+    let events = [&dip as &dyn Event<1>];
+    let end = integrate_phase(&Clock, &mut stepper, &events, 3.0, 10, &mut ()).unwrap();
+    (end.event, end.t)
+}
+
 /// One rk4 step of 3 from t = 0. For each k from 1 to 4 and each interior sample time
 /// s = 3 j/(k + 1), a dip from s − w to s + w (w a fifth of the samples' spacing, so no other
 /// sample and neither end sees it) is found at its start s − w by Brent's method, to 4 ulps.
@@ -49,20 +59,12 @@ fn a_dip_around_any_interior_sample_is_found_and_only_there() {
         for j in 1..=k {
             let s = spacing * j as f64;
             let w = 0.2 * spacing;
-            let dip = Dip {
-                lo: s - w,
-                hi: s + w,
-                k,
-            };
-            let mut stepper = AnyStepper::new("rk4", Control::Fixed(3.0), 0.0, [0.0]).unwrap();
-            let events = [&dip as &dyn Event<1>];
-            let end = integrate_phase(&Clock, &mut stepper, &events, 3.0, 10, &mut ()).unwrap();
-            assert_eq!(end.event, Some(0), "k = {k}, sample {j}: not found");
-            let err = (end.t - (s - w)).abs();
+            let (event, t) = one_step_with(s - w, s + w, k);
+            assert_eq!(event, Some(0), "k = {k}, sample {j}: not found");
+            let err = (t - (s - w)).abs();
             assert!(
                 err <= 4.0 * f64::EPSILON * s,
-                "k = {k}, sample {j}: t = {}",
-                end.t
+                "k = {k}, sample {j}: t = {t}"
             );
         }
         // Between two samples (or a sample and an end) the same dip goes unseen: the step runs
@@ -70,14 +72,7 @@ fn a_dip_around_any_interior_sample_is_found_and_only_there() {
         // that the found dips were found by the samples, not by the step's ends.
         let between = 0.5 * spacing;
         let w = 0.2 * spacing;
-        let dip = Dip {
-            lo: between - w,
-            hi: between + w,
-            k,
-        };
-        let mut stepper = AnyStepper::new("rk4", Control::Fixed(3.0), 0.0, [0.0]).unwrap();
-        let events = [&dip as &dyn Event<1>];
-        let end = integrate_phase(&Clock, &mut stepper, &events, 3.0, 10, &mut ()).unwrap();
-        assert_eq!((end.event, end.t), (None, 3.0), "k = {k}");
+        let found = one_step_with(between - w, between + w, k);
+        assert_eq!(found, (None, 3.0), "k = {k}");
     }
 }

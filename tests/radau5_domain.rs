@@ -29,9 +29,10 @@ impl Ode<1> for StiffensWithDomain {
     }
 }
 
-/// To t = 1 + 5/k, where y = e^(−1) e^(−5) exactly. Error model: a stable run's global error is a
-/// few times its local tolerance τ (measured 0.7-4.5 τ here), so 10 τ relative; the NaN-accepting
-/// estimate missed by 700-1,100 (y < 0), whatever τ.
+/// To t = 1 + 5/k, where y = e^(−1) e^(−5) exactly. Error model: each step's local error is
+/// held to τ in the system's scale (1, so absolutely), and the decay damps every earlier step's
+/// error, so the global error stays within a few local ones: 10 τ. The NaN-accepting estimate
+/// ended at y = −1.6 to −2.7 in five of these six runs (k = 1e2 at τ = 1e-8 escaped it).
 #[test]
 fn a_nan_error_estimate_rejects_the_step() {
     let exact = (-6.0f64).exp();
@@ -43,8 +44,8 @@ fn a_nan_error_estimate_rejects_the_step() {
             while st.t() < t_end {
                 st.step(&sys, t_end).unwrap();
             }
-            let rel = (st.y()[0] - exact).abs() / exact;
-            assert!(rel <= 10.0 * tol, "k = {k}, τ = {tol}: y = {}", st.y()[0]);
+            let err = (st.y()[0] - exact).abs();
+            assert!(err <= 10.0 * tol, "k = {k}, τ = {tol}: y = {}", st.y()[0]);
         }
     }
 }

@@ -232,9 +232,9 @@ fn file_level_problems_are_named() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
-/// The start's rate limit is where the wall force is zero at the start: the separation angle's
-/// cos θ = (2 cos θ0 + θ̇0²/Ω²)/3 equals cos θ0 at θ̇0 = Ω √(cos θ0), Ω² = 3g/(4l) (eq. (5)),
-/// √(3 g cos θ0/(4 l)) written out here: 1 % below it a
+/// The start's rate limit is where the wall force is zero at the start: by eq. (14) with
+/// (5), F_w = m l (cos θ θ̈ − sin θ θ̇²) = m l sin θ (Ω² cos θ − θ̇²), Ω² = 3g/(4l), so
+/// θ̇0 = √(3 g cos θ0/(4 l)), written out here: 1 % below it a
 /// scene is accepted and 1 % above it refused, near the wall (θ0 = 0.3: limit 2.65 rad/s) and
 /// near the floor (θ0 = 1.5: 0.721 rad/s), at g = 9.81 and l = 1. The refusal states the
 /// limit. (Mutation testing: the stated limit's Ω² cos θ0 → Ω² + cos θ0 went unseen; the only

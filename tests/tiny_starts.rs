@@ -122,6 +122,14 @@ fn a_tiny_start_traces_every_step_densely() {
     }
 }
 
+/// A scene from rest at `angle` (g = 9.81, l = 1) ending at `t_end` s, asking for the final state.
+fn timed_scene(angle: f64, method: &str, tol: f64, t_end: f64) -> scene::Scene {
+    let text = format!(
+        "[ladder]\nmass = 1.0\nhalf_length = 1.0\ngravity = {G}\n[start]\nangle = {angle:e}\nangular_velocity = 0.0\n[contact]\nmodel = \"rigid\"\n[integrator]\nmethod = \"{method}\"\ntolerance = {tol:e}\n[end]\nat = \"time\"\ntime = {t_end}\n[outputs]\nwant = [\"final_state\"]\n"
+    );
+    scene::parse("tiny.toml", &text).unwrap()
+}
+
 /// An `[end] time` before the linear lead-in hands over (issue 11, the 1e6-scene campaign: seed
 /// 1 scenes 129565, 255978, 268153, 338810, 425812, radau5 at τ ≈ 1e-16 from θ0 = 1e-313 ..
 /// 1e-159, took up to 1.2e6 steps to integrate hundreds of √(l/g) of growth): the run is the
@@ -133,10 +141,7 @@ fn a_tiny_start_traces_every_step_densely() {
 fn an_end_within_the_lead_in_is_the_linear_motion() {
     let w = omega();
     for (angle, t_end) in [(1e-200f64, 150.0f64), (5e-324, 265.0), (1e-30, 15.0)] {
-        let text = format!(
-            "[ladder]\nmass = 1.0\nhalf_length = 1.0\ngravity = {G}\n[start]\nangle = {angle:e}\nangular_velocity = 0.0\n[contact]\nmodel = \"rigid\"\n[integrator]\nmethod = \"radau5\"\ntolerance = 1e-14\n[end]\nat = \"time\"\ntime = {t_end}\n[outputs]\nwant = [\"final_state\"]\n"
-        );
-        let sc = scene::parse("tiny.toml", &text).unwrap();
+        let sc = timed_scene(angle, "radau5", 1e-14, t_end);
         // Without the closed form this run needs ~1e5 steps (it was integrated from θ0).
         let o = fall::run(&sc, 1).expect("no steps needed");
         assert_eq!(o.work.wall.steps, 0);
@@ -197,17 +202,21 @@ fn estimated_wall_time(theta0: f64, rate0: f64) -> f64 {
 /// form's time: 16 ulps of t_s (1 measured). Mutation testing: the lead-in's ln(grow)/Ω →
 /// ln(grow) · Ω (25 % short) and → ln(grow) % Ω (a few √(l/g)) went unseen, and so did the
 /// grown push in units of T, θ̇0 grow · T → θ̇0 grow / T (the pushed start 0.4 % short).
+/// The plan's wall time from (θ0, θ̇0) is `want` s to 16 ulps.
+fn assert_estimate(theta0: f64, rate0: f64, want: f64) {
+    let got = estimated_wall_time(theta0, rate0);
+    assert!(
+        (got - want).abs() <= 16.0 * f64::EPSILON * want,
+        "θ0 = {theta0:e}, θ̇0 = {rate0:e}: {got} s against {want} s"
+    );
+}
+
 #[test]
 fn a_tiny_start_s_step_estimate_is_its_separation_time_over_the_step() {
     // (θ0, θ̇0 in rad/s): from rest, and pushed from 0 (its linear start a = θ̇0/ω).
     let starts = [(1e-200, 0.0), (1e-250, 0.0), (1e-300, 0.0), (0.0, 1e-250)];
     for (theta0, rate0) in starts {
-        let want = reference_time(theta0 + rate0 / omega(), 1.0);
-        let got = estimated_wall_time(theta0, rate0);
-        assert!(
-            (got - want).abs() <= 16.0 * f64::EPSILON * want,
-            "θ0 = {theta0:e}, θ̇0 = {rate0:e}: {got} s against {want} s"
-        );
+        assert_estimate(theta0, rate0, reference_time(theta0 + rate0 / omega(), 1.0));
     }
 }
 
@@ -219,16 +228,8 @@ fn a_tiny_start_s_step_estimate_is_its_separation_time_over_the_step() {
 #[test]
 fn a_pushed_start_s_step_estimate_is_its_separation_time_over_the_step() {
     for (theta0, rate0) in [(0.3, 0.5), (1e-6, 2.0), (0.0, 1.0)] {
-        let want = PhaseOne::new(theta0, rate0, 0.75 * G)
-            .unwrap()
-            .separation()
-            .unwrap()
-            .time;
-        let got = estimated_wall_time(theta0, rate0);
-        assert!(
-            (got - want).abs() <= 16.0 * f64::EPSILON * want,
-            "θ0 = {theta0}, θ̇0 = {rate0}: {got} s against {want} s"
-        );
+        let exact = PhaseOne::new(theta0, rate0, 0.75 * G).unwrap();
+        assert_estimate(theta0, rate0, exact.separation().unwrap().time);
     }
 }
 
@@ -272,10 +273,7 @@ fn an_end_past_the_lead_in_is_integrated() {
     let exact = PhaseOne::new(theta1, 0.0, 0.75 * G).unwrap();
     let shift = (theta1 / theta0).ln() / omega();
     let t_end = shift + 0.97 * exact.separation().unwrap().time;
-    let text = format!(
-        "[ladder]\nmass = 1.0\nhalf_length = 1.0\ngravity = {G}\n[start]\nangle = {theta0:e}\nangular_velocity = 0.0\n[contact]\nmodel = \"rigid\"\n[integrator]\nmethod = \"dop853\"\ntolerance = {tol:e}\n[end]\nat = \"time\"\ntime = {t_end}\n[outputs]\nwant = [\"final_state\"]\n"
-    );
-    let sc = scene::parse("tiny.toml", &text).unwrap();
+    let sc = timed_scene(theta0, "dop853", tol, t_end);
     let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
     let (t, theta, rate) = o.last;
     assert_eq!(t, t_end);

@@ -49,6 +49,12 @@ mod tests {
     use super::*;
     use std::f64::consts::FRAC_PI_2;
 
+    /// The least κ a refusal states ("allowed: κ > …").
+    fn stated_least_kappa(message: &str) -> f64 {
+        let after = message.split("κ > ").nth(1).expect("a least κ");
+        after.split(' ').next().unwrap().parse().unwrap()
+    }
+
     #[test]
     fn starts_the_springs_cannot_tell_from_flat_are_refused_and_the_rest_run() {
         // Scene 418: π/2 − 2.1e-7 at κ = 1.6e6 is refused; κ = 1e12 runs.
@@ -60,15 +66,7 @@ mod tests {
         );
         assert_eq!(too_close_to_flat(1e12, near), None);
         // The stated least κ: just above it runs, just below it is refused.
-        let least: f64 = m
-            .split("κ > ")
-            .nth(1)
-            .unwrap()
-            .split(' ')
-            .next()
-            .unwrap()
-            .parse()
-            .unwrap();
+        let least = stated_least_kappa(&m);
         assert!(too_close_to_flat(least * 1.01, near).is_none());
         assert!(too_close_to_flat(least * 0.99, near).is_some());
         // A start at rest from 1.17 rad separates at θ_r = 1.31 (sin θ_r = 0.966, not 1), 0.26
@@ -79,15 +77,7 @@ mod tests {
             (1.17, 0.0),
             too_close_to_flat(1.0, (1.17, 0.0)).expect("κ = 1"),
         );
-        let least: f64 = soft
-            .split("κ > ")
-            .nth(1)
-            .unwrap()
-            .split(' ')
-            .next()
-            .unwrap()
-            .parse()
-            .unwrap();
+        let least = stated_least_kappa(&soft);
         assert!((3.0..10.0).contains(&least), "{least}");
         assert!(too_close_to_flat(least * 1.01, far).is_none());
         assert!(too_close_to_flat(least * 0.99, far).is_some());
