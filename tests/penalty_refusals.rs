@@ -220,3 +220,36 @@ fn soft_springs_lift_the_foot_only_well_below_the_least_stiffness() {
     assert!(lifted > 0, "no lift-off: the sweep shows nothing");
     assert!(stiffest < SOFTEST_CONTACT / 2.0, "{stiffest}");
 }
+
+/// `penalty_run::separation` itself refuses a stiffness that is not a positive finite number
+/// (NaN, ∞, 0, negative) and the equilibrium θ0 = θ̇0 = 0, before any step, as a start error
+/// naming the cause; the same start with a usable κ runs to its separation. (Mutation
+/// testing: the stiffness guard's `&&` → `||` went unseen: scenes refuse such κ earlier, so
+/// only a direct call reaches the run's own guard.)
+#[test]
+fn the_run_refuses_an_unusable_stiffness_and_the_equilibrium() {
+    use sliding_ladder::sim::run::RunError;
+    let start_error = |kappa: f64, theta0: f64| {
+        let contact = Contact { kappa, gamma: 0.0 };
+        let r = separation(
+            contact,
+            Law::Switched,
+            theta0,
+            0.0,
+            "radau5",
+            Control::Tolerance(1e-8),
+            100_000,
+        );
+        match r.result {
+            Err(RunError::Start(m)) => Some(m),
+            _ => None,
+        }
+    };
+    for kappa in [f64::NAN, f64::INFINITY, 0.0, -1e4] {
+        let m = start_error(kappa, 0.3).unwrap_or_else(|| panic!("κ = {kappa} was run"));
+        assert!(m.contains("is not usable"), "κ = {kappa}: {m}");
+    }
+    let m = start_error(1e4, 0.0).expect("the equilibrium was run");
+    assert!(m.contains("equilibrium"), "{m}");
+    assert_eq!(start_error(1e4, 0.3), None, "a usable κ runs");
+}

@@ -9,31 +9,51 @@
 //! − went unseen: the rate is used only to start a run, whose later motion forgives it.)
 
 use sliding_ladder::sim::exact::PhaseOne;
-use sliding_ladder::sim::penalty_start::{slow_forces, OMEGA2};
+use sliding_ladder::sim::penalty_start::{rigid_forces, slow_forces, OMEGA2};
+use sliding_ladder::sim::scene_work::wall_force_rate;
+
+/// The Richardson derivative of `force` at `t` and its error bound (module docs).
+fn richardson(force: impl Fn(f64) -> f64, t: f64) -> (f64, f64) {
+    let delta = 1e-3;
+    let diff = |d: f64| (force(t + d) - force(t - d)) / (2.0 * d);
+    let (d1, d2) = (diff(delta), diff(2.0 * delta));
+    let bound = (d1 - d2).abs() + 16.0 * f64::EPSILON * force(t).abs() / delta;
+    ((4.0 * d1 - d2) / 3.0, bound)
+}
 
 #[test]
 fn the_slow_start_s_rates_are_the_derivatives_of_its_forces() {
     let motion = PhaseOne::new(0.3, 0.2, OMEGA2).unwrap();
     for kappa in [5.0, 50.0, 1e4] {
         for t in [0.3, 0.8, 1.3] {
-            let force = |t: f64| slow_forces(kappa, motion.theta(t), motion.rate(t)).0;
-            let diff = |d: f64| {
-                let (a, b) = (force(t + d), force(t - d));
-                [(a[0] - b[0]) / (2.0 * d), (a[1] - b[1]) / (2.0 * d)]
-            };
-            let delta = 1e-3;
-            let (d1, d2) = (diff(delta), diff(2.0 * delta));
             let rate = slow_forces(kappa, motion.theta(t), motion.rate(t)).1;
-            let f = force(t);
             for i in 0..2 {
-                let richardson = (4.0 * d1[i] - d2[i]) / 3.0;
-                let bound = (d1[i] - d2[i]).abs() + 16.0 * f64::EPSILON * f[i].abs() / delta;
+                let force = |t: f64| slow_forces(kappa, motion.theta(t), motion.rate(t)).0[i];
+                let (want, bound) = richardson(force, t);
                 assert!(
-                    (rate[i] - richardson).abs() <= bound,
-                    "κ = {kappa}, t = {t}, force {i}: {} against {richardson} (± {bound:e})",
+                    (rate[i] - want).abs() <= bound,
+                    "κ = {kappa}, t = {t}, force {i}: {} against {want} (± {bound:e})",
                     rate[i]
                 );
             }
         }
+    }
+}
+
+/// `scene_work::wall_force_rate` is the time derivative of the rigid wall force along (5) at
+/// any (θ, θ̇), not only at θ = 0 where the penalty refusal asks for it (there θ̈ = 0 and the
+/// force's θ̇-derivative −2 θ̇ sin θ is 0, so mutation testing's Ω² + sin θ for Ω² sin θ in the
+/// dual number's θ̈ went unseen). Same reference and error model as above.
+#[test]
+fn the_wall_force_rate_is_the_derivative_of_the_wall_force() {
+    let motion = PhaseOne::new(0.3, 0.2, OMEGA2).unwrap();
+    for t in [0.0, 0.3, 0.8, 1.3] {
+        let force = |t: f64| rigid_forces(motion.theta(t), motion.rate(t)).0;
+        let (want, bound) = richardson(force, t);
+        let rate = wall_force_rate(motion.theta(t), motion.rate(t));
+        assert!(
+            (rate - want).abs() <= bound,
+            "t = {t}: {rate} against {want} (± {bound:e})"
+        );
     }
 }

@@ -63,9 +63,16 @@ fn subnormal_starts_separate_at_the_exact_time() {
             ("radau5", "tolerance = 1e-12", 1e-12),
             ("dopri5", "tolerance = 1e-12", 1e-12),
             ("rk4", "step = 1e-2", 1e-10),
+            // The closed form behind the lead-in: no steps, its error the rounding of the
+            // logarithms (|ln a| ≤ 750) and of t_s, a few ulps of each, below 1e-15 of t_s.
+            ("exact", "", 1e-15),
         ] {
             let o = run(method, control, angle, rate);
             let sep = o.separation.expect("separates");
+            assert_eq!(
+                o.last.0, sep.time,
+                "{method}: the run ends at the separation"
+            );
             let n = (o.work.wall.steps.max(1)) as f64;
             let bound = 10.0 * n * tau * want;
             assert!(
@@ -236,7 +243,9 @@ fn a_pushed_start_s_step_estimate_is_its_separation_time_over_the_step() {
 /// The lead-in is for tiny starts only: a start at or above `LINEAR_AMPLITUDE` in θ or θ̇/Ω, or
 /// a ladder whose Ω is not a positive finite number, gets None and is integrated as it is
 /// (mutation testing: two of the guard's `&&` → `||` went unseen: the callers ask only for
-/// tiny starts, so only the contract itself shows the guard).
+/// tiny starts, so only the contract itself shows the guard). Nor has a start that does not
+/// move away from 0 one: pushed back towards the wall (θ0 + θ̇0/Ω ≤ 0, where the mutant
+/// `||` → `&&` of the second guard returned a NaN hand-over time) or from a negative angle.
 #[test]
 fn a_start_that_is_not_tiny_has_no_lead_in() {
     use sliding_ladder::sim::lead_in::{linear_lead_in, LINEAR_AMPLITUDE};
@@ -251,6 +260,9 @@ fn a_start_that_is_not_tiny_has_no_lead_in() {
         (0.75, 0.0, amp * 0.75f64.sqrt()),
         (0.0, 0.5 * amp, 0.0),
         (f64::INFINITY, 0.5 * amp, 0.0),
+        (0.75, 0.0, -1e-12),
+        (0.75, 1e-12, -2e-12),
+        (0.75, -1e-12, 1e-11),
     ] {
         assert_eq!(
             linear_lead_in(big_omega2, theta0, rate0),

@@ -108,4 +108,19 @@ mod tests {
             );
         }
     }
+
+    /// The search stops at a bracket of 1e-9 of the span, wherever the span lies: the minimum
+    /// of ((t − c)/w)² on [a, a + w] is then found to within 1e-9 w in t, so its value is at
+    /// most (1e-9 + 4 ulp(a)/w)² (the ulps: t − c near a). A stop read off the span's position
+    /// (1e-9 (b + a): far too loose on [1e6, 1e6 + 1]) or its reciprocal (1e-9/(b − a): wider
+    /// than a span of 1e-6, so no search at all) leaves it 1e-7 or more (mutation testing).
+    #[test]
+    fn the_search_stops_at_a_fixed_fraction_of_the_span() {
+        for (a, w) in [(1e6, 1.0), (0.0, 1e-6), (-3.0, 0.25), (1e-6, 1e-6)] {
+            let c = a + 0.37 * w;
+            let m = minimum_on(|t| ((t - c) / w).powi(2), a, a + w, 4);
+            let bound = (1e-9 + 4.0 * (a.abs() * f64::EPSILON) / w).powi(2);
+            assert!(m <= bound, "[{a}, {a} + {w}]: {m:e} above {bound:e}");
+        }
+    }
 }

@@ -193,3 +193,36 @@ fn falling_is_rising_of_the_negated_value() {
     assert!(crosses(Direction::Falling, 1.0, 0.0));
     assert!(!crosses(Direction::Falling, 0.0, -1.0));
 }
+
+/// The root stays in the bracket even when the secant start rounds past its end. The event
+/// k (t − r1)(t − r2) crosses zero at r1, inside the bracket [0, b], and again at r2 one ulp
+/// past b: the value at b is then 1e-19 of the value at 0, (b − 0) fa/(fb − fa) rounds up by
+/// an ulp and the secant lands on r2 itself. The start must then be an end of the bracket, as
+/// for any secant not strictly inside it; taken as it is (mutation testing: `&&` → `||` in
+/// the start's test), the value there is exactly 0 and r2, outside the bracket and 6.5e-3
+/// after the crossing, was returned. Newton's steps from b head for r2 too, and are refused
+/// as outside, so the answer is r1 to the iteration's noise (8 ulps).
+#[test]
+fn a_secant_start_past_the_bracket_is_not_taken() {
+    // Found by a search over random brackets of this shape (f64 arithmetic as here).
+    let (b, r1, k) = (
+        0.895_717_908_424_955_4,
+        0.889_211_112_921_108,
+        6.070_788_974_335_778,
+    );
+    let r2 = b + f64::EPSILON * 0.5; // the next float after b (b in [0.5, 1))
+    assert!(r2 > b && (r2 - b) == f64::EPSILON * 0.5);
+    let f = |t: f64| k * (t - r1) * (t - r2);
+    let (fa, fb) = (f(0.0), f(b));
+    let secant = -fa * (b / (fb - fa));
+    assert_eq!(
+        secant, r2,
+        "the case: the secant rounds onto the root past b"
+    );
+    let event = |t: f64| Some((f(t), k * ((t - r1) + (t - r2))));
+    let root = newton_in_bracket(event, 0.0, b, fa, fb).expect("a root");
+    assert!(
+        (root - r1).abs() <= 8.0 * f64::EPSILON * r1,
+        "{root} against the crossing in the bracket, {r1}"
+    );
+}
