@@ -77,6 +77,8 @@ mod tests {
     /// A singular matrix (second row twice the first: the second pivot is exactly 0) and one
     /// with a non-finite entry are refused, not factored into infinities (mutation testing:
     /// the pivot test `== 0 || !finite` → `&&` went unseen; no test had a singular matrix).
+    /// The non-finite pivot may come at a later column, whose index p n + k the test must
+    /// read (mutation testing: p n − k, the same element at k = 0 only, went unseen).
     #[test]
     fn singular_and_non_finite_matrices_are_refused() {
         for a in [
@@ -84,6 +86,8 @@ mod tests {
             [0.0, 0.0, 0.0, 1.0],
             [f64::INFINITY, 1.0, 1.0, 1.0],
             [f64::NAN, 1.0, 1.0, 1.0],
+            [1.0, 0.0, 0.0, f64::INFINITY],
+            [1.0, 0.0, 0.0, f64::NAN],
         ] {
             let (mut m, mut piv) = (a.to_vec(), vec![0; 2]);
             assert!(!lu_factor(&mut m, &mut piv, 2), "{a:?}");
