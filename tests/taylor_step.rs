@@ -172,3 +172,33 @@ fn the_scene_that_showed_it_separates_within_its_error_model() {
     println!("separation angle error {err:.2e}, bound {bound:.2e} ({steps} steps)");
     assert!(err <= bound, "{err:e} > {bound:e}");
 }
+
+/// The stepper's step is the rule on exactly its last [`STEP_ORDERS`] orders, p − 5 ..= p
+/// (capped at the model's longest step), bit for bit: the same operations on the series it
+/// computed. Reading one or two orders more only shortens some steps (the radius is a minimum
+/// over the orders read), which the checks above allow (mutation testing: p − 7 and p − 6
+/// went unseen), so the step itself is compared, on the grid of starts from rest.
+#[test]
+fn the_step_reads_the_last_six_orders() {
+    use sliding_ladder::sim::integrators::taylor::STEP_ORDERS;
+    let sys = WallPhase::new(&LADDER);
+    let mut longer = 0;
+    for tol in [1e-6, 1e-9, 1e-12] {
+        for k in (5..1571).step_by(10) {
+            let y0 = [k as f64 * 1e-3, 0.0];
+            let mut st = Taylor::new(0.0, y0, tol);
+            st.step(&sys, f64::INFINITY).unwrap();
+            let (series, p) = (st.series(), st.order());
+            let scale = sys.scale(&y0);
+            let rule = |orders| {
+                (step_from_orders(series, &scale, tol, orders) * series.unit())
+                    .min(sys.taylor_max_step(&y0))
+            };
+            let want = rule(p + 1 - STEP_ORDERS..=p);
+            assert_eq!(st.t(), want, "θ0 = {}, tol {tol:e}", y0[0]);
+            // The check can fail: an order more gives another step somewhere on the grid.
+            longer += usize::from(rule(p - STEP_ORDERS..=p) != want);
+        }
+    }
+    assert!(longer > 0, "one order more never changed a step");
+}

@@ -218,3 +218,44 @@ pub fn preloaded_start(contact: &Contact, theta0: f64, rate0: f64) -> [f64; 6] {
         rate[1],
     ]
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The clipped law is the switched law's spring-dashpot κ p + γ ṗ where that pushes and the
+    /// spring is compressed, and zero elsewhere: the two laws' forces compared at states on
+    /// each side of both kinks, with damping, so the dashpot's sign shows (mutation testing:
+    /// f − (γ/κ) v in `one_sided` went unseen, no test ran the clipped law with a moving,
+    /// damped contact and looked at the force).
+    #[test]
+    fn the_clipped_law_is_the_switched_law_where_it_pushes() {
+        let contact = Contact {
+            kappa: 100.0,
+            gamma: 3.0,
+        };
+        let mut active = 0;
+        for (p, v) in [
+            (0.02, 0.5),
+            (0.02, -0.5),
+            (0.02, -1.0),
+            (-0.01, 0.5),
+            (0.0, 2.0),
+        ] {
+            // y = [θ, F_w, F_f, θ̇, Ḟ_w, Ḟ_f] in force units (f = κ p).
+            let (f, rate) = (contact.kappa * p, contact.kappa * v);
+            let y = [0.3, f, 0.5 * f, 0.1, rate, 0.5 * rate];
+            let switched = contact_forces(&contact, Law::Switched, &y);
+            let clipped = contact_forces(&contact, Law::OneSided, &y);
+            for (s, c) in [(switched.0, clipped.0), (switched.1, clipped.1)] {
+                if f > 0.0 && s > 0.0 {
+                    active += 1;
+                    assert_eq!(c, s, "p {p}, v {v}: pushing");
+                } else {
+                    assert_eq!(c, 0.0, "p {p}, v {v}: not pushing ({s})");
+                }
+            }
+        }
+        assert!(active >= 4, "both branches are met");
+    }
+}
