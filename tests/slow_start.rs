@@ -27,13 +27,12 @@ fn the_slow_start_s_rates_are_the_derivatives_of_its_forces() {
     for kappa in [5.0, 50.0, 1e4] {
         for t in [0.3, 0.8, 1.3] {
             let rate = slow_forces(kappa, motion.theta(t), motion.rate(t)).1;
-            for i in 0..2 {
+            for (i, got) in rate.into_iter().enumerate() {
                 let force = |t: f64| slow_forces(kappa, motion.theta(t), motion.rate(t)).0[i];
                 let (want, bound) = richardson(force, t);
                 assert!(
-                    (rate[i] - want).abs() <= bound,
-                    "κ = {kappa}, t = {t}, force {i}: {} against {want} (± {bound:e})",
-                    rate[i]
+                    (got - want).abs() <= bound,
+                    "κ = {kappa}, t = {t}, force {i}: {got} against {want} (± {bound:e})"
                 );
             }
         }
