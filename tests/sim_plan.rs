@@ -163,3 +163,41 @@ fn the_wall_phase_builds_dense_output_only_for_the_impulse() {
         plain.work.wall.steps
     );
 }
+
+/// A trace samples every step at its fifths: four dense points at t0 + j (t1 − t0)/5 and the
+/// step's end. With rk4's fixed step h every wall-phase sample before the separation lies at
+/// a multiple of h/5 (from t = 0), to the rounding of the step ends, which are sums of up to
+/// n steps: n u t. (Mutation testing: the dense points at t0 + (t1 − t0)/j/5 went unseen: the
+/// trace tests counted samples, not where they lie.)
+#[test]
+fn a_trace_samples_each_step_at_its_fifths() {
+    let h = 1e-2;
+    let o = run(vec![Output::Trajectory], End::Separation, Control::Fixed(h));
+    let wall: Vec<f64> = o
+        .trace
+        .unwrap()
+        .iter()
+        .filter(|s| s.phase == 1)
+        .map(|s| s.t)
+        .collect();
+    let sep = o.separation.unwrap().time;
+    let (n, fifth) = (o.work.wall.steps as f64, wall[5] / 5.0);
+    assert!(
+        (fifth - h / 5.0).abs() <= 4.0 * f64::EPSILON * h,
+        "the step is h: {fifth}"
+    );
+    let before: Vec<f64> = wall.into_iter().filter(|&t| t < sep).collect();
+    assert!(
+        before.len() as f64 >= 4.0 * (n - 1.0),
+        "{} samples",
+        before.len()
+    );
+    for (i, t) in before.iter().enumerate() {
+        let bound = (n + 2.0) * f64::EPSILON * t;
+        assert!(
+            (t - i as f64 * fifth).abs() <= bound,
+            "sample {i} at {t}, not {}",
+            i as f64 * fifth
+        );
+    }
+}
