@@ -8,9 +8,9 @@
 
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::integrators::any::AnyStepper;
-use sliding_ladder::sim::integrators::Control;
+use sliding_ladder::sim::integrators::{Control, Stats};
 use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel};
-use sliding_ladder::sim::penalty_run::{separate_with, separation};
+use sliding_ladder::sim::penalty_run::{separate_with, separation, PenaltyRun};
 use sliding_ladder::sim::run::RunError;
 use sliding_ladder::sim::scene::{parse, ContactModel, Scene};
 
@@ -74,15 +74,18 @@ fn tolerance(sc: &Scene) -> f64 {
     }
 }
 
-/// The first try alone, at the scene's tolerance, without the check or the retry: its
-/// separation angle and accepted steps.
-fn first_try(sc: &Scene) -> Result<(f64, u64), RunError> {
+/// One try alone at tolerance `tol`, without the check or the retry.
+fn one_try(sc: &Scene, tol: f64) -> PenaltyRun {
     let c = contact(sc);
     let model = PenaltyModel::new(c, Law::Switched);
     let y0 = preloaded_start(&c, sc.theta0, 0.0);
-    let control = Control::Tolerance(tolerance(sc));
-    let mut stepper = AnyStepper::new(&sc.method, control, 0.0, y0).unwrap();
-    let run = separate_with(&model, &mut stepper, fall::MAX_STEPS);
+    let mut stepper = AnyStepper::new(&sc.method, Control::Tolerance(tol), 0.0, y0).unwrap();
+    separate_with(&model, &mut stepper, fall::MAX_STEPS)
+}
+
+/// The first try alone, at the scene's tolerance: its separation angle and accepted steps.
+fn first_try(sc: &Scene) -> Result<(f64, u64), RunError> {
+    let run = one_try(sc, tolerance(sc));
     run.result.map(|s| (s.angle, run.stats.steps))
 }
 
@@ -111,6 +114,16 @@ fn the_campaign_findings_f11_and_f12_separate_on_the_second_try() {
             "{name}"
         );
         let tau = tolerance(&sc);
+        // The work reported is that of both tries, each counter the sum of the two (mutation
+        // testing: a product and a difference there went unseen).
+        let (a, b) = (one_try(&sc, tau).stats, one_try(&sc, tau / 10.0).stats);
+        let both = Stats {
+            rhs_evals: a.rhs_evals + b.rhs_evals,
+            jacobians: a.jacobians + b.jacobians,
+            steps: a.steps + b.steps,
+            rejected: a.rejected + b.rejected,
+        };
+        assert_eq!(o.work.wall, both, "{name}: the work of both tries");
         let second = bound(kappa, rigid, o.work.wall.steps, tau / 10.0);
         assert!(
             (theta_s - rigid).abs() <= second,

@@ -60,6 +60,23 @@ fn a_fixed_step_on_stiff_springs_is_refused_and_would_fail() {
     assert!(fall::run(&sc, fall::MAX_STEPS).is_err());
 }
 
+/// The dashpot counts in the contact's fastest rate, ω = 2√κ + 4γ (γ = c √(l/g)/m): κ = 1e8 and
+/// γ = 5e3 give ω = 2e4 + 2e4 = 4e4, so h ≤ 0.2/ω = 5e-6, half the undamped springs' limit
+/// (mutation testing: 2√κ − 4γ went unseen, every refusal test was undamped).
+#[test]
+fn the_dashpot_shortens_the_fixed_step_limit() {
+    let damped = "model = \"penalty\"\nstiffness = 1e8\ndamping = 5e3";
+    let bad = text(damped, "method = \"rk4\"\nstep = 6e-6", "separation");
+    let msg = parse("s.toml", &bad).unwrap_err().to_string();
+    // ω is stated to four digits (`{:.3e}`), the limit to f64.
+    let omega = number_after(&msg, "2√κ + 4γ = ");
+    assert!((omega - 4e4).abs() <= 5e-4 * 4e4, "{msg}");
+    let limit = number_after(&msg, "a step ≤ ");
+    assert!((limit - 5e-6).abs() <= 4.0 * f64::EPSILON * 5e-6, "{msg}");
+    let inside = text(damped, "method = \"rk4\"\nstep = 4.9e-6", "separation");
+    assert!(parse("s.toml", &inside).is_ok(), "inside the limit");
+}
+
 #[test]
 fn explicit_euler_on_springs_needs_a_smaller_step_still() {
     let springs = "model = \"penalty\"\nstiffness = 1e2\ndamping = 0.0";

@@ -261,3 +261,41 @@ const UNIT_LADDER: Ladder = Ladder {
     half_length: 1.0,
     gravity: 1.0,
 };
+
+/// A wall phase needs a positive finite Ω² and a finite start: each of those that is not
+/// (NaN, ∞, 0 or negative gravity; a NaN or infinite angle or rate) is refused as a start
+/// error naming the values, with the others usable. (Mutation testing: two of the guard's
+/// `&&` → `||` went unseen: scenes refuse such values before the run, so only a direct call
+/// reaches the guard.)
+#[test]
+fn a_wall_phase_needs_a_positive_finite_omega_and_a_finite_start() {
+    let run = |gravity: f64, theta0: f64, rate0: f64| {
+        let ladder = Ladder { gravity, ..UNIT };
+        wall_release(
+            &ladder,
+            theta0,
+            rate0,
+            "dop853",
+            Control::Tolerance(1e-8),
+            100_000,
+        )
+    };
+    for (gravity, theta0, rate0) in [
+        (f64::NAN, 0.3, 0.0),
+        (f64::INFINITY, 0.3, 0.0),
+        (0.0, 0.3, 0.0),
+        (-1.0, 0.3, 0.0),
+        (1.0, f64::NAN, 0.0),
+        (1.0, f64::INFINITY, 0.0),
+        (1.0, 0.3, f64::NAN),
+        (1.0, 0.3, f64::NEG_INFINITY),
+    ] {
+        match run(gravity, theta0, rate0) {
+            Err(sliding_ladder::sim::run::RunError::Start(m)) => {
+                assert!(m.contains("no wall phase"), "{m}")
+            }
+            other => panic!("g = {gravity}, θ0 = {theta0}, θ̇0 = {rate0}: {other:?}"),
+        }
+    }
+    assert!(run(1.0, 0.3, 0.0).is_ok(), "a usable start runs");
+}

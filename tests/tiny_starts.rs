@@ -131,10 +131,14 @@ fn a_tiny_start_traces_every_step_densely() {
 
 /// A scene from rest at `angle` (g = 9.81, l = 1) ending at `t_end` s, asking for the final state.
 fn timed_scene(angle: f64, method: &str, tol: f64, t_end: f64) -> scene::Scene {
-    let text = format!(
+    scene::parse("tiny.toml", &timed_scene_text(angle, method, tol, t_end)).unwrap()
+}
+
+/// The text of [`timed_scene`].
+fn timed_scene_text(angle: f64, method: &str, tol: f64, t_end: f64) -> String {
+    format!(
         "[ladder]\nmass = 1.0\nhalf_length = 1.0\ngravity = {G}\n[start]\nangle = {angle:e}\nangular_velocity = 0.0\n[contact]\nmodel = \"rigid\"\n[integrator]\nmethod = \"{method}\"\ntolerance = {tol:e}\n[end]\nat = \"time\"\ntime = {t_end}\n[outputs]\nwant = [\"final_state\"]\n"
-    );
-    scene::parse("tiny.toml", &text).unwrap()
+    )
 }
 
 /// An `[end] time` before the linear lead-in hands over (issue 11, the 1e6-scene campaign: seed
@@ -326,4 +330,23 @@ fn the_lead_in_hands_over_on_the_linear_motion() {
             "θ̇ {rate:e} vs {want_rate:e}"
         );
     }
+}
+
+/// The trace of a run that ends within the lead-in holds the start and the end, t_end, with
+/// the run's final state (mutation testing: the lead-in's early return `t0 > 0` → `t0 < 0`
+/// went unseen: the run then integrated a phase of zero length, the same final state, but the
+/// trace lost its end).
+#[test]
+fn a_trace_that_ends_within_the_lead_in_keeps_its_end() {
+    let text = timed_scene_text(1e-30, "dop853", 1e-12, 5.0).replace(
+        "want = [\"final_state\"]",
+        "want = [\"final_state\", \"trajectory\"]",
+    );
+    let sc = scene::parse("tiny.toml", &text).unwrap();
+    let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    let trace = o.trace.expect("a trace");
+    let times: Vec<f64> = trace.iter().map(|s| s.t).collect();
+    assert_eq!(times, [0.0, 5.0], "the start and the end");
+    let end = trace[1];
+    assert_eq!((end.t, end.theta, end.rate), o.last);
 }

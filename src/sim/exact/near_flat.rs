@@ -131,6 +131,13 @@ mod tests {
         assert!(want < 0.9);
         assert!(near_flat(0.75, 1e-3, 0.0).is_none());
         assert!(near_flat(0.75, 1e-12, 1e-3).is_none());
+        // The size is a = φ0 + (θ̇0/Ω)², not its parts: 0.7 S and (0.6 √S)² are each inside,
+        // their sum 1.06 S is not, and 0.5 S with (0.7 √S)² (0.99 S) is; both push less than
+        // the top's limit θ̇0² < Ω² φ0 (mutation testing: the size test reduced to its parts,
+        // φ0 > S or θ̇0/Ω > √S, went unseen).
+        let (size, omega) = (NEAR_FLAT_SIZE, 0.75f64.sqrt());
+        assert!(near_flat(0.75, 0.7 * size, 0.6 * size.sqrt() * omega).is_none());
+        assert!(near_flat(0.75, 0.5 * size, 0.7 * size.sqrt() * omega).is_some());
         // The top leaves at once: θ̇0² ≥ Ω² φ0.
         assert!(near_flat(0.75, 1e-20, 1e-9).is_none());
     }
