@@ -388,3 +388,27 @@ impl Ode<1> for Still {
         [y[0] * 0.0]
     }
 }
+
+/// ẏ = t³, a right-hand side of t alone.
+struct Cubic;
+
+impl Ode<1> for Cubic {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, t: f64, y: &[D; 1]) -> [D; 1] {
+        [y[0] * 0.0 + t * t * t]
+    }
+}
+
+/// rk4's stage times: on ẏ = p(t) a step is Simpson's rule, exact for a cubic p, so four steps
+/// of 0.5 from t = 1 give y(3) = (3⁴ − 1⁴)/4 = 20 to rounding (the stage values are exact
+/// dyadic numbers, the step's sum rounds a few times: 16 u of 20). A stage at the wrong time
+/// is off by O(h) per step. (Mutation testing: the second stage's time t + h/2 → t − h/2 and
+/// t · h/2 went unseen: the ladder's systems do not depend on t and the Wave test above runs
+/// the adaptive methods only.)
+#[test]
+fn rk4_integrates_a_cubic_in_t_exactly() {
+    let mut stepper = AnyStepper::new("rk4", Control::Fixed(0.5), 1.0, [0.0]).unwrap();
+    integrate_phase(&Cubic, &mut stepper, &[], 3.0, 100, &mut ()).unwrap();
+    assert_eq!(stepper.stats().steps, 4);
+    let y = stepper.y()[0];
+    assert!((y - 20.0).abs() <= 16.0 * f64::EPSILON * 20.0, "{y}");
+}
