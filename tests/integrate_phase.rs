@@ -412,3 +412,48 @@ fn rk4_integrates_a_cubic_in_t_exactly() {
     let y = stepper.y()[0];
     assert!((y - 20.0).abs() <= 16.0 * f64::EPSILON * 20.0, "{y}");
 }
+
+/// Records the times it is shown.
+struct Times(Vec<f64>);
+
+impl Observer<1> for Times {
+    fn samples_per_step(&self) -> usize {
+        4
+    }
+    fn observe(&mut self, t: f64, _y: &[f64; 1]) {
+        self.0.push(t);
+    }
+}
+
+/// 2 − t, which falls through 0 at t = 2, watched at four samples inside each step (as the
+/// lift-off event is).
+struct FallsAtTwo;
+
+impl Event<1> for FallsAtTwo {
+    fn value(&self, t: f64, _y: &[f64; 1]) -> f64 {
+        2.0 - t
+    }
+    fn direction(&self) -> Direction {
+        Direction::Falling
+    }
+    fn interior_samples(&self) -> usize {
+        4
+    }
+}
+
+/// An event that falls exactly on a dense sample's time is observed once, at the event: the
+/// observer's samples are those strictly before it. One rk4 step of 5 samples the event at
+/// t = 1, 2, 3, 4, where its value 2 − t is exactly 0 at the second, so the root is that
+/// sample's time, 2; the observer's own samples are at the
+/// same fifths and must show 1 and then the event at 2, not 2 twice (mutation testing:
+/// `tj < t_stop` → `<=` went unseen, a sample lands on an event's time only by such a
+/// coincidence).
+#[test]
+fn a_sample_at_the_event_s_time_is_not_observed_twice() {
+    let mut stepper = AnyStepper::new("rk4", Control::Fixed(5.0), 0.0, [0.0]).unwrap();
+    let events = [&FallsAtTwo as &dyn Event<1>];
+    let mut times = Times(Vec::new());
+    let end = integrate_phase(&Clock, &mut stepper, &events, 10.0, 100, &mut times).unwrap();
+    assert_eq!((end.event, end.t), (Some(0), 2.0));
+    assert_eq!(times.0, [1.0, 2.0]);
+}

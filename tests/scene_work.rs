@@ -422,3 +422,32 @@ fn radau5_below_its_rounding_floor_on_stiff_springs_is_refused_and_would_crawl()
     );
     assert!(parse("s.toml", &soft).is_ok());
 }
+
+/// The near-flat refusal (F3) takes the push in the ladder's own units, θ̇0 √(l/g): at
+/// g = 9.81 m/s², l = 1 m, θ0 = π/2 − 1e-7 pushed at 3e-4 rad/s, the rigid separation lies
+/// asin((2/3) cos θ0 + (4/9) θ̇0² l/g) = 7.08e-8 rad from flat (footnote 4 with the push,
+/// computed here in SI), which springs of κ = 5e6 cannot tell (their shift is
+/// 1.25/κ = 2.5e-7). The push read as θ̇0 √(g/l) would put it 4.6e-7 from flat and let the
+/// scene run (mutation testing: that went unseen, the refusal's tests were from rest or at
+/// l = g = 1).
+#[test]
+fn the_near_flat_refusal_reads_the_push_in_the_ladder_s_units() {
+    let (theta0, rate0, g) = (std::f64::consts::FRAC_PI_2 - 1e-7, 3e-4, 9.81);
+    let kappa = 5e6;
+    let text = format!(
+        "[ladder]\nmass = 1.0\nhalf_length = 1.0\ngravity = {g}\n[start]\nangle = {theta0:e}\nangular_velocity = {rate0:e}\n[contact]\nmodel = \"penalty\"\nstiffness = {:e}\ndamping = 0.0\n[integrator]\nmethod = \"radau5\"\ntolerance = 1e-10\n[end]\nat = \"separation\"\n[outputs]\nwant = [\"separation_angle\"]\n",
+        kappa * g
+    );
+    let msg = parse("s.toml", &text).unwrap_err().to_string();
+    assert!(
+        msg.contains("cannot tell this start's separation from flat"),
+        "{msg}"
+    );
+    let room = (2.0 / 3.0 * theta0.cos() + 4.0 / 9.0 * rate0 * rate0 / g).asin();
+    let stated = number_after(&msg, "more than the ");
+    // Stated to four digits ({:.3e}).
+    assert!(
+        (stated - room).abs() <= 5e-4 * room,
+        "{stated:e} against {room:e}: {msg}"
+    );
+}
