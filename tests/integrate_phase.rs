@@ -444,10 +444,9 @@ impl Event<1> for FallsAtTwo {
 /// An event that falls exactly on a dense sample's time is observed once, at the event: the
 /// observer's samples are those strictly before it. One rk4 step of 5 samples the event at
 /// t = 1, 2, 3, 4, where its value 2 − t is exactly 0 at the second, so the root is that
-/// sample's time, 2; the observer's own samples are at the
-/// same fifths and must show 1 and then the event at 2, not 2 twice (mutation testing:
-/// `tj < t_stop` → `<=` went unseen, a sample lands on an event's time only by such a
-/// coincidence).
+/// sample's time, 2; the observer's own samples are at the same fifths and must show 1 and
+/// then the event at 2, not 2 twice (mutation testing: `tj < t_stop` → `<=` went unseen, a
+/// sample lands on an event's time only by such a coincidence).
 #[test]
 fn a_sample_at_the_event_s_time_is_not_observed_twice() {
     let mut stepper = AnyStepper::new("rk4", Control::Fixed(5.0), 0.0, [0.0]).unwrap();
