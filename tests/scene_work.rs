@@ -439,6 +439,11 @@ fn the_near_flat_refusal_reads_the_push_in_the_ladder_s_units() {
         kappa * g
     );
     let msg = parse("s.toml", &text).unwrap_err().to_string();
+    // The refusal names the stiffness's own line (10 here) and field.
+    assert!(
+        msg.starts_with("s.toml:10: [contact] stiffness: springs of κ"),
+        "{msg}"
+    );
     assert!(
         msg.contains("cannot tell this start's separation from flat"),
         "{msg}"
