@@ -138,6 +138,8 @@ mod tests {
         let (size, omega) = (NEAR_FLAT_SIZE, 0.75f64.sqrt());
         assert!(near_flat(0.75, 0.7 * size, 0.6 * size.sqrt() * omega).is_none());
         assert!(near_flat(0.75, 0.5 * size, 0.7 * size.sqrt() * omega).is_some());
+        // a = S itself is inside: None is for a > S.
+        assert!(near_flat(0.75, size, 0.0).is_some());
         // The top leaves at once: θ̇0² ≥ Ω² φ0.
         assert!(near_flat(0.75, 1e-20, 1e-9).is_none());
     }
