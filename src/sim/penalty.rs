@@ -242,7 +242,7 @@ mod tests {
             (-0.01, 0.5),
             (0.0, 2.0),
         ] {
-            // y = [θ, F_w, F_f, θ̇, Ḟ_w, Ḟ_f] in force units (f = κ p).
+            // y = [θ, f_w, f_f, θ̇, v_w, v_f] with f = κ p, v = κ ṗ (the module docs).
             let (f, rate) = (contact.kappa * p, contact.kappa * v);
             let y = [0.3, f, 0.5 * f, 0.1, rate, 0.5 * rate];
             let switched = contact_forces(&contact, Law::Switched, &y);
