@@ -318,3 +318,55 @@ fn a_push_near_the_limit_is_held_to_the_amplified_bound() {
         );
     }
 }
+
+/// A tiny start's penalty run first follows the linearised motion to θ ≈ 1e-9 in closed form
+/// (`extreme::linear_lead_in`), and its separation time counts that lead-in (mutation testing:
+/// `time += lead` → `-=` in `penalty_run::attempt` went unseen, no test looked at a penalty
+/// run's time). Reference: the rigid closed form (`sim::exact::PhaseOne`), independent of the
+/// penalty code. Error model, in units of √(l/g):
+/// * the model: the springs shift the motion after the lead-in by O(1/κ) per unit time; the
+///   angle's constant (`MODEL_CONSTANT`, three times the largest κ Δθ sin θ_r measured) over
+///   the 1 + (t_r − lead) ≈ 25.6 that follow the lead-in;
+/// * the integration: N steps of local error τ + u in θ (the model's error control is absolute,
+///   θ against 1 rad), each a shift of at most 1/(Ω θ_i) in time while the motion grows as
+///   e^{Ω t} from the hand-over angle θ_i ≈ 9.3e-10; hence τ = 1e-15, where this term is 0.1;
+/// so |t_s − t_r| ≤ 4 (1 + t_r − lead)/κ + 10 N (τ + u)/(Ω θ_i): 0.19 at κ = 1e3 and 0.11 at
+/// 1e4, where the runs are off by 4.0e-3 and 4.0e-4 (κ Δt = −4.0, the model's own shift).
+/// Without the lead-in's time the answer is off by twice the lead-in, 11.7 to 485 here.
+#[test]
+fn a_tiny_starts_penalty_separation_time_counts_its_lead_in() {
+    use sliding_ladder::sim::exact::PhaseOne;
+    let (omega, tau, u) = (OMEGA2.sqrt(), 1e-15, f64::EPSILON / 2.0);
+    for kappa in [1e3, 1e4] {
+        for (theta0, rate0) in [(1e-12, 0.0), (1e-100, 0.0), (0.0, 1e-11)] {
+            let (lead, theta_i, rate_i) = linear_lead_in(OMEGA2, theta0, rate0).expect("tiny");
+            let run = separation(
+                Contact { kappa, gamma: 0.0 },
+                Law::Switched,
+                theta0,
+                rate0,
+                "radau5",
+                Control::Tolerance(tau),
+                1_000_000,
+            );
+            let t_s = run.result.expect("separates").time;
+            let t_r = PhaseOne::new(theta0, rate0, OMEGA2)
+                .unwrap()
+                .separation()
+                .unwrap()
+                .time;
+            let n = run.stats.steps as f64;
+            let size = theta_i.max(rate_i / omega);
+            let bound =
+                MODEL_CONSTANT * (1.0 + t_r - lead) / kappa + 10.0 * n * (tau + u) / (omega * size);
+            assert!(
+                (t_s - t_r).abs() <= bound,
+                "κ {kappa:e}, start ({theta0:e}, {rate0:e}): t_s {t_s} against {t_r} (bound {bound:e})"
+            );
+            assert!(
+                2.0 * lead > 10.0 * bound,
+                "the lead-in's time shows: {lead} against {bound:e}"
+            );
+        }
+    }
+}

@@ -172,3 +172,41 @@ fn the_floor_phase_measures_errors_in_its_own_scales() {
         assert_eq!(comp.scale(&y), want, "complement {y:?}");
     }
 }
+
+/// The floor phase's energy (`floor::energy`) is the body's: ½ m (Ẋ² + Ẏ²) + ½ (m l²/3) θ̇²
+/// + m g Y, with the centre's height Y = l cos θ and its rate Ẏ by a dual number along the
+/// motion, not from the printed ½ m l² (sin²θ + 1/3) θ̇². All terms are positive for θ < π/2,
+/// so the two agree to a few ulps of their sum. A run that ends by time inside the floor phase
+/// reports the energy change to the whole fall's bound (1e-13 m g l at τ = 1e-14, above): at
+/// its end cos θ is far from 0, so a wrong potential term shows there (mutation testing:
+/// + m g l cos θ → − went unseen: every run that asked for the energy ended flat, cos θ = 0).
+#[test]
+fn the_floor_energy_is_the_bodys_and_a_run_ending_on_the_floor_keeps_it() {
+    let (m, l, g) = (LADDER.mass, LADDER.half_length, LADDER.gravity);
+    for (theta, rate, vx) in [(0.2, 0.5, 0.8), (0.9, 2.1, -0.3), (1.4, 3.0, 1.7)] {
+        let y = Dual64::new(theta, rate).cos() * l;
+        let body = 0.5 * m * (vx * vx + y.eps * y.eps)
+            + 0.5 * (m * l * l / 3.0) * rate * rate
+            + m * g * y.re;
+        let got = floor::energy(&LADDER, theta, rate, vx);
+        assert!(
+            (got - body).abs() <= 8.0 * f64::EPSILON * body,
+            "θ {theta}: {got} against the body's {body}"
+        );
+    }
+    let whole = full_fall(0.3, 0.0);
+    let (t_s, t_flat) = (whole.separation.unwrap().time, whole.flat.unwrap().time);
+    let mut sc = scene_at(0.3, 0.0);
+    sc.ladder = LADDER;
+    sc.control = Some(Control::Tolerance(1e-14));
+    sc.end = End::Time(0.5 * (t_s + t_flat));
+    sc.outputs = vec![Output::FinalState, Output::EnergyError];
+    let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    let theta_end = o.last.1;
+    assert!(
+        theta_end > whole.separation.unwrap().angle && theta_end.cos() > 0.1,
+        "the end lies inside the floor phase, away from flat: θ = {theta_end}"
+    );
+    let err = o.energy_error.unwrap();
+    assert!(err <= 1e-13, "energy {err:e}");
+}

@@ -336,3 +336,48 @@ fn the_printed_separation_cosine_is_the_energy_integral() {
         );
     }
 }
+
+/// A start past π/4 is integrated in the complement φ = π/2 − θ (`sim::complement`), where the
+/// rate changes sign: φ̇ = −θ̇. With a push, the separation angle depends on θ̇0² only, so only
+/// the time and the rate show that sign (mutation testing: `-y0[1]` → `y0[1]` in
+/// `wall_release` went unseen, every test past π/4 started at rest or checked the angle alone).
+/// Reference: the exact closed form (`sim::exact::PhaseOne`), an elliptic-function solution
+/// independent of the integrators. Error model: the integration's 10 N τ max(t_s, 1) (as the
+/// angle's above; the event refines t to a few ulps) plus the closed form's time shift of at
+/// most 38u (2K/Ω + t_s) and its rate's 38u relative (`sim::exact`'s module docs).
+#[test]
+fn a_push_past_pi_over_4_separates_at_the_closed_forms_time_and_rate() {
+    use sliding_ladder::sim::exact::PhaseOne;
+    let omega2 = UNIT.big_omega2();
+    for (theta0, rate0) in [(1.0, 0.3), (1.2, 0.2), (0.9, 0.4)] {
+        let (res, n) = dop853(&UNIT, theta0, rate0);
+        let WallRelease::Separated(s) = res else {
+            panic!("{theta0}, {rate0}: {res:?}")
+        };
+        let exact = PhaseOne::new(theta0, rate0, omega2).unwrap();
+        let want = exact.separation().unwrap();
+        let k_over_omega = 2.0 * exact.quarter_period() / omega2.sqrt();
+        let t_bound =
+            10.0 * n as f64 * 1e-13 * want.time.max(1.0) + 38.0 * U * (k_over_omega + want.time);
+        let r_bound = 10.0 * n as f64 * 1e-13 * want.rate.max(1.0) + 38.0 * U * want.rate;
+        assert!(
+            (s.time - want.time).abs() <= t_bound,
+            "{theta0}, {rate0}: t_s {} against {} (bound {t_bound:e})",
+            s.time,
+            want.time
+        );
+        assert!(
+            (s.rate - want.rate).abs() <= r_bound,
+            "{theta0}, {rate0}: θ̇_s {} against {} (bound {r_bound:e})",
+            s.rate,
+            want.rate
+        );
+        // The check can fail: the same start without its push separates later by far more.
+        let other = PhaseOne::new(theta0, 0.0, omega2).unwrap();
+        let t_other = other.separation().unwrap().time;
+        assert!(
+            (t_other - want.time).abs() > 1e3 * t_bound,
+            "{theta0}: {t_other}"
+        );
+    }
+}

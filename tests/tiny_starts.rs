@@ -350,3 +350,20 @@ fn a_trace_that_ends_within_the_lead_in_keeps_its_end() {
     let end = trace[1];
     assert_eq!((end.t, end.theta, end.rate), o.last);
 }
+
+/// A run that ends within the linear lead-in reports its energy change like any other run
+/// (mutation testing: `energy - e` → `energy + e` and `energy / e` in `fall::run_rigid`'s
+/// lead-in exit went unseen, no test of that exit asked for the energy). The energy
+/// E = ½ m l² (sin²θ + 1/3) θ̇² + m g l cos θ of the ladder below θ ≈ 1e-9 is m g l to O(θ²,
+/// θ̇²/Ω²) ≤ 1e-17: unchanged below f64's resolution, so the change is the rounding of two
+/// values ≈ m g l, at most 2u each.
+#[test]
+fn an_end_within_the_lead_in_keeps_the_energy() {
+    let text = timed_scene_text(1e-30, "radau5", 1e-14, 15.0)
+        .replace("[\"final_state\"]", "[\"final_state\", \"energy_error\"]");
+    let sc = scene::parse("tiny.toml", &text).unwrap();
+    let o = fall::run(&sc, 1).expect("no steps needed");
+    assert_eq!(o.work.wall.steps, 0, "the end lies within the lead-in");
+    let err = o.energy_error.expect("asked for");
+    assert!(err <= 4.0 * f64::EPSILON, "energy change {err:e} m g l");
+}

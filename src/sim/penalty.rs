@@ -258,4 +258,40 @@ mod tests {
         }
         assert!(active >= 4, "both branches are met");
     }
+
+    /// The pre-loaded start puts the springs on the slow manifold whatever the damping: the
+    /// dashpot takes its share γ ṗ of the load and the spring the rest, so the force the
+    /// contact exerts, κ p + γ ṗ, and its rate κ ṗ are those of the undamped start (the rigid
+    /// motion's slow forces, set by the ladder and not by the contact law). Each force is a
+    /// sum of two terms, so they agree to a few ulps of |F| + (γ/κ)|Ḟ|. A moving start is
+    /// needed: at rest Ḟ = 0 and the split is empty (mutation testing: `f − (γ/κ) v` →
+    /// `f + (γ/κ) v` went unseen, every damped start was at rest).
+    #[test]
+    fn damping_splits_the_preloaded_force_but_does_not_change_it() {
+        let undamped = Contact {
+            kappa: 1e6,
+            gamma: 0.0,
+        };
+        for (theta0, rate0, gamma) in [(0.6, 0.4, 1e3), (0.2, 0.1, 2e3), (1.1, 0.3, 50.0)] {
+            let damped = Contact { gamma, ..undamped };
+            let (y0, y1) = (
+                preloaded_start(&undamped, theta0, rate0),
+                preloaded_start(&damped, theta0, rate0),
+            );
+            let want = contact_forces(&undamped, Law::Switched, &y0);
+            let got = contact_forces(&damped, Law::Switched, &y1);
+            let split = gamma / damped.kappa;
+            for (i, (w, g)) in [(want.0, got.0), (want.1, got.1)].into_iter().enumerate() {
+                let rate = y0[4 + i];
+                let tol = 4.0 * f64::EPSILON * (w.abs() + split * rate.abs());
+                assert!(
+                    (g - w).abs() <= tol,
+                    "θ0 {theta0}, force {i}: {g} against {w} (tol {tol:e})"
+                );
+                assert_eq!(y1[4 + i], rate, "the spring's rate κ ṗ = Ḟ");
+                // The check can fail: the dashpot's share is far above the tolerance.
+                assert!(split * rate.abs() > 1e3 * tol, "force {i}: Ḟ = {rate}");
+            }
+        }
+    }
 }
