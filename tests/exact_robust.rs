@@ -37,3 +37,43 @@ fn the_property_can_fail() {
     let p = PhaseOne::new(0.5, 0.0, 1.0).unwrap();
     assert!(p.time_to_angle(0.25).is_nan());
 }
+
+/// At the equilibrium θ₀ = θ̇₀ = 0 the ladder never moves: it is at θ = 0 from t = 0 on and
+/// never reaches any other angle (mutation testing: `theta == 0.0` → `!=` in
+/// `PhaseOne::time_to_angle` went unseen, no test asked the equilibrium for a time).
+#[test]
+fn the_equilibrium_is_at_zero_at_once_and_never_elsewhere() {
+    let rest = PhaseOne::new(0.0, 0.0, 0.75).unwrap();
+    assert_eq!(rest.time_to_angle(0.0), 0.0);
+    for theta in [1e-300, 0.3, FRAC_PI_2] {
+        assert_eq!(rest.time_to_angle(theta), f64::INFINITY, "θ = {theta}");
+    }
+    // The check can fail: a start a little away from rest does reach 0.3, in finite time.
+    let moved = PhaseOne::new(1e-6, 0.0, 0.75).unwrap();
+    assert!(moved.time_to_angle(0.3).is_finite());
+}
+
+/// The tests' deliberately wrong closed form (`PhaseOne::with_modulus_factor`) is the motion
+/// itself at factor 1, bit for bit, and wrong at any other: so a check that fails on it fails
+/// because of the factor (mutation testing: the AGM rebuilt from k + k instead of k² went
+/// unseen, the tests only needed the wrong form to be wrong).
+#[test]
+fn the_wrong_closed_form_is_the_motion_at_factor_one() {
+    for (theta0, rate0) in [(0.3, 0.0), (1e-3, 0.4), (1.2, 0.1)] {
+        let p = PhaseOne::new(theta0, rate0, 0.75).unwrap();
+        let same = p.with_modulus_factor(1.0);
+        let wrong = p.with_modulus_factor(1.0 - 1e-6);
+        let t = 0.7 * p.separation().unwrap().time;
+        assert_eq!(
+            same.theta_rate(t),
+            p.theta_rate(t),
+            "start ({theta0}, {rate0})"
+        );
+        assert_eq!(same.quarter_period(), p.quarter_period());
+        assert_ne!(
+            wrong.theta_rate(t),
+            p.theta_rate(t),
+            "start ({theta0}, {rate0})"
+        );
+    }
+}

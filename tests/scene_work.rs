@@ -456,3 +456,71 @@ fn the_near_flat_refusal_reads_the_push_in_the_ladder_s_units() {
         "{stated:e} against {room:e}: {msg}"
     );
 }
+
+/// An `[end] time` bounds the step estimate like the run: a fixed-step run ending inside the
+/// wall phase, or inside the floor phase, takes the estimated steps in each phase (within one
+/// step and the event's last partial step, as above). Mutation testing: the `End::Time` arm of
+/// `phase_steps` deleted (every end estimated as the whole fall) went unseen.
+#[test]
+fn an_end_time_bounds_the_step_estimate_as_it_bounds_the_run() {
+    use sliding_ladder::sim::scene::End;
+    let mut sc = parse(
+        "s.toml",
+        &text(
+            "model = \"rigid\"",
+            "method = \"rk4\"\nscaled_step = 1e-3",
+            "flat",
+        )
+        .replace("[\"separation_angle\"]", "[\"flat_time\"]"),
+    )
+    .unwrap();
+    let whole = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    let (t_s, t_flat) = (whole.separation.unwrap().time, whole.flat.unwrap().time);
+    for t_end in [0.5 * t_s, 0.5 * (t_s + t_flat)] {
+        sc.end = End::Time(t_end);
+        let est = estimate(&sc);
+        let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+        let got = [o.work.wall.steps, o.work.floor.map_or(0, |w| w.steps)];
+        for (e, g) in est.iter().zip(got) {
+            assert!(
+                (e - g as f64).abs() <= 2.0,
+                "end {t_end}: estimated {est:?}, took {got:?}"
+            );
+        }
+        // The check can fail: the whole fall's estimate is hundreds of steps more.
+        let full = estimate(&Scene {
+            end: End::Flat,
+            ..sc.clone()
+        });
+        assert!(
+            full[0] + full[1] > est[0] + est[1] + 100.0,
+            "{full:?} {est:?}"
+        );
+    }
+}
+
+/// A phase may take at most `MAX_STEPS` steps, that many included: an end time of exactly
+/// 1e7 fixed steps (2⁻¹⁹ s and 1e7 × 2⁻¹⁹ s, both exact in binary, l = g = 1; the wall phase
+/// from θ0 = 1e-8 lasts some 22 s) is accepted
+/// (only parsed, not run), and the next smaller step, one more than 1e7 steps, is refused
+/// (mutation testing: `n > MAX_STEPS` → `>=` went unseen, no estimate met the limit exactly).
+#[test]
+fn a_phase_of_exactly_the_most_steps_allowed_is_accepted() {
+    let at = |h: f64| {
+        text(
+            "model = \"rigid\"",
+            &format!("method = \"rk4\"\nstep = {h:e}"),
+            "time\"\ntime = 19.073486328125\n#\"",
+        )
+        .replace("angle = 0.3", "angle = 1e-8")
+    };
+    let h = 2f64.powi(-19);
+    let sc = parse("s.toml", &at(h)).expect("exactly 1e7 steps");
+    assert_eq!(estimate(&sc), [1e7, 0.0]);
+    let smaller = h * (1.0 - f64::EPSILON);
+    let e = parse("s.toml", &at(smaller)).unwrap_err().to_string();
+    assert!(
+        e.contains("[integrator] step: the wall phase needs about"),
+        "{e}"
+    );
+}

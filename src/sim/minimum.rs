@@ -149,4 +149,43 @@ mod tests {
             );
         }
     }
+
+    /// On a span of a few dozen to a few hundred floats, far from t = 0 (where 1e-9 of the span
+    /// is below the spacing of the floats), the search stops once its bracket can no longer
+    /// shrink: after the samples, two golden points and one pass for each factor 1/r = 1.618
+    /// between the span and the float spacing there (mutation testing: the degenerate-bracket
+    /// stop `x1 > lo && x2 < hi && x1 ≤ x2` with `||` for its second `&&` went unseen: it ran the
+    /// search on to its 200-pass cap, some 190 evaluations more, on every such span).
+    #[test]
+    fn the_search_stops_when_the_bracket_is_down_to_the_float_spacing() {
+        let r = 0.5 * (5f64.sqrt() - 1.0);
+        for (a, b) in [
+            (1e10f64, 1e10 + 1e-3),
+            (2e15, 2e15 + 3.0),
+            (1e6, 1e6 + 1e-8),
+            (-1e12, -1e12 + 1e-2),
+        ] {
+            let spacing = f64::from_bits(a.abs().to_bits() + 1) - a.abs();
+            let tol = 1e-9 * (b - a);
+            assert!(
+                tol < spacing,
+                "[{a}, {b}]: the width test alone never stops"
+            );
+            let passes = ((b - a) / spacing).ln() / (1.0 / r).ln();
+            for frac in [0.01, 0.2, 0.37, 0.5, 0.99] {
+                let c = a + frac * (b - a);
+                let count = std::cell::Cell::new(0u32);
+                let f = |t: f64| {
+                    count.set(count.get() + 1);
+                    (t - c) * (t - c)
+                };
+                minimum_on(f, a, b, 4);
+                assert!(
+                    count.get() as f64 <= 6.0 + 2.0 + passes.ceil(),
+                    "[{a}, {b}], minimum at {frac}: {} evaluations for {passes:.1} passes",
+                    count.get()
+                );
+            }
+        }
+    }
 }

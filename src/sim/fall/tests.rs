@@ -88,3 +88,32 @@ fn the_lift_off_watch_finds_a_dip_inside_one_step() {
         "{rate} against {threshold}"
     );
 }
+
+/// The flat event's rate is the derivative of its value φ along the state rate: φ is linear
+/// in the state, so a central difference along y ± ε dy is exact up to the rounding of the two
+/// values (a few ulps of |φ| + ε |φ̇|, over 2ε). Mutation testing: `Flat::rate` → None and
+/// → Some(0.0) went unseen; the root it steers is the same (Brent's method or bisection takes
+/// over), at more evaluations.
+#[test]
+fn the_flat_rate_is_the_derivative_of_the_value() {
+    let eps = 1e-3;
+    let flat = complement::Flat;
+    for (y, dy) in [
+        ([0.4, 0.2, -1.3, 0.5], [-1.3, 0.5, 0.7, 0.0]),
+        ([1e-3, 1.1, -2.9, 0.8], [-2.9, 0.8, 0.2, 0.0]),
+    ] {
+        let at = |s: f64| {
+            let shifted: [f64; 4] = std::array::from_fn(|i| y[i] + s * dy[i]);
+            flat.value(0.0, &shifted)
+        };
+        let central = (at(eps) - at(-eps)) / (2.0 * eps);
+        let rate = flat.rate(0.0, &y, &dy).expect("an exact rate");
+        let tol = 4.0 * f64::EPSILON * (y[0].abs() + eps * dy[0].abs()) / (2.0 * eps);
+        assert!(
+            (rate - central).abs() <= tol,
+            "y {y:?}: rate {rate}, central difference {central}"
+        );
+        // The check can fail: a rate of 0 is off by |φ̇| ≫ tol.
+        assert!(central.abs() > 1e3 * tol);
+    }
+}
