@@ -370,3 +370,53 @@ fn a_tiny_starts_penalty_separation_time_counts_its_lead_in() {
         }
     }
 }
+
+/// A fixed step is held to its own local error h^(p+1), not to h^p: explicit Euler (p = 1) at
+/// h = 0.01 on springs of κ = 1e4 (h ω = 2, unstable) meets a spurious zero of the wall force
+/// 25 steps in, near θ0 = 0.3, some 0.57 rad before the rigid θ_r = 0.87. The bound is
+/// 4/(κ sin θ_r) + 10 N (h² + u) = 0.026 rad: refused. With h^p for the step's local error it
+/// would be 10 N h = 2.5 rad and the zero believed, a wrong answer with exit 0 (mutation
+/// testing: `p + 1` → `p * 1` in `penalty_run::attempt` went unseen, every fixed-step penalty
+/// test either resolved the springs or failed for another reason). The same integration
+/// without the check reports that zero.
+#[test]
+fn an_unstable_fixed_step_is_held_to_its_own_local_error() {
+    let contact = Contact {
+        kappa: 1e4,
+        gamma: 0.0,
+    };
+    let control = Control::Fixed(0.01);
+    let r = separation(
+        contact,
+        Law::Switched,
+        0.3,
+        0.0,
+        "euler",
+        control,
+        1_000_000,
+    );
+    let e = r.result.expect_err("refused").to_string();
+    assert!(
+        e.starts_with("the penalty contact was not resolved: its wall force reached zero at θ = "),
+        "{e}"
+    );
+    let model = PenaltyModel::new(contact, Law::Switched);
+    let mut stepper =
+        AnyStepper::new("euler", control, 0.0, preloaded_start(&contact, 0.3, 0.0)).unwrap();
+    let wrong = separate_with(&model, &mut stepper, 1_000_000)
+        .result
+        .unwrap();
+    let miss = rigid_separation_angle(0.3, 0.0) - wrong.angle;
+    use sliding_ladder::sim::integrators::Stepper;
+    let bound = separation_bound(
+        1e4,
+        rigid_separation_angle(0.3, 0.0),
+        stepper.stats().steps,
+        1e-4,
+    );
+    assert!(
+        miss > 0.5 && miss > 10.0 * bound,
+        "bypassed: θ_s = {}, bound {bound}",
+        wrong.angle
+    );
+}
