@@ -330,7 +330,8 @@ fn a_push_near_the_limit_is_held_to_the_amplified_bound() {
 /// * the integration: N steps of local error τ + u in θ (the model's error control is absolute,
 ///   θ against 1 rad), each a shift of at most 1/(Ω θ_i) in time while the motion grows as
 ///   e^{Ω t} from the hand-over angle θ_i ≈ 9.3e-10; hence τ = 1e-15, where this term is 0.1;
-/// so |t_s − t_r| ≤ 4 (1 + t_r − lead)/κ + 10 N (τ + u)/(Ω θ_i): 0.19 at κ = 1e3 and 0.11 at
+///
+/// So |t_s − t_r| ≤ 4 (1 + t_r − lead)/κ + 10 N (τ + u)/(Ω θ_i): 0.19 at κ = 1e3 and 0.11 at
 /// 1e4, where the runs are off by 4.0e-3 and 4.0e-4 (κ Δt = −4.0, the model's own shift).
 /// Without the lead-in's time the answer is off by twice the lead-in, 11.7 to 485 here.
 #[test]

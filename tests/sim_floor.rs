@@ -173,8 +173,8 @@ fn the_floor_phase_measures_errors_in_its_own_scales() {
     }
 }
 
-/// The floor phase's energy (`floor::energy`) is the body's: ½ m (Ẋ² + Ẏ²) + ½ (m l²/3) θ̇²
-/// + m g Y, with the centre's height Y = l cos θ and its rate Ẏ by a dual number along the
+/// The floor phase's energy (`floor::energy`) is the body's, ½ m (Ẋ² + Ẏ²) + ½ (m l²/3) θ̇² +
+/// m g Y, with the centre's height Y = l cos θ and its rate Ẏ by a dual number along the
 /// motion, not from the printed ½ m l² (sin²θ + 1/3) θ̇². All terms are positive for θ < π/2,
 /// so the two agree to a few ulps of their sum. A run that ends by time inside the floor phase
 /// reports the energy change to the whole fall's bound (1e-13 m g l at τ = 1e-14, above): at
