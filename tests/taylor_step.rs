@@ -202,3 +202,34 @@ fn the_step_reads_the_last_six_orders() {
     }
     assert!(longer > 0, "one order more never changed a step");
 }
+
+/// The step is Jorba and Zou's rule as the module states it, with its safety factor:
+/// h/H = ρ tol^{1/p} exp(−0.7/(p − 1)). On a series whose largest scaled coefficient of order m
+/// is c^m (radius ρ = 1/c from every order) the rule is written out here and compared to a few
+/// ulps (one exp and one ln of each of the coefficients). The factor shortens the step so that
+/// the truncation term (h/ρ)^p lands below the tolerance by e^{−0.7 p/(p−1)}; without it the
+/// grid check above still passes (its worst step uses part of the bound), so the rule is held
+/// to itself here (mutation testing: `− 0.7/(p − 1)` → `+` went unseen, a step e^{1.4/(p−1)}
+/// longer).
+#[test]
+fn the_step_is_jorba_and_zous_rule_with_its_safety_factor() {
+    use sliding_ladder::sim::integrators::taylor::Series;
+    for (p, c, tol) in [(12usize, 3.0f64, 1e-9), (20, 0.5, 1e-14), (8, 40.0, 1e-4)] {
+        let mut series = Series::<2>::new(p);
+        let scale = [2.0, 0.25];
+        for m in 0..=p {
+            // Component 0 carries c^m at its scale; component 1 stays below it.
+            series.y[0][m] = c.powi(m as i32) * scale[0];
+            series.y[1][m] = 0.5 * c.powi(m as i32) * scale[1];
+        }
+        let got = step_from_orders(&series, &scale, tol, p - 5..=p);
+        let want = tol.powf(1.0 / p as f64) * (-0.7 / (p - 1) as f64).exp() / c;
+        assert!(
+            (got - want).abs() <= 16.0 * f64::EPSILON * want,
+            "p {p}, c {c}, tol {tol:e}: {got} against {want}"
+        );
+        // The check can fail: the rule without the factor is 4 % to 11 % longer here.
+        let bare = tol.powf(1.0 / p as f64) / c;
+        assert!((got - bare).abs() > 1e3 * 16.0 * f64::EPSILON * want);
+    }
+}
