@@ -460,42 +460,46 @@ fn the_near_flat_refusal_reads_the_push_in_the_ladder_s_units() {
 /// An `[end] time` bounds the step estimate like the run: a fixed-step run ending inside the
 /// wall phase, or inside the floor phase, takes the estimated steps in each phase (within one
 /// step and the event's last partial step, as above). Mutation testing: the `End::Time` arm of
-/// `phase_steps` deleted (every end estimated as the whole fall) went unseen.
+/// `phase_steps` deleted (every end estimated as the whole fall) went unseen; so did its
+/// `t / unit` → `t % unit` and `t · unit` at l = g = 1, hence g = 4 too, where √(l/g) = 1/2.
 #[test]
 fn an_end_time_bounds_the_step_estimate_as_it_bounds_the_run() {
     use sliding_ladder::sim::scene::End;
-    let mut sc = parse(
-        "s.toml",
-        &text(
-            "model = \"rigid\"",
-            "method = \"rk4\"\nscaled_step = 1e-3",
-            "flat",
+    for gravity in ["1.0", "4.0"] {
+        let mut sc = parse(
+            "s.toml",
+            &text(
+                "model = \"rigid\"",
+                "method = \"rk4\"\nscaled_step = 1e-3",
+                "flat",
+            )
+            .replace("[\"separation_angle\"]", "[\"flat_time\"]")
+            .replace("gravity = 1.0", &format!("gravity = {gravity}")),
         )
-        .replace("[\"separation_angle\"]", "[\"flat_time\"]"),
-    )
-    .unwrap();
-    let whole = fall::run(&sc, fall::MAX_STEPS).unwrap();
-    let (t_s, t_flat) = (whole.separation.unwrap().time, whole.flat.unwrap().time);
-    for t_end in [0.5 * t_s, 0.5 * (t_s + t_flat)] {
-        sc.end = End::Time(t_end);
-        let est = estimate(&sc);
-        let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
-        let got = [o.work.wall.steps, o.work.floor.map_or(0, |w| w.steps)];
-        for (e, g) in est.iter().zip(got) {
+        .unwrap();
+        let whole = fall::run(&sc, fall::MAX_STEPS).unwrap();
+        let (t_s, t_flat) = (whole.separation.unwrap().time, whole.flat.unwrap().time);
+        for t_end in [0.5 * t_s, 0.5 * (t_s + t_flat)] {
+            sc.end = End::Time(t_end);
+            let est = estimate(&sc);
+            let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+            let got = [o.work.wall.steps, o.work.floor.map_or(0, |w| w.steps)];
+            for (e, g) in est.iter().zip(got) {
+                assert!(
+                    (e - g as f64).abs() <= 2.0,
+                    "end {t_end}: estimated {est:?}, took {got:?}"
+                );
+            }
+            // The check can fail: the whole fall's estimate is hundreds of steps more.
+            let full = estimate(&Scene {
+                end: End::Flat,
+                ..sc.clone()
+            });
             assert!(
-                (e - g as f64).abs() <= 2.0,
-                "end {t_end}: estimated {est:?}, took {got:?}"
+                full[0] + full[1] > est[0] + est[1] + 100.0,
+                "{full:?} {est:?}"
             );
         }
-        // The check can fail: the whole fall's estimate is hundreds of steps more.
-        let full = estimate(&Scene {
-            end: End::Flat,
-            ..sc.clone()
-        });
-        assert!(
-            full[0] + full[1] > est[0] + est[1] + 100.0,
-            "{full:?} {est:?}"
-        );
     }
 }
 

@@ -355,8 +355,8 @@ fn a_trace_that_ends_within_the_lead_in_keeps_its_end() {
 /// (mutation testing: `energy - e` → `energy + e` and `energy / e` in `fall::run_rigid`'s
 /// lead-in exit went unseen, no test of that exit asked for the energy). The energy
 /// E = ½ m l² (sin²θ + 1/3) θ̇² + m g l cos θ of the ladder below θ ≈ 1e-9 is m g l to O(θ²,
-/// θ̇²/Ω²) ≤ 1e-17: unchanged below f64's resolution, so the change is the rounding of two
-/// values ≈ m g l, at most 2u each.
+/// θ̇²/Ω²) ≤ 1e-18. The run works in units of m, l, g (`sim::scaled`), where that is 1 to
+/// below half an ulp: both energies round to exactly 1 and the change is exactly 0.
 #[test]
 fn an_end_within_the_lead_in_keeps_the_energy() {
     let text = timed_scene_text(1e-30, "radau5", 1e-14, 15.0)
@@ -365,5 +365,5 @@ fn an_end_within_the_lead_in_keeps_the_energy() {
     let o = fall::run(&sc, 1).expect("no steps needed");
     assert_eq!(o.work.wall.steps, 0, "the end lies within the lead-in");
     let err = o.energy_error.expect("asked for");
-    assert!(err <= 4.0 * f64::EPSILON, "energy change {err:e} m g l");
+    assert_eq!(err, 0.0, "energy change {err:e} m g l");
 }
