@@ -528,3 +528,35 @@ fn a_phase_of_exactly_the_most_steps_allowed_is_accepted() {
         "{e}"
     );
 }
+
+/// A penalty scene's fixed step is converted to the model's time unit √(l/g) (h' = h/√(l/g)):
+/// at g = 4 (unit ½) the run takes the steps the plan estimates, t_s/h' up to the model's
+/// shift of the separation, 4/(κ sin θ_r) rad (`sim::penalty_confirm`), over θ̇_r, in steps
+/// (mutation testing: `h / unit` → `h · unit` in `penalty_scene::run` went unseen, every
+/// fixed-step penalty test had l = g = 1; it takes four times the steps here).
+#[test]
+fn a_penalty_scenes_fixed_step_is_taken_in_the_models_time_unit() {
+    use sliding_ladder::sim::penalty_confirm::{rigid_separation_angle, MODEL_CONSTANT};
+    let springs = "model = \"penalty\"\nstiffness = 4e4\ndamping = 0.0"; // κ = k l/(m g) = 1e4
+    let sc = parse(
+        "s.toml",
+        &text(
+            springs,
+            "method = \"rk4\"\nscaled_step = 5e-4",
+            "separation",
+        )
+        .replace("gravity = 1.0", "gravity = 4.0"),
+    )
+    .unwrap();
+    let est = estimate(&sc);
+    let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    let theta_r = rigid_separation_angle(0.3, 0.0);
+    let rate_r = (0.75 * theta_r.cos()).sqrt();
+    let shift = MODEL_CONSTANT / (1e4 * theta_r.sin()) / rate_r / 5e-4;
+    let got = o.work.wall.steps as f64;
+    assert!(
+        (got - est[0]).abs() <= 2.0 + shift,
+        "estimated {est:?}, took {got} (allowed {:.1} more or fewer)",
+        2.0 + shift
+    );
+}
