@@ -560,3 +560,30 @@ fn a_penalty_scenes_fixed_step_is_taken_in_the_models_time_unit() {
         2.0 + shift
     );
 }
+
+/// An explicit adaptive method's step count on penalty springs (`explicit_penalty_steps`) is a
+/// rate times the span: each of its stability, accuracy and rounding counts is steps per
+/// √(l/g) at the given κ and τ, times t. So doubling or octupling the span multiplies the
+/// count exactly, to the rounding of a few products. Checked where the accuracy count leads
+/// (dopri5 at κ = 1e6, τ = 1e-10: about 7,500 t against the stability count's 2,100 t), as it
+/// does for tight tolerances (mutation testing: `a · t · κ^… τ^…` → `a · t + κ^… τ^…` went
+/// unseen; it counts a fixed 25,000 steps plus 0.3 t).
+#[test]
+fn an_explicit_methods_step_count_is_proportional_to_the_span() {
+    use sliding_ladder::sim::scene_work::explicit_penalty_steps;
+    let (kappa, tol) = (1e6f64, 1e-10);
+    let omega = 2.0 * kappa.sqrt();
+    for method in ["dopri5", "dop853"] {
+        let one = explicit_penalty_steps(method, kappa, omega, 0.5, tol);
+        for k in [2.0, 4.0, 16.0] {
+            let more = explicit_penalty_steps(method, kappa, omega, 0.5 * k, tol);
+            assert!(
+                (more - k * one).abs() <= 8.0 * f64::EPSILON * more,
+                "{method}: {more} for {k} times the span of {one}"
+            );
+        }
+    }
+    // The accuracy count leads for dopri5 here: above the stability count 1.05 ω t.
+    let count = explicit_penalty_steps("dopri5", kappa, omega, 1.0, tol);
+    assert!(count > 2.0 * 1.05 * omega, "{count}");
+}

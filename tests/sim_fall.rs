@@ -230,3 +230,42 @@ fn footnote_4_from_the_simulation() {
         assert!((s.angle.cos() - 2.0 / 3.0).abs() > 1e-4);
     }
 }
+
+/// A run that starts past π/4 (integrated in the complement φ = π/2 − θ) and ends by time
+/// before the separation stops at that time, on the exact motion: θ and θ̇ at t_end against
+/// the closed form (`sim::exact::PhaseOne`), within the integration's 10 N τ (θ̇ in units of Ω)
+/// plus the closed form's 38u time shift. Mutation testing: the complement branch's time limit
+/// `t_end − t0` → `t_end / t0` (t0 = 0 there: an infinite limit) went unseen, no test ended a
+/// run past π/4 by time; the run went on to the separation.
+#[test]
+fn a_run_past_pi_over_4_ending_by_time_stops_on_the_exact_motion() {
+    use sliding_ladder::sim::output::Output;
+    use sliding_ladder::sim::scene::End;
+    let u = f64::EPSILON / 2.0;
+    for theta0 in [1.0, 1.3] {
+        let mut sc = scene_at(theta0, 0.0);
+        let big_omega2 = sc.ladder.big_omega2();
+        let exact = PhaseOne::new(theta0, 0.0, big_omega2).unwrap();
+        let t_end = 0.5 * exact.separation().unwrap().time;
+        sc.control = Some(Control::Tolerance(1e-13));
+        sc.end = End::Time(t_end);
+        sc.outputs = vec![Output::FinalState];
+        let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+        assert!(
+            o.separation.is_none(),
+            "θ0 {theta0}: ended at the separation"
+        );
+        let (t, theta, rate) = o.last;
+        assert_eq!(t, t_end);
+        let (want, want_rate) = exact.theta_rate(t_end);
+        let omega = big_omega2.sqrt();
+        let shift = 38.0 * u * (2.0 * exact.quarter_period() / omega + t_end);
+        let n = o.work.wall.steps as f64;
+        let bound = 10.0 * n * 1e-13 + 38.0 * u + want_rate / omega * omega * shift;
+        assert!(
+            (theta - want).abs() <= bound
+                && (rate - want_rate).abs() / omega <= bound + shift * omega,
+            "θ0 {theta0}: ({theta}, {rate}) against ({want}, {want_rate}), bound {bound:e}"
+        );
+    }
+}
