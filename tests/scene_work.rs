@@ -587,3 +587,63 @@ fn an_explicit_methods_step_count_is_proportional_to_the_span() {
     let count = explicit_penalty_steps("dopri5", kappa, omega, 1.0, tol);
     assert!(count > 2.0 * 1.05 * omega, "{count}");
 }
+
+/// A penalty scene's push is converted to the model's units (θ̇' = θ̇ √(l/g)): at g = 4 a push
+/// of 0.5 rad/s is 0.25 per √(g/l), and the separation lands where footnote 4 with the push
+/// puts it, cos θ_r = (2/3) cos θ0 + 4 l θ̇0²/(9 g), within the run's stated bound
+/// (`sim::penalty_confirm`: 4/(κ sin θ_r) + 10 N (τ + u) + 10 u). Mutation testing:
+/// `θ̇0 · unit` → `θ̇0 / unit` in `penalty_scene::run` went unseen (l = g = 1 or no push in
+/// every penalty test); it pushes four times as fast, θ̇' = 1 > Ω √(cos θ0) = 0.85, so the
+/// wall would have to pull at once and the ladder is reported leaving at θ0, 0.54 rad early.
+#[test]
+fn a_penalty_scenes_push_is_taken_in_the_models_units() {
+    use sliding_ladder::sim::penalty_confirm::separation_bound;
+    let springs = "model = \"penalty\"\nstiffness = 4e4\ndamping = 0.0"; // κ = 1e4
+    let sc = parse(
+        "s.toml",
+        &text(
+            springs,
+            "method = \"radau5\"\ntolerance = 1e-10",
+            "separation",
+        )
+        .replace("gravity = 1.0", "gravity = 4.0")
+        .replace("angular_velocity = 0.0", "angular_velocity = 0.5"),
+    )
+    .unwrap();
+    let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    let theta_r = (2.0 / 3.0 * 0.3f64.cos() + 4.0 * 0.5 * 0.5 / (9.0 * 4.0)).acos();
+    let bound = separation_bound(1e4, theta_r, o.work.wall.steps, 1e-10);
+    let angle = o.separation.unwrap().angle;
+    assert!(
+        (angle - theta_r).abs() <= bound,
+        "θ_s {angle} against {theta_r} (bound {bound:e})"
+    );
+}
+
+/// The floor phase's estimate uses the separation of a pushed start: cos θ_s = (2/3) cos θ0 +
+/// (4/9) θ̇0² (footnote 4 with the push, θ̇0 in √(g/l)), and a fixed-step run from a push
+/// takes the estimated steps in each phase, as above (mutation testing: `+ (4/9) θ̇0²` → `−`
+/// in `phase_steps` went unseen, every estimate of a floor phase started at rest).
+#[test]
+fn the_step_estimate_of_a_pushed_start_matches_the_run() {
+    let sc = parse(
+        "s.toml",
+        &text(
+            "model = \"rigid\"",
+            "method = \"rk4\"\nscaled_step = 1e-3",
+            "flat",
+        )
+        .replace("[\"separation_angle\"]", "[\"flat_time\"]")
+        .replace("angular_velocity = 0.0", "angular_velocity = 0.5"),
+    )
+    .unwrap();
+    let est = estimate(&sc);
+    let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    let got = [o.work.wall.steps, o.work.floor.unwrap().steps];
+    for (e, g) in est.iter().zip(got) {
+        assert!(
+            (e - g as f64).abs() <= 2.0,
+            "estimated {est:?}, took {got:?}"
+        );
+    }
+}

@@ -381,3 +381,28 @@ fn a_push_past_pi_over_4_separates_at_the_closed_forms_time_and_rate() {
         );
     }
 }
+
+/// A tiny start's wall phase begins with the linear lead-in in closed form, and the
+/// separation time counts it (mutation testing: `e.t += t0` → `-=` in `wall_release` went
+/// unseen: the tests of tiny starts there checked the angle alone). Reference: the exact
+/// closed form's t_s; error model as above, 10 N τ max(t_s, 1) plus the closed form's 38u
+/// time shift.
+#[test]
+fn a_tiny_starts_separation_time_counts_its_lead_in() {
+    use sliding_ladder::sim::exact::PhaseOne;
+    for theta0 in [1e-12, 1e-100] {
+        let (res, n) = dop853(&UNIT, theta0, 0.0);
+        let WallRelease::Separated(s) = res else {
+            panic!("{theta0}: {res:?}")
+        };
+        let exact = PhaseOne::new(theta0, 0.0, UNIT.big_omega2()).unwrap();
+        let want = exact.separation().unwrap().time;
+        let k_over_omega = 2.0 * exact.quarter_period() / UNIT.big_omega2().sqrt();
+        let bound = 10.0 * n as f64 * 1e-13 * want.max(1.0) + 38.0 * U * (k_over_omega + want);
+        assert!(
+            (s.time - want).abs() <= bound,
+            "θ0 {theta0:e}: t_s {} against {want} (bound {bound:e})",
+            s.time
+        );
+    }
+}
