@@ -421,3 +421,25 @@ fn an_unstable_fixed_step_is_held_to_its_own_local_error() {
         wrong.angle
     );
 }
+
+/// The stated bound, term by term as the module docs write it, 4/(κ sin θ_r) +
+/// 10 N (τ + u) max(1, 1/((9/4) sin²θ_r)) + 10 u with u = 2⁻⁵³ (the unit roundoff): with κ = ∞
+/// and τ = 0 only the rounding terms are left, 20 u for one step (N counts at least one) and
+/// 10 u (N + 1) for N; powers of two, so exact. At κ = 4, θ_r = π/2 the model term is 1.
+/// Mutation testing: u = ε/2 → ε % 2 = ε (a bound whose rounding terms are twice as wide)
+/// went unseen; at κ ~ 1e15 those terms are a third of the bound.
+#[test]
+fn the_bound_is_the_stated_sum_with_the_unit_roundoff() {
+    let u = 2f64.powi(-53);
+    let theta = FRAC_PI_2; // sin θ_r = 1: no amplification
+    assert_eq!(separation_bound(f64::INFINITY, theta, 0, 0.0), 20.0 * u);
+    assert_eq!(separation_bound(f64::INFINITY, theta, 7, 0.0), 80.0 * u);
+    assert_eq!(separation_bound(4.0, theta, 1, 0.0), 1.0 + 20.0 * u);
+    // Where the slope of F_w is below 1 the integration term is amplified: at sin θ_r = 1/3,
+    // 1/((9/4)/9) = 4.
+    let small = (1.0f64 / 3.0).asin();
+    let amp = zero_amplification(small);
+    assert!((amp - 4.0).abs() <= 8.0 * f64::EPSILON, "{amp}");
+    let want = 10.0 * 4.0 * u * amp + 10.0 * u; // ≈ 170 u
+    assert!((separation_bound(f64::INFINITY, small, 4, 0.0) - want).abs() <= 4.0 * u * want);
+}

@@ -190,3 +190,20 @@ fn a_believed_run_is_not_retried_and_an_unresolved_one_says_so() {
         "{e}"
     );
 }
+
+/// The second try of an unresolved run is at a tenth of the scene's tolerance, and a fixed
+/// step is not tried again (its size is the scene's choice): the contract itself, checked
+/// directly (τ % 10 is τ below 10, where a check through runs might not tell the two apart).
+#[test]
+fn the_second_try_is_at_a_tenth_of_the_tolerance() {
+    use sliding_ladder::sim::penalty_confirm::{retry_control, RETRY_DIVISOR};
+    assert_eq!(RETRY_DIVISOR, 10.0);
+    for tol in [1e-12, 3.7e-5, 0.078, 2.0] {
+        assert_eq!(
+            retry_control(Control::Tolerance(tol)),
+            Some(Control::Tolerance(tol / 10.0)),
+            "τ = {tol:e}"
+        );
+    }
+    assert_eq!(retry_control(Control::Fixed(1e-3)), None);
+}

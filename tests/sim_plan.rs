@@ -201,3 +201,27 @@ fn a_trace_samples_each_step_at_its_fifths() {
         );
     }
 }
+
+/// The wall impulse's quadrature (five-point Gauss-Legendre on pieces of each wall step,
+/// `fall_observer`) evaluates the wall force at least five times a wall step, and those
+/// evaluations are counted: a fall to flat asking for the momentum balance counts at least
+/// 5 N_wall more than the same fall without it (the floor phase has no wall force to
+/// integrate). Mutation testing: the wall phase's count `+=` → `*=` (of a count that starts
+/// at 0) went unseen, no test counted a wall phase's evaluations.
+#[test]
+fn the_wall_impulses_force_evaluations_are_counted() {
+    let plain = run(vec![Output::FlatTime], End::Flat, Control::Tolerance(1e-10));
+    let balanced = run(
+        vec![Output::FlatTime, Output::MomentumError],
+        End::Flat,
+        Control::Tolerance(1e-10),
+    );
+    let wall_steps = balanced.work.wall.steps;
+    assert_eq!(wall_steps, plain.work.wall.steps, "the same run");
+    assert!(
+        balanced.work.force_evals >= plain.work.force_evals + 5 * wall_steps,
+        "{} evaluations with the impulse, {} without, {wall_steps} wall steps",
+        balanced.work.force_evals,
+        plain.work.force_evals
+    );
+}
