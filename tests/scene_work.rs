@@ -592,12 +592,13 @@ fn an_explicit_methods_step_count_is_proportional_to_the_span() {
 /// of 0.5 rad/s is 0.25 per √(g/l), and the separation lands where footnote 4 with the push
 /// puts it, cos θ_r = (2/3) cos θ0 + 4 l θ̇0²/(9 g), within the run's stated bound
 /// (`sim::penalty_confirm`: 4/(κ sin θ_r) + 10 N (τ + u) + 10 u). Mutation testing:
-/// `θ̇0 · unit` → `θ̇0 / unit` in `penalty_scene::run` went unseen (l = g = 1 or no push in
+/// `θ̇0 · unit` → `θ̇0 / unit` in `penalty_scene::run`, and the separation rate's way back to
+/// SI, `θ̇_s / unit` → `θ̇_s · unit` and `θ̇_s % unit`, went unseen (l = g = 1 or no push in
 /// every penalty test); it pushes four times as fast, θ̇' = 1 > Ω √(cos θ0) = 0.85, so the
 /// wall would have to pull at once and the ladder is reported leaving at θ0, 0.54 rad early.
 #[test]
 fn a_penalty_scenes_push_is_taken_in_the_models_units() {
-    use sliding_ladder::sim::penalty_confirm::separation_bound;
+    use sliding_ladder::sim::penalty_confirm::{separation_bound, MODEL_CONSTANT};
     let springs = "model = \"penalty\"\nstiffness = 4e4\ndamping = 0.0"; // κ = 1e4
     let sc = parse(
         "s.toml",
@@ -617,6 +618,14 @@ fn a_penalty_scenes_push_is_taken_in_the_models_units() {
     assert!(
         (angle - theta_r).abs() <= bound,
         "θ_s {angle} against {theta_r} (bound {bound:e})"
+    );
+    // The rate in SI: at the rigid zero θ̇² = Ω² cos θ (Ω² = 3g/(4l) = 3 s⁻² here); the
+    // springs move it by O(1/κ), measured 2.1/κ relative, held to MODEL_CONSTANT/κ.
+    let rate = o.separation.unwrap().rate;
+    let rigid_rate = (3.0 * angle.cos()).sqrt();
+    assert!(
+        (rate - rigid_rate).abs() <= MODEL_CONSTANT / 1e4 * rigid_rate,
+        "θ̇_s {rate} rad/s against {rigid_rate}"
     );
 }
 

@@ -269,3 +269,74 @@ fn a_run_past_pi_over_4_ending_by_time_stops_on_the_exact_motion() {
         );
     }
 }
+
+/// The separation's rate is reported in SI: a rigid run at g = 9.81 (time unit √(l/g) ≠ 1)
+/// against the exact closed form's θ̇_s, within the integration's 10 N τ in units of Ω plus the
+/// closed form's 38u (relative) and its time shift (θ̈ δt ≤ Ω² δt). (Written with the
+/// flat state's test below, from the same mutation-testing shard; a conversion `rate · unit`
+/// made by hand in `Units::outcome_to_si` fails it.)
+#[test]
+fn the_separation_rate_is_reported_in_si() {
+    use sliding_ladder::sim::output::Output;
+    for theta0 in [0.3, 1.2] {
+        let mut sc = scene_at(theta0, 0.0);
+        sc.control = Some(Control::Tolerance(1e-13));
+        sc.outputs = vec![Output::SeparationRate];
+        let big_omega2 = sc.ladder.big_omega2();
+        let omega = big_omega2.sqrt();
+        let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+        let exact = PhaseOne::new(theta0, 0.0, big_omega2).unwrap();
+        let want = exact.separation().unwrap();
+        let u = f64::EPSILON / 2.0;
+        let shift = 38.0 * u * (2.0 * exact.quarter_period() / omega + want.time);
+        let n = o.work.wall.steps as f64;
+        let bound = 10.0 * n * 1e-13 * omega + 38.0 * u * want.rate + big_omega2 * shift;
+        let rate = o.separation.unwrap().rate;
+        assert!(
+            (rate - want.rate).abs() <= bound,
+            "θ0 {theta0}: θ̇_s {rate} rad/s against {} (bound {bound:e})",
+            want.rate
+        );
+    }
+}
+
+/// The flat state is reported in SI with l ≠ 1 (l = 2 m, g = 9.81): after the separation the
+/// floor pushes only vertically, so Ẋ keeps its value l cos θ_s θ̇_s (eq. (7)) and the centre
+/// reaches X = l sin θ_s + Ẋ (t_flat − t_s), Ẏ = −l θ̇ at θ = π/2, and energy gives
+/// ½ Ẋ² + ½ (4/3) l² θ̇_f² = g l cos θ0 from rest. All from the run's own separation and flat
+/// times and angle, so the check is of the conversion and the floor phase's conservation:
+/// error model 10 N τ in each quantity's unit (l, √(g l)) times the span in √(l/g) units.
+/// Mutation testing: `centre_x · l` → `centre_x + l` and `/ l` in `Units::outcome_to_si` went
+/// unseen, every test of the flat state had l = 1.
+#[test]
+fn the_flat_state_is_reported_in_si() {
+    use sliding_ladder::sim::output::Output;
+    let mut sc = scene_at(0.3, 0.0);
+    sc.ladder.half_length = 2.0;
+    sc.control = Some(Control::Tolerance(1e-14));
+    sc.end = sliding_ladder::sim::scene::End::Flat;
+    sc.outputs = vec![Output::FlatTime, Output::SeparationAngle];
+    let (l, g) = (sc.ladder.half_length, sc.ladder.gravity);
+    let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    let (s, f) = (o.separation.unwrap(), o.flat.unwrap());
+    let vx = l * s.angle.cos() * s.rate;
+    let x = l * s.angle.sin() + vx * (f.time - s.time);
+    let rate_f = ((2.0 * g * l * 0.3f64.cos() - vx * vx) / (4.0 / 3.0 * l * l)).sqrt();
+    let n = (o.work.wall.steps + o.work.floor.unwrap().steps) as f64;
+    let span = f.time / (l / g).sqrt();
+    let (len, vel) = (
+        10.0 * n * 1e-14 * span * l,
+        10.0 * n * 1e-14 * span * (g * l).sqrt(),
+    );
+    for (what, got, want, bound) in [
+        ("X", f.centre_x, x, len),
+        ("Ẋ", f.centre_velocity_x, vx, vel),
+        ("Ẏ", f.centre_velocity_y, -l * rate_f, vel),
+        ("θ̇", f.rate, rate_f, vel / l),
+    ] {
+        assert!(
+            (got - want).abs() <= bound,
+            "{what}: {got} against {want} (bound {bound:e})"
+        );
+    }
+}
