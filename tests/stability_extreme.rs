@@ -406,3 +406,40 @@ fn a_tiny_starts_separation_time_counts_its_lead_in() {
         );
     }
 }
+
+/// The constrained model (`sim::constrained`) keeps every step within the event-safe length
+/// 0.5/(|θ̇| + Ω) (`sim::rigid::event_safe_step`, written out here; Ω² = 3/4 in its units), as
+/// the penalty model does: dop853 at a loose tolerance, which would step further, is held to
+/// it and reaches it. A step read as t − t_prev carries the rounding of t: 2 ulp(t).
+/// (Mutation testing: the model's `max_step` → 1.0 went unseen: its tests ran at 1e-10, where
+/// the steps are shorter for accuracy.)
+#[test]
+fn constrained_steps_are_held_to_the_event_safe_length() {
+    use sliding_ladder::sim::integrators::any::AnyStepper;
+    use sliding_ladder::sim::integrators::Stepper;
+    let model = Constrained {
+        alpha: 0.0,
+        beta: 0.0,
+    };
+    let mut st = AnyStepper::new(
+        "dop853",
+        Control::Tolerance(1e-3),
+        0.0,
+        constrained::start(0.3, 0.0),
+    )
+    .unwrap();
+    let omega = 0.75f64.sqrt();
+    let mut at_cap = 0;
+    while st.t() < 4.0 {
+        let cap = 0.5 / (st.y()[5].abs() + omega);
+        st.step(&model, 4.0).unwrap();
+        let h = st.t() - st.t_prev();
+        let rounding = 2.0 * f64::EPSILON * st.t();
+        assert!(h <= cap + rounding, "t = {}: step {h} over {cap}", st.t());
+        at_cap += usize::from(h >= cap - rounding);
+    }
+    assert!(
+        at_cap > 0,
+        "no step reached the cap: the check shows nothing"
+    );
+}
