@@ -456,3 +456,17 @@ fn a_sample_at_the_event_s_time_is_not_observed_twice() {
     assert_eq!((end.event, end.t), (Some(0), 2.0));
     assert_eq!(times.0, [1.0, 2.0]);
 }
+
+/// Every trial step on which Newton's iteration fails counts as a rejected step: the blind
+/// Jacobian above fails at every size down to the floor, so the step that gives up has
+/// rejected at least one trial, and each one formed no accepted step. (Mutation testing: the
+/// count `rejected += 1` → `*=` on that path went unseen; a count starting at 0 stays 0.)
+#[test]
+fn radau5_counts_each_trial_newton_fails_on() {
+    use sliding_ladder::sim::integrators::Stepper;
+    let mut st = AnyStepper::new("radau5", Control::Tolerance(1e-8), 0.0, [1.0]).unwrap();
+    assert!(st.step(&BlindJacobian, 1.0).is_err());
+    let stats = st.stats();
+    assert!(stats.rejected >= 1, "{stats:?}");
+    assert_eq!(stats.steps, 0, "{stats:?}");
+}

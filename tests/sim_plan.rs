@@ -225,3 +225,31 @@ fn the_wall_impulses_force_evaluations_are_counted() {
         plain.work.force_evals
     );
 }
+
+/// The floor phase's trace is as dense as the wall phase's: each step offers its end and four
+/// dense points (`SAMPLES_PER_STEP`), also through the complement's observer (the floor phase
+/// runs in φ = π/2 − θ), so a short fall keeps all of them: about five samples a floor step
+/// (the last step, cut at flat, may offer fewer). Mutation testing: the complement observer's
+/// `samples_per_step` → 0 and → 1 went unseen; the floor phase's trace then thinned to one or
+/// two samples a step.
+#[test]
+fn the_floor_phases_trace_has_the_dense_samples_too() {
+    let o = run(
+        vec![Output::Trajectory, Output::FlatTime],
+        End::Flat,
+        Control::Tolerance(1e-10),
+    );
+    let t_s = o.separation.unwrap().time;
+    let steps = o.work.floor.unwrap().steps as usize;
+    let after = o
+        .trace
+        .as_ref()
+        .unwrap()
+        .iter()
+        .filter(|p| p.t > t_s)
+        .count();
+    assert!(
+        after >= 4 * steps && after <= 5 * steps + 1,
+        "{after} samples after the separation in {steps} floor steps"
+    );
+}

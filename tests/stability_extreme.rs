@@ -443,3 +443,23 @@ fn constrained_steps_are_held_to_the_event_safe_length() {
         "no step reached the cap: the check shows nothing"
     );
 }
+
+/// The constrained model measures errors in its own units, as its docs state: positions
+/// against l (1) and velocities against √(g l)·Ω, i.e. Ω = √(3/4) in units of l and √(l/g),
+/// at any state (absolute control: the constraint values are differences). Mutation testing:
+/// `scale` → [1; 6] went unseen, 15 % on the rates' tolerance changes no result a test reads.
+#[test]
+fn the_constrained_model_measures_errors_in_its_units() {
+    use sliding_ladder::sim::integrators::Ode;
+    let model = Constrained {
+        alpha: 0.0,
+        beta: 0.0,
+    };
+    let w = 0.75f64.sqrt();
+    for y in [
+        constrained::start(0.3, 0.0),
+        [5.0, -2.0, 1.1, 40.0, 0.0, -7.0],
+    ] {
+        assert_eq!(model.scale(&y), [1.0, 1.0, 1.0, w, w, w], "{y:?}");
+    }
+}

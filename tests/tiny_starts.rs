@@ -367,3 +367,43 @@ fn an_end_within_the_lead_in_keeps_the_energy() {
     let err = o.energy_error.expect("asked for");
     assert_eq!(err, 0.0, "energy change {err:e} m g l");
 }
+
+/// The trajectory of a tiny start is in the scene's time: the start at 0, the lead-in's
+/// hand-over at its closed-form time t0, then the integrated phase's samples shifted by t0
+/// (through `extreme::Shifted`), increasing to the separation time; each sample's angle on the
+/// linear motion θ0 cosh(Ω t) while that holds (below 1e-6 rad, to 1e-12 relative and the
+/// integration's 10 N τ). Mutation testing: the shift `t + t0` → `t − t0` went unseen, the
+/// trace tests counted rows.
+#[test]
+fn a_tiny_starts_trace_is_in_the_scenes_time() {
+    let text = scene_text("dop853", "tolerance = 1e-12", "1e-30", "0.0", "separation").replace(
+        "want = [\"separation_angle\", \"separation_time\"]",
+        "want = [\"trajectory\", \"separation_time\"]",
+    );
+    let sc = scene::parse("tiny.toml", &text).unwrap();
+    let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    let trace = o.trace.unwrap();
+    assert_eq!(trace[0].t, 0.0);
+    assert!(
+        trace.windows(2).all(|w| w[1].t >= w[0].t),
+        "the samples' times increase"
+    );
+    let last = trace[trace.len() - 1];
+    assert_eq!(last.t, o.separation.unwrap().time);
+    let w = omega();
+    // The wall phase's errors are relative to the motion's size (`WallPhase::scale`), so
+    // 10 N τ relative; the linearisation is good to θ²/6 < 2e-13 below 1e-6.
+    let bound = 1e-12 + 10.0 * o.work.wall.steps as f64 * 1e-12;
+    let mut checked = 0;
+    for p in trace.iter().filter(|p| p.theta < 1e-6 && p.t > 0.0) {
+        let want = 1e-30 * (w * p.t).cosh();
+        assert!(
+            (p.theta - want).abs() <= bound * want,
+            "t = {}: θ {} against {want}",
+            p.t,
+            p.theta
+        );
+        checked += 1;
+    }
+    assert!(checked >= 3, "{checked} samples on the linear motion");
+}

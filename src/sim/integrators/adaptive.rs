@@ -200,10 +200,12 @@ mod tests {
 
     /// The proposals at the controller's fixed points, as dopri5.f makes them: a negligible
     /// error grows the step by the cap 1/fac_lo = 10; an error of exactly 1 after an accepted
-    /// error of 1 gives the safety factor 0.9; after a rejection an accepted step may not grow;
+    /// error of 1 gives the safety factor 0.9, after one of 2⁻¹⁰ that times 2^−0.4 (the PI
+    /// part, β = 0.04); after a rejection an accepted step may not grow;
     /// a rejected error of 2^(1/expo) shrinks the step by 2/0.9. Checked to a few ulps (one
-    /// power and a division or two). Mutation testing: `h / fac` → `h % fac` went unseen, the
-    /// runs' errors stayed within their tolerance while the proposals were wrong.
+    /// power and a division or two). Mutation testing: the PI part `err^expo / facold^β` → `%`
+    /// and `·` went unseen, the runs' errors stayed within their tolerance while the proposals
+    /// were wrong.
     #[test]
     fn the_proposals_follow_dopri5s_controller() {
         let close = |got: f64, want: f64| (got - want).abs() <= 4.0 * f64::EPSILON * want;
@@ -214,6 +216,14 @@ mod tests {
             st.facold = 1.0;
             let safe = st.control(&PI, h, 1.0).expect("accepted");
             assert!(close(safe, 0.9 * h), "h {h}: {safe}");
+            // The PI memory: after an accepted error of 2⁻¹⁰ an error of 1 means errors are
+            // rising, so the step shrinks by the further factor (2⁻¹⁰)^β = 2^−0.4.
+            st.facold = 2f64.powi(-10);
+            let careful = st.control(&PI, h, 1.0).expect("accepted");
+            assert!(
+                close(careful, 0.9 * 2f64.powf(-0.4) * h),
+                "h {h}: {careful}"
+            );
             assert_eq!(
                 st.control(&PI, h, 2f64.powf(1.0 / PI.expo)),
                 None,
