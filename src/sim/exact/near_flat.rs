@@ -166,4 +166,23 @@ mod tests {
             );
         }
     }
+
+    /// The separation's complement is footnote 4 in φ = π/2 − θ: sin φ_s = (2/3) sin φ0 +
+    /// θ̇0²/(3Ω²), and below 1e-9 rad sin φ = φ to a relative φ²/6 < 1e-18, so
+    /// φ_s = (2 φ0 + w0²)/3 with w0 = θ̇0/Ω, a sum of positive terms: to a few ulps.
+    /// Mutation testing: `w_s · w_s` → `w_s + w_s` went unseen; the times and rates were
+    /// checked, the angle only through them.
+    #[test]
+    fn the_separation_complement_is_footnote_4_near_flat() {
+        let big_omega2 = 0.75f64;
+        for (phi0, w0) in [(1e-10, 0.0), (4e-12, 1e-6), (1e-300, 1e-151), (8e-10, 1e-5)] {
+            let nf = near_flat(big_omega2, phi0, w0 * big_omega2.sqrt()).unwrap();
+            let want = (2.0 * phi0 + w0 * w0) / 3.0;
+            assert!(
+                (nf.separation_complement - want).abs() <= 8.0 * f64::EPSILON * want,
+                "φ0 {phi0:e}, w0 {w0:e}: {} against {want}",
+                nf.separation_complement
+            );
+        }
+    }
 }
