@@ -88,12 +88,31 @@ fn the_start_keys_are_exclusive_and_checked() {
         ),
         "{e}"
     );
-    // ... while one that it carries exactly is accepted (π/2 − 1 is exact in f64's terms).
-    let ok = scene::parse("floor.toml", &text("angle_from_floor = 0.5", "exact", ""));
-    let theta0 = sliding_ladder::sim::complement::complement(0.5);
-    if sliding_ladder::sim::complement::complement(theta0) == 0.5 {
-        assert!(ok.is_ok(), "{:?}", ok.err());
-    } else {
-        assert!(ok.is_err());
-    }
+    // ... while one that it carries exactly is accepted, and one it does not is refused: the
+    // first and the first other of φ0 = π/2 − θ for θ = 1.0, 1.01, ... (θ0 = π/2 − φ0 and back
+    // again gives φ0 or not). (Mutation testing: the refusal's guard → true, refusing every
+    // φ0, went unseen when this test took 0.5 and accepted either answer.)
+    use sliding_ladder::sim::complement::complement;
+    let round_trips = |phi0: f64| complement(complement(phi0)) == phi0;
+    let candidates: Vec<f64> = (0..200)
+        .map(|k| complement(1.0 + 0.01 * k as f64))
+        .collect();
+    let exact = *candidates
+        .iter()
+        .find(|&&p| round_trips(p))
+        .expect("a φ0 θ0 carries");
+    let inexact = *candidates
+        .iter()
+        .find(|&&p| !round_trips(p))
+        .expect("one it does not");
+    let ok = scene::parse(
+        "floor.toml",
+        &text(&format!("angle_from_floor = {exact:e}"), "exact", ""),
+    );
+    assert!(ok.is_ok(), "{exact:e}: {:?}", ok.err());
+    let no = error(&format!("angle_from_floor = {inexact:e}"), "exact", "");
+    assert!(
+        no.contains("is not π/2 − θ0 for any f64 θ0"),
+        "{inexact:e}: {no}"
+    );
 }
