@@ -162,15 +162,7 @@ fn the_step_estimate_matches_the_run() {
         .replace("[\"separation_angle\"]", "[\"flat_time\"]"),
     )
     .unwrap();
-    let est = estimate(&sc);
-    let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
-    let got = [o.work.wall.steps, o.work.floor.unwrap().steps];
-    for (e, g) in est.iter().zip(got) {
-        assert!(
-            (e - g as f64).abs() <= 2.0,
-            "estimated {est:?}, took {got:?}"
-        );
-    }
+    takes_the_estimate(&sc);
 }
 
 /// The campaign's F6: dop853 at tolerance 2.8e-16 on κ = 6.9e6 (θ0 = 0.4186) ran into the 1e7-step
@@ -368,6 +360,22 @@ fn springs_too_soft_to_hold_the_foot_are_refused_and_would_lift_it() {
     assert!(lifted.contains("lift off the floor"), "{lifted}");
 }
 
+/// A fixed-step run of `sc` takes the plan's estimated steps in each phase, within one step
+/// and the event's last partial step; returns the estimate.
+fn takes_the_estimate(sc: &Scene) -> [f64; 2] {
+    let est = estimate(sc);
+    let o = fall::run(sc, fall::MAX_STEPS).unwrap();
+    let got = [o.work.wall.steps, o.work.floor.map_or(0, |w| w.steps)];
+    for (e, g) in est.iter().zip(got) {
+        assert!(
+            (e - g as f64).abs() <= 2.0,
+            "{:?}: estimated {est:?}, took {got:?}",
+            sc.end
+        );
+    }
+    est
+}
+
 /// The plan's step estimate for each phase of a parsed scene.
 fn estimate(sc: &Scene) -> [f64; 2] {
     phase_steps(
@@ -481,15 +489,7 @@ fn an_end_time_bounds_the_step_estimate_as_it_bounds_the_run() {
         let (t_s, t_flat) = (whole.separation.unwrap().time, whole.flat.unwrap().time);
         for t_end in [0.5 * t_s, 0.5 * (t_s + t_flat)] {
             sc.end = End::Time(t_end);
-            let est = estimate(&sc);
-            let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
-            let got = [o.work.wall.steps, o.work.floor.map_or(0, |w| w.steps)];
-            for (e, g) in est.iter().zip(got) {
-                assert!(
-                    (e - g as f64).abs() <= 2.0,
-                    "end {t_end}: estimated {est:?}, took {got:?}"
-                );
-            }
+            let est = takes_the_estimate(&sc);
             // The check can fail: the whole fall's estimate is hundreds of steps more.
             let full = estimate(&Scene {
                 end: End::Flat,
@@ -646,13 +646,5 @@ fn the_step_estimate_of_a_pushed_start_matches_the_run() {
         .replace("angular_velocity = 0.0", "angular_velocity = 0.5"),
     )
     .unwrap();
-    let est = estimate(&sc);
-    let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
-    let got = [o.work.wall.steps, o.work.floor.unwrap().steps];
-    for (e, g) in est.iter().zip(got) {
-        assert!(
-            (e - g as f64).abs() <= 2.0,
-            "estimated {est:?}, took {got:?}"
-        );
-    }
+    takes_the_estimate(&sc);
 }
