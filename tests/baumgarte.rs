@@ -74,3 +74,36 @@ fn a_wrong_gain_fails_the_check() {
         assert!(r.abs() > bound, "{r:e} within {bound:e} at {y:?}");
     }
 }
+
+/// The consistent start (`constrained::start`) lies on the manifold with both constraint rates
+/// zero: g and ġ = (d/dt) g(q + t q̇) at t = 0, the latter by automatic differentiation of the
+/// constraints themselves (not the hand-written ġ above), at rest and pushed, either side of
+/// π/4. The position is (sin θ, cos θ) to an ulp, so g is within u, and ġ sums two products of
+/// size |θ̇|: within 4 u |θ̇|. Mutation testing: the start's ẋ = cos θ θ̇ → cos θ + θ̇ went
+/// unseen (the drift tests measured the unstabilised drift, and a start off the velocity
+/// manifold drifts too).
+#[test]
+fn the_consistent_start_has_both_constraints_and_their_rates_zero() {
+    use num_dual::Dual64;
+    use sliding_ladder::sim::constrained::{constraints, start};
+    for (theta0, rate0) in [(0.3, 0.0), (1.2, 0.0), (0.3, 0.7), (1.2, -2.5), (0.0, 1.0)] {
+        let y = start(theta0, rate0);
+        assert_eq!((y[2], y[5]), (theta0, rate0), "θ and θ̇ as given");
+        let moving: [Dual64; 6] =
+            std::array::from_fn(|i| Dual64::new(y[i], if i < 3 { y[i + 3] } else { 0.0 }));
+        let (g1, g2) = constraints(&moving);
+        assert!(
+            g1.re.abs() <= U && g2.re.abs() <= U,
+            "g = ({}, {})",
+            g1.re,
+            g2.re
+        );
+        let bound = 4.0 * U * rate0.abs();
+        assert!(
+            g1.eps.abs() <= bound && g2.eps.abs() <= bound,
+            "θ0 = {theta0}, θ̇0 = {rate0}: ġ = ({:e}, {:e})",
+            g1.eps,
+            g2.eps
+        );
+    }
+}

@@ -253,3 +253,32 @@ fn the_floor_phases_trace_has_the_dense_samples_too() {
         "{after} samples after the separation in {steps} floor steps"
     );
 }
+
+/// A wall phase past π/4 runs in the complement φ = π/2 − θ and reaches the trace through the
+/// complement's observer (`complement::InTheta`), with the same four dense points and the end of
+/// each step (the last step, cut at the separation, may offer fewer). Mutation testing: that
+/// observer's `samples_per_step` → 0 and → 1 went unseen; the wall phase's trace then thinned
+/// to one or two samples a step.
+#[test]
+fn a_wall_phase_past_a_quarter_turn_keeps_the_dense_samples() {
+    let mut sc = scene_at(1.0, 0.0);
+    sc.method = "dop853".into();
+    sc.control = Some(Control::Tolerance(1e-10));
+    sc.end = End::Separation;
+    sc.outputs = vec![Output::Trajectory, Output::SeparationTime];
+    let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    let steps = o.work.wall.steps as usize;
+    let t_s = o.separation.unwrap().time;
+    let during = o
+        .trace
+        .as_ref()
+        .unwrap()
+        .iter()
+        .filter(|p| p.t > 0.0 && p.t < t_s)
+        .count();
+    assert!(steps >= 2, "{steps} wall steps");
+    assert!(
+        during >= 4 * steps && during <= 5 * steps,
+        "{during} samples inside the wall phase in {steps} steps"
+    );
+}

@@ -226,3 +226,23 @@ fn a_secant_start_past_the_bracket_is_not_taken() {
         "{root} against the crossing in the bracket, {r1}"
     );
 }
+
+/// The contraction rule at work: t² − 2 on [1, 2] from the secant's start 4/3. Newton's
+/// corrections there are 8.3e-2, 2.5e-3, 2.1e-6, then c = 1.6e-12 with 2c² = 5e-24 within
+/// noise × c_prev = 8 ε √2 × 2.1e-6 = 5e-21 (the error after a Newton step is
+/// f''/(2f') c² = 0.35 c²), so `newton` is taken without a fifth evaluation to confirm it:
+/// four evaluations, and √2 to the noise. Mutation testing: the rule's bracket test
+/// `newton ≤ h` → `newton > h` went unseen (the evaluation it saves was spent; the cos case
+/// above stops on the noise test before the rule applies).
+#[test]
+fn the_contraction_rule_saves_the_confirming_evaluation() {
+    let evals = std::cell::Cell::new(0);
+    let f = |t: f64| {
+        evals.set(evals.get() + 1);
+        Some((t * t - 2.0, 2.0 * t))
+    };
+    let r = newton_in_bracket(f, 1.0, 2.0, -1.0, 2.0).unwrap();
+    let root = std::f64::consts::SQRT_2;
+    assert!((r - root).abs() <= 8.0 * f64::EPSILON * root, "{r}");
+    assert_eq!(evals.get(), 4);
+}
