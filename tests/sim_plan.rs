@@ -282,3 +282,28 @@ fn a_wall_phase_past_a_quarter_turn_keeps_the_dense_samples() {
         "{during} samples inside the wall phase in {steps} steps"
     );
 }
+
+/// The same economy in the complement: a wall phase past π/4 (θ0 = 1.0, run in φ = π/2 − θ)
+/// builds DOP853's dense output (three more stages a step) only for the impulse. Mutation
+/// testing: the complement observer's `wants_steps` → true went unseen.
+#[test]
+fn a_wall_phase_past_a_quarter_turn_builds_dense_output_only_for_the_impulse() {
+    let at = |outputs: Vec<Output>| {
+        let mut sc = scene_at(1.0, 0.0);
+        sc.method = "dop853".into();
+        sc.control = Some(Control::Tolerance(1e-10));
+        sc.end = End::Flat;
+        sc.outputs = outputs;
+        fall::run(&sc, fall::MAX_STEPS).unwrap()
+    };
+    let plain = at(vec![Output::FlatTime]);
+    let balance = at(vec![Output::FlatTime, Output::MomentumError]);
+    assert_eq!(plain.work.wall.steps, balance.work.wall.steps);
+    assert!(
+        plain.work.wall.rhs_evals < balance.work.wall.rhs_evals,
+        "{} rhs without the balance, {} with it, {} steps",
+        plain.work.wall.rhs_evals,
+        balance.work.wall.rhs_evals,
+        plain.work.wall.steps
+    );
+}
