@@ -71,3 +71,34 @@ fn the_last_step_lands_on_the_stop_exactly() {
         assert_eq!(st.t(), 2.9, "{method}");
     }
 }
+
+/// The Taylor method's last step takes in a sliver: a step that would end within 1e-8 of
+/// itself short of the stop is stretched to land on the stop, not followed by a step of a few
+/// ulps. Here the stop lies 2 ulps past where the step would end; a second step of 2 ulps
+/// (below 10 ε t, the rounding of t) would be refused with StepTooSmall, and one of 1e-9 h
+/// would cost a whole series for nothing. (Mutation testing: the rule
+/// `t + h ≥ t_stop || t_stop − (t + h) ≤ 1e-8 h` → `&&`, which drops the sliver, went unseen.)
+#[test]
+fn a_taylor_step_takes_in_a_sliver_before_the_stop() {
+    use sliding_ladder::sim::integrators::taylor::Taylor;
+    use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+    let sys = WallPhase::new(&Ladder {
+        mass: 1.0,
+        half_length: 1.0,
+        gravity: 1.0,
+    });
+    let (t0, y0, tol) = (0.5, [0.3, 0.1], 1e-12);
+    // The step the method takes from this state towards a far stop.
+    let mut free = Taylor::new(t0, y0, tol);
+    free.step(&sys, 100.0).unwrap();
+    let end = free.t();
+    assert!(end > t0 && end < 100.0);
+    let h = end - t0;
+    let two_ulps = f64::from_bits(end.to_bits() + 2);
+    for t_stop in [two_ulps, end + 1e-9 * h] {
+        let mut st = Taylor::new(t0, y0, tol);
+        st.step(&sys, t_stop).unwrap();
+        assert_eq!(st.t(), t_stop, "one step lands on the stop {t_stop}");
+        assert_eq!(st.stats().steps, 1);
+    }
+}
