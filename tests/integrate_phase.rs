@@ -470,3 +470,26 @@ fn radau5_counts_each_trial_newton_fails_on() {
     assert!(stats.rejected >= 1, "{stats:?}");
     assert_eq!(stats.steps, 0, "{stats:?}");
 }
+
+/// Hairer, Nørsett & Wanner's step b takes h0 = 1e-6 when either the state or the slope is
+/// negligible (d0 or d1 below 1e-5), not only the state: at rest away from zero (ẏ = 0,
+/// y0 = 1, so d0 = 1e6 and d1 = 0) the ratio 0.01 d0/d1 would be infinite. Then step e's
+/// fall-back gives h1 = max(1e-6, 1e-3 h0) = 1e-6, and the step is exactly 1e-6. (Mutation
+/// testing: the slope's test `d1 < 1e-5` → `d1 == 1e-5` went unseen; it started at ∞.)
+#[test]
+fn the_starting_step_at_rest_away_from_zero_is_hairer_s_fall_back() {
+    use sliding_ladder::sim::integrators::initial_step;
+    let mut evals = 0;
+    let got = initial_step(
+        &Still,
+        0.0,
+        &[1.0],
+        &[0.0],
+        1e-6,
+        5,
+        f64::INFINITY,
+        &mut evals,
+    );
+    assert_eq!(got, 1e-6);
+    assert_eq!(evals, 1, "one probe");
+}

@@ -92,8 +92,8 @@ fn newton_stops_when_two_corrections_bound_the_rest_within_the_noise() {
 /// tolerance closes the bracket: 6, and 7 allows one spare. Measured: 5-6. An interpolant
 /// the safeguard keeps rejecting leaves the root right but falls back to bisection:
 /// `(b − a) + (r − 1)` for `(b − a) (r − 1)` takes 21 on the cubic, and a wrong ratio
-/// `r = f_b/f_c` → `f_b · f_c` or `f_b % f_c` 8-10 (mutation testing: these went unseen
-/// under the earlier allowance of 12).
+/// `f_a/f_c` → `f_a · f_c` or `f_a % f_c` (or `f_b/f_c` → `f_b · f_c`) 8-10 (mutation
+/// testing: these went unseen under the earlier allowance of 12).
 #[test]
 fn brent_converges_superlinearly_on_smooth_roots() {
     // (function, bracket, root)
