@@ -339,3 +339,28 @@ fn wall_force_pushes_until_separation_and_pulls_after() {
         assert!(p.wall_force_per_ml(1.01 * t_s) < 0.0, "{row:?} after t_s");
     }
 }
+
+/// The wall force's size, not only its sign: from rest, the energy integral (9) gives
+/// θ̇² = 2 Ω² (cos θ0 − cos θ), so F_w/(m l) = Ω² sin θ (3 cos θ − 2 cos θ0), eq. (14) over
+/// m l. Checked at θ(t) from the closed form, without its rate. Error model: the terms are at
+/// most 3 Ω², each with a few roundings (8 u), and the closed form's θ̇² is good to twice its
+/// rate's 38 u (module docs of `exact::jacobi`): (8 · 5 + 2 · 38 · 2) u Ω². (Mutation testing:
+/// `sin θ · (…)` → `sin θ / (…)`, which keeps the sign, went unseen.)
+#[test]
+fn wall_force_is_eq_14_on_the_closed_form() {
+    for (theta0, big_omega2) in [(0.3, 0.75), (0.05, 7.3575), (1.2, 0.75)] {
+        let p = PhaseOne::new(theta0, 0.0, big_omega2).unwrap();
+        let t_s = p.separation().unwrap().time;
+        for frac in [0.1, 0.4, 0.7, 0.95] {
+            let t = frac * t_s;
+            let theta = p.theta_rate(t).0;
+            let want = big_omega2 * theta.sin() * (3.0 * theta.cos() - 2.0 * theta0.cos());
+            let bound = (8.0 * 5.0 + 2.0 * 38.0 * 2.0) * U * big_omega2;
+            let got = p.wall_force_per_ml(t);
+            assert!(
+                (got - want).abs() <= bound,
+                "θ0 = {theta0}, t = {frac} t_s: {got} against {want}"
+            );
+        }
+    }
+}

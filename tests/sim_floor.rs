@@ -210,3 +210,30 @@ fn the_floor_energy_is_the_bodys_and_a_run_ending_on_the_floor_keeps_it() {
     let err = o.energy_error.unwrap();
     assert!(err <= 1e-13, "energy {err:e}");
 }
+
+/// The energy error is |E_flat − E0| / (m g l), recomputed here from the flat state the run
+/// reports, in SI (m = 2, l = 3, g = 9.81): E0 = m g l cos θ0 at rest, and at flat (θ = π/2)
+/// E = ½ m (Ẋ² + Ẏ²) + ½ (m l²/3) θ̇². Explicit Euler at a step of 0.05 s gains some 0.3 %, so
+/// the check has a number to compare. Error model: energies of size m g l, a few roundings
+/// each and the flat state's conversion to SI: 32 ε. (Mutation testing: the unit
+/// `m g l` → `m + g l`, 2 on the unit ladder the run uses, went unseen: every check of the
+/// energy error was an upper bound.)
+#[test]
+fn the_energy_error_is_the_flat_states_energy_change() {
+    use sliding_ladder::sim::scene;
+    let (m, l, g, theta0) = (2.0, 3.0, 9.81, 0.3);
+    let text = format!("[ladder]\nmass = {m}\nhalf_length = {l}\ngravity = {g}\n[start]\nangle = {theta0}\nangular_velocity = 0.0\n[contact]\nmodel = \"rigid\"\n[integrator]\nmethod = \"euler\"\nstep = 0.05\n[end]\nat = \"flat\"\n[outputs]\nwant = [\"energy_error\", \"flat_state\"]\n");
+    let sc = scene::parse("energy.toml", &text).unwrap();
+    let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    let f = o.flat.unwrap();
+    let e0 = m * g * l * theta0.cos();
+    let e_flat = 0.5 * m * (f.centre_velocity_x.powi(2) + f.centre_velocity_y.powi(2))
+        + 0.5 * (m * l * l / 3.0) * f.rate * f.rate;
+    let want = (e_flat - e0).abs() / (m * g * l);
+    let got = o.energy_error.unwrap();
+    assert!(want > 1e-3, "Euler's energy change {want}");
+    assert!(
+        (got - want).abs() <= 32.0 * f64::EPSILON * (e0 + e_flat) / (m * g * l),
+        "{got} against {want}"
+    );
+}
