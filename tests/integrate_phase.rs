@@ -493,3 +493,44 @@ fn the_starting_step_at_rest_away_from_zero_is_hairer_s_fall_back() {
     assert_eq!(got, 1e-6);
     assert_eq!(evals, 1, "one probe");
 }
+
+/// ẏ = y², a right-hand side of the state.
+struct Square;
+
+impl Ode<1> for Square {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 1]) -> [D; 1] {
+        [y[0] * y[0]]
+    }
+}
+
+/// Hairer's step c probes with an explicit Euler step forwards, y1 = y0 + h0 f0, and takes
+/// the slope's change there. Written out for ẏ = y², y0 = 1, τ = 1e-6, order 5: d0 = d1 =
+/// 1e6 (weights τ |y0|), h0 = 0.01, f1 = 1.01², d2 = |f1 − f0|/(τ h0) = 2.01e6, and the step
+/// min(100 h0, (0.01/d2)^(1/6)); 8 ulps as above. (Mutation testing: the probe y0 − h0 f0
+/// went unseen: the other systems of these tests do not depend on y, and backwards the
+/// change is 1.99e6, a step 0.17 % longer.)
+#[test]
+fn the_starting_steps_probe_is_a_forward_euler_step() {
+    use sliding_ladder::sim::integrators::initial_step;
+    let tol = 1e-6f64;
+    let (d0, d1) = (1.0 / tol, 1.0 / tol);
+    let h0 = 0.01 * d0 / d1;
+    let y1 = 1.0 + h0;
+    let d2 = (y1 * y1 - 1.0) / tol / h0;
+    let want = (100.0 * h0).min((0.01 / d1.max(d2)).powf(1.0 / 6.0));
+    let mut evals = 0;
+    let got = initial_step(
+        &Square,
+        0.0,
+        &[1.0],
+        &[1.0],
+        tol,
+        5,
+        f64::INFINITY,
+        &mut evals,
+    );
+    assert!(
+        (got - want).abs() <= 8.0 * f64::EPSILON * want,
+        "{got} against {want}"
+    );
+}

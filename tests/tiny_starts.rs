@@ -431,3 +431,20 @@ fn a_tiny_starts_momentum_balance_holds_through_the_shift() {
     let vx = o.flat.unwrap().centre_velocity_x;
     assert!(vx.abs() > 1e6 * bound, "{vx}");
 }
+
+/// A scene that ends at the separation and a run without one: reported too, naming the
+/// separation. (Mutation testing: that arm's guard → false went unseen; the run was then
+/// reported complete, exit 0, with no separation in it. The test above covers the flat end.)
+#[test]
+fn an_unreached_separation_is_reported() {
+    let sc = scene::parse(
+        "tiny.toml",
+        &scene_text("dop853", "tolerance = 1e-10", "0.3", "0.0", "separation"),
+    )
+    .unwrap();
+    let mut o = fall::run(&sc, fall::MAX_STEPS).unwrap();
+    assert_eq!(sliding_ladder::sim::outcome::unreached_end(&sc, &o), None);
+    o.separation = None;
+    let why = sliding_ladder::sim::outcome::unreached_end(&sc, &o).expect("separation missing");
+    assert!(why.contains("without reaching the separation,"), "{why}");
+}
