@@ -222,3 +222,36 @@ fn steps_and_end_times_in_the_scenes_own_units() {
     .to_string();
     assert!(both.contains("given together with"), "{both}");
 }
+
+/// The trace's forces in SI: each wall-phase sample's (F_w, F_f) is eqs. (14), (15) for the
+/// scene's own ladder at the sample's (θ, θ̇), evaluated here in SI (m = 2, l = 3, g = 9.81).
+/// The run evaluates them on the unit ladder and scales by m g; the two differ by a few
+/// roundings of terms of size m g: 16 ε m g. (Mutation testing: the floor force's scaling
+/// `· m g` → `/ m g` went unseen; no test read a force of the trace in SI.)
+#[test]
+fn the_traces_forces_are_eqs_14_15_in_si() {
+    use sliding_ladder::sim::{rigid, scene};
+    let ladder = Ladder {
+        mass: 2.0,
+        half_length: 3.0,
+        gravity: 9.81,
+    };
+    let text = "[ladder]\nmass = 2.0\nhalf_length = 3.0\ngravity = 9.81\n[start]\nangle = 0.3\nangular_velocity = 0.0\n[contact]\nmodel = \"rigid\"\n[integrator]\nmethod = \"dop853\"\ntolerance = 1e-10\n[end]\nat = \"separation\"\n[outputs]\nwant = [\"forces\"]\n";
+    let o = fall::run(&scene::parse("forces.toml", text).unwrap(), fall::MAX_STEPS).unwrap();
+    let trace = o.trace.unwrap();
+    assert!(trace.len() > 10, "{} samples", trace.len());
+    let scale = ladder.mass * ladder.gravity;
+    for p in &trace {
+        let (w, f) = p.forces.expect("forces asked");
+        let want = (
+            rigid::wall_force(&ladder, p.theta, p.rate),
+            rigid::floor_force(&ladder, p.theta, p.rate),
+        );
+        assert!(
+            (w - want.0).abs() <= 16.0 * f64::EPSILON * scale
+                && (f - want.1).abs() <= 16.0 * f64::EPSILON * scale,
+            "t = {}: ({w}, {f}) against {want:?}",
+            p.t
+        );
+    }
+}
