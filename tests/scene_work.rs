@@ -648,3 +648,49 @@ fn the_step_estimate_of_a_pushed_start_matches_the_run() {
     .unwrap();
     takes_the_estimate(&sc);
 }
+
+/// The plan's separation time of a pushed start below 1e-100 (the linear lead-in to 1e-100,
+/// then the closed form) in SI: the start's size is a = θ̇0 T/Ω (T = √(l/g), Ω = √(3/4)), and
+/// the reference is the tiny starts' (tests/tiny_starts.rs): t_s = t_s(1e-12 from rest) +
+/// ln(1e-12/a)/Ω, linear to O(θ²) below 1e-12. Both are sums of a few hundred T with a
+/// logarithm's rounding: 16 ε relative. Read off a fixed step's count (t_s/h, h = T/100).
+/// The start's size only splits t_s between the lead-in and the closed form, so an error in
+/// it cancels (mutation testing found two such mutants equivalent); the rate handed to the
+/// closed form does not: θ̇0 T → θ̇0/T there is 1.6 T off at T = 2 (tried by hand).
+#[test]
+fn a_pushed_tiny_starts_separation_time_is_the_linear_lead_in_s() {
+    use sliding_ladder::sim::exact::PhaseOne;
+    use sliding_ladder::sim::integrators::Control;
+    use sliding_ladder::sim::rigid::Ladder;
+    use sliding_ladder::sim::scene::{ContactModel, End};
+    let omega = 0.75f64.sqrt();
+    let t1 = PhaseOne::new(1e-12, 0.0, 0.75)
+        .unwrap()
+        .separation()
+        .unwrap()
+        .time;
+    for (l, g) in [(4.0, 1.0), (1e18, 1e-6)] {
+        let ladder = Ladder {
+            mass: 1.0,
+            half_length: l,
+            gravity: g,
+        };
+        let t = (l / g as f64).sqrt();
+        let rate0 = 1e-230;
+        let steps = phase_steps(
+            &ladder,
+            (0.0, rate0),
+            "rk4",
+            Control::Fixed(0.01 * t),
+            End::Separation,
+            ContactModel::Rigid,
+        )[0];
+        let got = 0.01 * steps;
+        let a = rate0 * t / omega;
+        let want = t1 + (1e-12f64.ln() - a.ln()) / omega;
+        assert!(
+            (got - want).abs() <= 16.0 * f64::EPSILON * want,
+            "l = {l}, g = {g}: {got} T against {want} T"
+        );
+    }
+}
