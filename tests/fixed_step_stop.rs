@@ -102,3 +102,29 @@ fn a_taylor_step_takes_in_a_sliver_before_the_stop() {
         assert_eq!(st.stats().steps, 1);
     }
 }
+
+/// The Taylor method refuses a step below the rounding of t (10 ε |t|), as the fixed steps
+/// above do: on the ladder's wall phase its steps are capped below 1 √(l/g), so at t = 1e20
+/// (an ulp is 16384) the step could not move t and is refused with StepTooSmall. (Mutation
+/// testing: the refusal `h ≤ 10 ε |t| || h ≤ 0` → `&&` went unseen; it took the step and left
+/// t at 1e20.)
+#[test]
+fn a_taylor_step_below_the_rounding_of_t_is_refused() {
+    use sliding_ladder::sim::integrators::taylor::Taylor;
+    use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+    let sys = WallPhase::new(&Ladder {
+        mass: 1.0,
+        half_length: 1.0,
+        gravity: 1.0,
+    });
+    let mut st = Taylor::new(1e20, [0.3, 0.1], 1e-12);
+    let r = st.step(&sys, 2e20);
+    assert!(
+        matches!(r, Err(StepError::StepTooSmall { t, h }) if t == 1e20 && h > 0.0),
+        "{r:?}"
+    );
+    // The same state at t = 0 steps.
+    let mut st = Taylor::new(0.0, [0.3, 0.1], 1e-12);
+    st.step(&sys, 2e20).unwrap();
+    assert!(st.t() > 0.0);
+}
