@@ -143,3 +143,37 @@ fn a_verlet_step_with_two_damped_velocities_stops_its_kick_in_time() {
         );
     }
 }
+
+/// A velocity-free acceleration of time, ẍ = cos t: the last kick takes a(q1, t0 + h), as in
+/// the formula above. (Mutation testing: that slope's time `t + h` → `t − h` went unseen:
+/// the velocity-free systems here do not depend on t, and the driven one iterates its kick
+/// from a fresh slope at t0 + h.) The same roundings as the formula: 2 ulps.
+struct Forced;
+
+impl Ode<2> for Forced {
+    fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, t: f64, y: &[D; 2]) -> [D; 2] {
+        [y[1], y[0] * 0.0 + t.cos()]
+    }
+    fn accel_uses_velocity(&self) -> bool {
+        false
+    }
+}
+
+#[test]
+fn a_verlet_step_kicks_with_the_acceleration_at_the_step_s_end() {
+    let (t0, h, y0) = (0.7, 0.1, [0.3, -0.4]);
+    let mut st = AnyStepper::new("verlet", Control::Fixed(h), t0, y0).unwrap();
+    st.step(&Forced, 2.0).unwrap();
+    let half = y0[1] + 0.5 * h * t0.cos();
+    let q1 = y0[0] + h * half;
+    let v1 = half + 0.5 * h * (t0 + h).cos();
+    let got = st.y();
+    assert!(
+        (got[0] - q1).abs() <= 2.0 * f64::EPSILON * q1.abs(),
+        "{got:?}"
+    );
+    assert!(
+        (got[1] - v1).abs() <= 2.0 * f64::EPSILON * v1.abs(),
+        "{got:?} against {v1}"
+    );
+}
