@@ -185,4 +185,23 @@ mod tests {
             );
         }
     }
+
+    /// The flat rate of the uniformly accelerated fall (φ̈ = −Ω² once the wall is left, and
+    /// linear in φ before): by the energy of a uniform acceleration over the distance φ0,
+    /// θ̇_f² = θ̇0² + 2 Ω² φ0, at rest and pushed, normal and subnormal. A square root and a
+    /// hypot: 4 ε. (Mutation testing: `Ω · w_f` → `Ω + w_f` went unseen, no test read the
+    /// flat rate.)
+    #[test]
+    fn the_flat_rate_is_the_uniform_accelerations() {
+        let big_omega2: f64 = 0.75;
+        for (phi0, rate0) in [(1e-200, 0.0), (1e-12, 3e-7), (1e-320, 3e-161)] {
+            let nf = near_flat(big_omega2, phi0, rate0).unwrap();
+            let want = rate0.hypot((2.0 * big_omega2).sqrt() * phi0.sqrt());
+            assert!(
+                (nf.flat_rate - want).abs() <= 4.0 * f64::EPSILON * want,
+                "φ0 = {phi0:e}, θ̇0 = {rate0:e}: {} against {want}",
+                nf.flat_rate
+            );
+        }
+    }
 }
