@@ -675,7 +675,7 @@ fn a_pushed_tiny_starts_separation_time_is_the_linear_lead_in_s() {
             half_length: l,
             gravity: g,
         };
-        let t = (l / g as f64).sqrt();
+        let t = (l / g).sqrt();
         let rate0 = 1e-230;
         let steps = phase_steps(
             &ladder,
