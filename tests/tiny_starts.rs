@@ -410,8 +410,9 @@ fn a_tiny_starts_trace_is_in_the_scenes_time() {
 
 /// The momentum balance of a tiny start to flat holds to its error model
 /// (tests/momentum_balance.rs): 4 (10 N τ + 4u) √g, N the steps of both phases. The lead-in
-/// (closed form) lasts ln(1e-9/θ0)/ω ≈ 18 √(l/g)·√g here, and the integrated wall phase's steps
-/// reach the impulse's quadrature through `extreme::Shifted`, shifted by that time. Mutation
+/// (closed form) lasts ln(1e-9/θ0)/ω ≈ 18 s here (g = 9.81, l = 1), and the integrated wall
+/// phase's steps reach the impulse's quadrature through `extreme::Shifted`, shifted by that
+/// time. Mutation
 /// testing: the shifted step's start `t0 + shift` → `t0 − shift` went unseen (the quadrature
 /// then ran over 2 × 18 s more, on the dense output far outside its step); the one tiny start
 /// with a momentum check (campaign scene 995) had a push and a lead-in of 3e-9.
