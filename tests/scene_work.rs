@@ -694,3 +694,56 @@ fn a_pushed_tiny_starts_separation_time_is_the_linear_lead_in_s() {
         );
     }
 }
+
+/// Explicit Euler gains energy by (h ω)² a step, so over the wall phase's t_s/h steps its
+/// drift is h ω² t_s: the stated limit is h ≤ 0.02/(ω² t_s) (in √(l/g)), below h ω ≤ 0.2 once
+/// ω t_s > 0.1. Here k = 100 undamped at g = 4, l = m = 1 (T = 0.5 s, κ = k l/(m g) = 25, ω =
+/// 2√κ = 10 exactly) and θ0 = 0.01 from rest (t_s ≈ 7 √(l/g), from the exact closed form): both the limit in
+/// √(l/g) and in seconds are the formula's to 4 ε (one product and a quotient; t_s is the
+/// same closed form). Mutation testing: ω² t_s → ω²/t_s and → ω + ω t_s in `check_work` went
+/// unseen, the one Euler refusal test asked only that a refusal came.
+#[test]
+fn explicit_eulers_step_limit_is_its_energy_gain_over_the_wall_phase() {
+    use sliding_ladder::sim::exact::PhaseOne;
+    let springs = "model = \"penalty\"\nstiffness = 1e2\ndamping = 0.0";
+    let scene = |step: f64| {
+        text(
+            springs,
+            &format!("method = \"euler\"\nstep = {step:e}"),
+            "separation",
+        )
+        .replace("gravity = 1.0", "gravity = 4.0")
+        .replace("angle = 0.3", "angle = 0.01")
+    };
+    let t_s = PhaseOne::new(0.01, 0.0, 0.75)
+        .unwrap()
+        .separation()
+        .unwrap()
+        .time;
+    assert!(
+        t_s > 5.0,
+        "t_s = {t_s} √(l/g): far from 1, where ω² t_s and ω²/t_s agree"
+    );
+    let want = 0.02 / (100.0 * t_s);
+    let msg = parse("s.toml", &scene(1e-3)).unwrap_err().to_string();
+    assert!(msg.contains("explicit Euler gains energy"), "{msg}");
+    let seconds = number_after(&msg, "a step ≤ ");
+    let scaled = number_after(&msg, "s (");
+    assert!(
+        (scaled - want).abs() <= 4.0 * f64::EPSILON * want,
+        "{msg}: want {want}"
+    );
+    assert!(
+        (seconds - 0.5 * want).abs() <= 4.0 * f64::EPSILON * want,
+        "{msg}: want {} s",
+        0.5 * want
+    );
+    assert!(
+        parse("s.toml", &scene(0.99 * 0.5 * want)).is_ok(),
+        "inside the limit"
+    );
+    assert!(
+        parse("s.toml", &scene(1.01 * 0.5 * want)).is_err(),
+        "outside it"
+    );
+}

@@ -359,4 +359,32 @@ mod tests {
             );
         }
     }
+
+    /// Each state a monitor sees costs one floor force (with the top's position, which costs
+    /// none), and `force_evals` counts it: 7 samples, 7 evaluations, with the least force of
+    /// the 7; without a monitor none. Mutation testing: the count's `+= 1` → `*= 1` went
+    /// unseen, the run tests bounded the floor phase's count from below only.
+    #[test]
+    fn each_monitored_sample_costs_one_floor_force() {
+        let states: Vec<[f64; 4]> = (0..7)
+            .map(|i| {
+                let theta = 0.6 + 0.1 * f64::from(i);
+                [theta, theta.sin(), -0.5 - 0.1 * f64::from(i), 0.2]
+            })
+            .collect();
+        for monitor in [true, false] {
+            let mut ob = observer(0.0, false, monitor);
+            for (i, y) in states.iter().enumerate() {
+                Observer::<4>::observe(&mut ob, 0.1 * i as f64, y);
+            }
+            assert_eq!(ob.force_evals, if monitor { 7 } else { 0 });
+            if monitor {
+                let least = states
+                    .iter()
+                    .map(|y| floor::floor_force(&ob.ladder, y[0], y[2]))
+                    .fold(f64::INFINITY, f64::min);
+                assert_eq!(ob.monitor.unwrap().floor_force_min, least);
+            }
+        }
+    }
 }
