@@ -184,3 +184,34 @@ impl Ctx<'_> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Ctx;
+
+    /// toml's spans are byte offsets; one inside a multi-byte character (θ, é, €) is moved to
+    /// a character boundary before the text is sliced, and still names the field of its own
+    /// line: a multi-byte character is never a newline, so either end of it is on that line.
+    /// (Mutation testing: the step back `pos −= 1` → `pos /= 1` never ended, and no test
+    /// reached the loop; `pos += 1`, which moves to the character's other end, is equivalent.)
+    #[test]
+    fn a_position_inside_a_character_names_its_lines_field() {
+        let text = "[ladder]\nmass = \"θθ\" # é\n[start]\nangle = \"ü€\"\n";
+        let cx = Ctx { file: "s", text };
+        let mass = text.find("θθ").unwrap();
+        let angle = text.find("ü€").unwrap();
+        for (pos, want) in [
+            (mass + 1, "ladder.mass"),
+            (mass + 3, "ladder.mass"),
+            (text.find('é').unwrap() + 1, "ladder.mass"),
+            (angle + 1, "start.angle"),
+            (angle + 3, "start.angle"),
+            (angle + 4, "start.angle"),
+        ] {
+            assert!(!text.is_char_boundary(pos), "{pos} is inside a character");
+            assert_eq!(cx.field_at(pos), want, "byte {pos}");
+        }
+        // Past the end is the end: the empty line after the last newline, in [start].
+        assert_eq!(cx.field_at(text.len() + 5), "start");
+    }
+}
