@@ -747,3 +747,45 @@ fn explicit_eulers_step_limit_is_its_energy_gain_over_the_wall_phase() {
         "outside it"
     );
 }
+
+/// Where the wall phase is short (ω t_s < 0.1) explicit Euler's limit is the springs' own,
+/// h ω ≤ 0.2: from θ0 = 0.3 with a push of 0.84 √(g/l), just under the 0.846 that leaves the
+/// wall at once, t_s ≈ 0.019 √(l/g), and the softest springs a scene takes (κ = 5, ω = 2√5) give
+/// h ≤ 0.2/ω = 0.0447 √(l/g), below the energy bound 0.02/(ω² t_s). Stated to 4 ε (one
+/// quotient and a square root); a step 1 % inside is accepted, 1 % outside refused. Mutation
+/// testing: `0.2/ω` → `0.2 % ω` and → `0.2 ω` there went unseen, every Euler scene had ω t_s
+/// far above 0.1.
+#[test]
+fn explicit_eulers_step_limit_on_a_short_wall_phase_is_the_springs() {
+    use sliding_ladder::sim::exact::PhaseOne;
+    let springs = "model = \"penalty\"\nstiffness = 5.0\ndamping = 0.0";
+    let scene = |step: f64| {
+        text(
+            springs,
+            &format!("method = \"euler\"\nstep = {step:e}"),
+            "separation",
+        )
+        .replace("angular_velocity = 0.0", "angular_velocity = 0.84")
+    };
+    let omega = 2.0 * 5f64.sqrt();
+    let t_s = PhaseOne::new(0.3, 0.84, 0.75)
+        .unwrap()
+        .separation()
+        .unwrap()
+        .time;
+    assert!(omega * t_s < 0.1, "ω t_s = {}", omega * t_s);
+    let want = 0.2 / omega;
+    assert!(0.02 / (omega * omega * t_s) > want);
+    let msg = parse("s.toml", &scene(0.05)).unwrap_err().to_string();
+    assert!(msg.contains("explicit Euler gains energy"), "{msg}");
+    let limit = number_after(&msg, "a step ≤ ");
+    assert!(
+        (limit - want).abs() <= 4.0 * f64::EPSILON * want,
+        "{msg}: want {want}"
+    );
+    assert!(
+        parse("s.toml", &scene(0.99 * want)).is_ok(),
+        "inside the limit"
+    );
+    assert!(parse("s.toml", &scene(1.01 * want)).is_err(), "outside it");
+}
