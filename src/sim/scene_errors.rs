@@ -214,4 +214,19 @@ mod tests {
         // Past the end is the end: the empty line after the last newline, in [start].
         assert_eq!(cx.field_at(text.len() + 5), "start");
     }
+
+    /// A section header is a line in brackets at both ends; a value that only ends in one (an
+    /// array, `want = ["flat_time"]`) is not one, on its own line or above the position.
+    /// (Mutation testing: the header test's `&&` → `||` went unseen: no toml error in a test
+    /// fell on or after an array's line, where the field was then named after the array.)
+    #[test]
+    fn an_array_value_is_not_a_section_header() {
+        let text = "[outputs]\nwant = [\"flat_time\"]\nplot = tru\n[end]\nat = [1\n";
+        let cx = Ctx { file: "s", text };
+        let at = |s: &str| text.find(s).unwrap();
+        assert_eq!(cx.field_at(at("flat_time")), "outputs.want");
+        assert_eq!(cx.field_at(at("tru")), "outputs.plot");
+        assert_eq!(cx.field_at(at("[1")), "end.at");
+        assert_eq!(cx.field_at(at("[end]") + 1), "end");
+    }
 }
