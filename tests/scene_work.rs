@@ -695,97 +695,76 @@ fn a_pushed_tiny_starts_separation_time_is_the_linear_lead_in_s() {
     }
 }
 
-/// Explicit Euler gains energy by (h ω)² a step, so over the wall phase's t_s/h steps its
-/// drift is h ω² t_s: the stated limit is h ≤ 0.02/(ω² t_s) (in √(l/g)), below h ω ≤ 0.2 once
-/// ω t_s > 0.1. Here k = 100 undamped at g = 4, l = m = 1 (T = 0.5 s, κ = k l/(m g) = 25, ω =
-/// 2√κ = 10 exactly) and θ0 = 0.01 from rest (t_s ≈ 7 √(l/g), from the exact closed form): both the limit in
-/// √(l/g) and in seconds are the formula's to 4 ε (one product and a quotient; t_s is the
-/// same closed form). Mutation testing: ω² t_s → ω²/t_s and → ω + ω t_s in `check_work` went
-/// unseen, the one Euler refusal test asked only that a refusal came.
-#[test]
-fn explicit_eulers_step_limit_is_its_energy_gain_over_the_wall_phase() {
+/// An explicit Euler scene with a fixed step on undamped springs of stiffness `k` (N/m).
+fn euler_on_springs(k: f64, step: f64) -> String {
+    text(
+        &format!("model = \"penalty\"\nstiffness = {k:e}\ndamping = 0.0"),
+        &format!("method = \"euler\"\nstep = {step:e}"),
+        "separation",
+    )
+}
+
+/// The exact closed form's t_s in √(l/g) from θ0 and θ̇0 (in √(g/l)).
+fn exact_separation_time(theta0: f64, rate0: f64) -> f64 {
     use sliding_ladder::sim::exact::PhaseOne;
-    let springs = "model = \"penalty\"\nstiffness = 1e2\ndamping = 0.0";
-    let scene = |step: f64| {
-        text(
-            springs,
-            &format!("method = \"euler\"\nstep = {step:e}"),
-            "separation",
-        )
-        .replace("gravity = 1.0", "gravity = 4.0")
-        .replace("angle = 0.3", "angle = 0.01")
-    };
-    let t_s = PhaseOne::new(0.01, 0.0, 0.75)
-        .unwrap()
-        .separation()
-        .unwrap()
-        .time;
-    assert!(
-        t_s > 5.0,
-        "t_s = {t_s} √(l/g): far from 1, where ω² t_s and ω²/t_s agree"
-    );
-    let want = 0.02 / (100.0 * t_s);
-    let msg = parse("s.toml", &scene(1e-3)).unwrap_err().to_string();
+    let phase = PhaseOne::new(theta0, rate0, 0.75).unwrap();
+    phase.separation().unwrap().time
+}
+
+/// The Euler refusal of `scene(step)` states the limit `want` (√(l/g)) in seconds (unit
+/// `unit` s) and in √(l/g), each to 4 ε (one product and a quotient or root on each side);
+/// a step 1 % inside is accepted, 1 % outside refused.
+fn assert_euler_limit(scene: impl Fn(f64) -> String, want: f64, unit: f64) {
+    let msg = parse("s.toml", &scene(10.0 * want * unit))
+        .unwrap_err()
+        .to_string();
     assert!(msg.contains("explicit Euler gains energy"), "{msg}");
     let seconds = number_after(&msg, "a step ≤ ");
     let scaled = number_after(&msg, "s (");
+    let close = |got: f64, want: f64| (got - want).abs() <= 4.0 * f64::EPSILON * want;
+    assert!(close(scaled, want), "{msg}: want {want}");
+    assert!(close(seconds, want * unit), "{msg}: want {} s", want * unit);
+    let inside = scene(0.99 * want * unit);
+    assert!(parse("s.toml", &inside).is_ok(), "inside the limit");
+    let outside = scene(1.01 * want * unit);
+    assert!(parse("s.toml", &outside).is_err(), "outside it");
+}
+
+/// Explicit Euler gains energy by (h ω)² a step, so over the wall phase's t_s/h steps its
+/// drift is h ω² t_s: the stated limit is h ≤ 0.02/(ω² t_s) (in √(l/g)), below h ω ≤ 0.2 once
+/// ω t_s > 0.1. Here k = 100 undamped at g = 4, l = m = 1 (T = 0.5 s, κ = k l/(m g) = 25,
+/// ω = 2√κ = 10 exactly) and θ0 = 0.01 from rest (t_s ≈ 7 √(l/g), from the exact closed form,
+/// the same the plan uses). Mutation testing: ω² t_s → ω²/t_s and → ω + ω t_s in `check_work`
+/// went unseen, the one Euler refusal test asked only that a refusal came.
+#[test]
+fn explicit_eulers_step_limit_is_its_energy_gain_over_the_wall_phase() {
+    let scene = |step: f64| {
+        euler_on_springs(100.0, step)
+            .replace("gravity = 1.0", "gravity = 4.0")
+            .replace("angle = 0.3", "angle = 0.01")
+    };
+    let t_s = exact_separation_time(0.01, 0.0);
     assert!(
-        (scaled - want).abs() <= 4.0 * f64::EPSILON * want,
-        "{msg}: want {want}"
+        t_s > 5.0,
+        "t_s = {t_s}: far from 1, where ω² t_s and ω²/t_s agree"
     );
-    assert!(
-        (seconds - 0.5 * want).abs() <= 4.0 * f64::EPSILON * want,
-        "{msg}: want {} s",
-        0.5 * want
-    );
-    assert!(
-        parse("s.toml", &scene(0.99 * 0.5 * want)).is_ok(),
-        "inside the limit"
-    );
-    assert!(
-        parse("s.toml", &scene(1.01 * 0.5 * want)).is_err(),
-        "outside it"
-    );
+    assert_euler_limit(scene, 0.02 / (100.0 * t_s), 0.5);
 }
 
 /// Where the wall phase is short (ω t_s < 0.1) explicit Euler's limit is the springs' own,
 /// h ω ≤ 0.2: from θ0 = 0.3 with a push of 0.84 √(g/l), just under the 0.846 that leaves the
-/// wall at once, t_s ≈ 0.019 √(l/g), and the softest springs a scene takes (κ = 5, ω = 2√5) give
-/// h ≤ 0.2/ω = 0.0447 √(l/g), below the energy bound 0.02/(ω² t_s). Stated to 4 ε (one
-/// quotient and a square root); a step 1 % inside is accepted, 1 % outside refused. Mutation
-/// testing: `0.2/ω` → `0.2 % ω` and → `0.2 ω` there went unseen, every Euler scene had ω t_s
-/// far above 0.1.
+/// wall at once, t_s ≈ 0.019 √(l/g), and the softest springs a scene takes (κ = 5, ω = 2√5)
+/// give h ≤ 0.2/ω = 0.0447 √(l/g), below the energy bound 0.02/(ω² t_s). Mutation testing:
+/// `0.2/ω` → `0.2 % ω` and → `0.2 ω` there went unseen, every Euler scene had ω t_s far
+/// above 0.1.
 #[test]
 fn explicit_eulers_step_limit_on_a_short_wall_phase_is_the_springs() {
-    use sliding_ladder::sim::exact::PhaseOne;
-    let springs = "model = \"penalty\"\nstiffness = 5.0\ndamping = 0.0";
     let scene = |step: f64| {
-        text(
-            springs,
-            &format!("method = \"euler\"\nstep = {step:e}"),
-            "separation",
-        )
-        .replace("angular_velocity = 0.0", "angular_velocity = 0.84")
+        euler_on_springs(5.0, step).replace("angular_velocity = 0.0", "angular_velocity = 0.84")
     };
     let omega = 2.0 * 5f64.sqrt();
-    let t_s = PhaseOne::new(0.3, 0.84, 0.75)
-        .unwrap()
-        .separation()
-        .unwrap()
-        .time;
+    let t_s = exact_separation_time(0.3, 0.84);
     assert!(omega * t_s < 0.1, "ω t_s = {}", omega * t_s);
-    let want = 0.2 / omega;
-    assert!(0.02 / (omega * omega * t_s) > want);
-    let msg = parse("s.toml", &scene(0.05)).unwrap_err().to_string();
-    assert!(msg.contains("explicit Euler gains energy"), "{msg}");
-    let limit = number_after(&msg, "a step ≤ ");
-    assert!(
-        (limit - want).abs() <= 4.0 * f64::EPSILON * want,
-        "{msg}: want {want}"
-    );
-    assert!(
-        parse("s.toml", &scene(0.99 * want)).is_ok(),
-        "inside the limit"
-    );
-    assert!(parse("s.toml", &scene(1.01 * want)).is_err(), "outside it");
+    assert!(0.02 / (omega * omega * t_s) > 0.2 / omega);
+    assert_euler_limit(scene, 0.2 / omega, 1.0);
 }
