@@ -364,24 +364,30 @@ fn non_finite_trial_steps_are_rejected_and_the_run_goes_on() {
 /// it starts at 1e-4.)
 #[test]
 fn the_starting_step_at_an_equilibrium_is_hairer_s_fall_back() {
+    assert_the_start_at_rest_is_1e_minus_6(0.0);
+}
+
+/// ẏ = 0: every state is an equilibrium.
+struct Still;
+
+/// Hairer's starting step for ẏ = 0 from y0 at tolerance 1e-6 and order 5 is exactly 1e-6,
+/// found with one probe of the right-hand side.
+fn assert_the_start_at_rest_is_1e_minus_6(y0: f64) {
     use sliding_ladder::sim::integrators::initial_step;
     let mut evals = 0;
     let got = initial_step(
         &Still,
         0.0,
-        &[0.0],
+        &[y0],
         &[0.0],
         1e-6,
         5,
         f64::INFINITY,
         &mut evals,
     );
-    assert_eq!(got, 1e-6);
+    assert_eq!(got, 1e-6, "y0 = {y0}");
     assert_eq!(evals, 1, "one probe");
 }
-
-/// ẏ = 0: every state is an equilibrium.
-struct Still;
 
 impl Ode<1> for Still {
     fn rhs<D: DualNum<Primitive = f64> + Copy>(&self, _t: f64, y: &[D; 1]) -> [D; 1] {
@@ -478,20 +484,7 @@ fn radau5_counts_each_trial_newton_fails_on() {
 /// testing: the slope's test `d1 < 1e-5` → `d1 == 1e-5` went unseen; it started at ∞.)
 #[test]
 fn the_starting_step_at_rest_away_from_zero_is_hairer_s_fall_back() {
-    use sliding_ladder::sim::integrators::initial_step;
-    let mut evals = 0;
-    let got = initial_step(
-        &Still,
-        0.0,
-        &[1.0],
-        &[0.0],
-        1e-6,
-        5,
-        f64::INFINITY,
-        &mut evals,
-    );
-    assert_eq!(got, 1e-6);
-    assert_eq!(evals, 1, "one probe");
+    assert_the_start_at_rest_is_1e_minus_6(1.0);
 }
 
 /// ẏ = y², a right-hand side of the state.

@@ -712,8 +712,10 @@ fn exact_separation_time(theta0: f64, rate0: f64) -> f64 {
 }
 
 /// The Euler refusal of `scene(step)` states the limit `want` (√(l/g)) in seconds (unit
-/// `unit` s) and in √(l/g), each to 4 ε (one product and a quotient or root on each side);
-/// a step 1 % inside is accepted, 1 % outside refused.
+/// `unit` s) and in √(l/g), each to 4 ε: a product and a quotient or root on each side, and
+/// where `want` holds t_s, the plan's closed form takes Ω² = (√0.75)², an ulp below 0.75,
+/// which moves a t_s from rest by half an ulp at most (at θ0 = 0.01, not at all). A step 1 %
+/// inside is accepted, 1 % outside refused.
 fn assert_euler_limit(scene: impl Fn(f64) -> String, want: f64, unit: f64) {
     let msg = parse("s.toml", &scene(10.0 * want * unit))
         .unwrap_err()

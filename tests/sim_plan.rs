@@ -141,6 +141,18 @@ fn a_long_run_keeps_a_bounded_evenly_spread_trace() {
     );
 }
 
+/// The same wall steps, and fewer right-hand sides without the momentum balance than with it.
+fn assert_dense_output_only_for_the_impulse(plain: &fall::Outcome, balance: &fall::Outcome) {
+    assert_eq!(plain.work.wall.steps, balance.work.wall.steps);
+    assert!(
+        plain.work.wall.rhs_evals < balance.work.wall.rhs_evals,
+        "{} rhs without the balance, {} with it, {} steps",
+        plain.work.wall.rhs_evals,
+        balance.work.wall.rhs_evals,
+        plain.work.wall.steps
+    );
+}
+
 /// The wall phase hands its steps' dense output to the observer only for the momentum balance
 /// (the wall's impulse is integrated on it); DOP853's dense output costs three more stages on
 /// a step that builds it, so a fall without it takes fewer right-hand sides over the same steps
@@ -154,14 +166,7 @@ fn the_wall_phase_builds_dense_output_only_for_the_impulse() {
         End::Flat,
         Control::Tolerance(1e-10),
     );
-    assert_eq!(plain.work.wall.steps, balance.work.wall.steps);
-    assert!(
-        plain.work.wall.rhs_evals < balance.work.wall.rhs_evals,
-        "{} rhs without the balance, {} with it, {} steps",
-        plain.work.wall.rhs_evals,
-        balance.work.wall.rhs_evals,
-        plain.work.wall.steps
-    );
+    assert_dense_output_only_for_the_impulse(&plain, &balance);
 }
 
 /// A trace samples every step at its fifths: four dense points at t0 + j (t1 − t0)/5 and the
@@ -298,12 +303,5 @@ fn a_wall_phase_past_a_quarter_turn_builds_dense_output_only_for_the_impulse() {
     };
     let plain = at(vec![Output::FlatTime]);
     let balance = at(vec![Output::FlatTime, Output::MomentumError]);
-    assert_eq!(plain.work.wall.steps, balance.work.wall.steps);
-    assert!(
-        plain.work.wall.rhs_evals < balance.work.wall.rhs_evals,
-        "{} rhs without the balance, {} with it, {} steps",
-        plain.work.wall.rhs_evals,
-        balance.work.wall.rhs_evals,
-        plain.work.wall.steps
-    );
+    assert_dense_output_only_for_the_impulse(&plain, &balance);
 }
