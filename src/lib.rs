@@ -16,7 +16,7 @@
 //!   HTML book (`ladder book`).
 //! * [`cli`]: the `ladder` command, one file per subcommand; it calls into verify, sim and report.
 //!
-//! Dependencies flow one way, bottom to top (ARCHITECTURE.md, checked by `tests/architecture.rs`):
+//! Dependencies flow one way, bottom to top (ARCHITECTURE.md, checked by `tests/architecture/main.rs`):
 //! scalar → vector → system → ladder, milne, sim → print → registry → method, docs, verify →
 //! report → show, book → cli; no two modules import each other. The physics modules know nothing of tests,
 //! markdown or the command line.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reference values for tests/exact_reference.rs (phase one of the sliding ladder).
+"""Reference values for tests/sim/exact/reference.rs (phase one of the sliding ladder).
 
 Regenerate with `python3 tools/exact_reference.py` (separation table) and
 `python3 tools/exact_reference.py --jacobi` (Jacobi table); needs mpmath (`pip install mpmath`).

@@ -205,7 +205,7 @@ pub fn check_file(name: &str, src: &str, seen: &mut BTreeMap<u32, String>, rep: 
             Ok(want) if normalize_latex(&want) == normalize_latex(&text) => {}
             Ok(_) => rep.problems.push(format!(
                 "{name}:{line}: the worked example of ({number}) differs from what the code gives now \
-                 (regenerate: LADDER_BLESS_DOCS=1 cargo test --test docs)"
+                 (regenerate: LADDER_BLESS_DOCS=1 cargo test --test book docs)"
             )),
             Err(e) => rep.problems.push(format!("{name}:{line}: worked example: {e}")),
         }

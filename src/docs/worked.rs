@@ -9,7 +9,7 @@
 //! a misprinted form's own value beside them ((28)). The
 //! book carries the generated text between `<!-- worked-example N -->` and
 //! `<!-- end worked-example -->`; the doc harness regenerates it and reports any difference, so
-//! the numbers cannot drift from the code. `LADDER_BLESS_DOCS=1 cargo test --test docs` rewrites
+//! the numbers cannot drift from the code. `LADDER_BLESS_DOCS=1 cargo test --test book docs` rewrites
 //! the blocks after a deliberate change.
 
 use crate::ladder::energy::{angular_acceleration, rate_squared};

@@ -304,6 +304,6 @@ mod tests {
         );
         assert_eq!(unicode(r"\frac{3g}{4l} \sin \theta"), "(3g/4l) sin θ");
         assert_eq!(unicode(r"-\frac{2ml^2 \dot{\theta}}{3}"), "−2ml²θ̇/3");
-        // Every display of the note: tests/units_print.rs.
+        // Every display of the note: tests/note/print/units.rs.
     }
 }

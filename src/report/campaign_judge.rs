@@ -2,7 +2,7 @@
 //! it asked for finite, and each result within its **stated tolerance**, worked out here in the
 //! scene's own units (m = l = g = 1, Ω² = 3/4, times in T = √(l/g)).
 //!
-//! **The integrator's promise** is the error model of `ladder stability` and `tests/sim_scale.rs`:
+//! **The integrator's promise** is the error model of `ladder stability` and `tests/sim/fall/scale.rs`:
 //! N accepted steps, each with a local error of at most τ relative to the state's scale
 //! max(|y|, 1) (τ the tolerance; for a fixed step h of order p, (h/T)^(p+1)) and a rounding of
 //! the update by an ulp or so, added without cancellation: a global error E = 10 N (τ + u)
@@ -28,7 +28,7 @@
 //!   i.e. the times by that over θ̇_s and θ̇_flat; rounding 16u t_flat; quadrature 1e-14 D.
 //! * **energy error** |ΔE|/(m g l): the energy's gradient is at most 1 + 3 θ̇ in these units,
 //!   so E' (1 + 3 θ̇_max) max(θ̇_max, 1) + 16u (1 + θ̇_max²).
-//! * **momentum error** (tests/momentum_balance.rs): 4 (E' max(θ̇_max, 1) + 4u).
+//! * **momentum error** (tests/sim/fall/momentum_balance.rs): 4 (E' max(θ̇_max, 1) + 4u).
 //! * **penalty separation angle**: the error model of the penalty contact,
 //!   `sim::penalty_confirm::separation_bound`: the model's own distance to the rigid angle θ_r,
 //!   4/(κ sin θ_r) (its constant measured over the start domain and damping γ = 0..κ, with a

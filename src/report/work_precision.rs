@@ -194,7 +194,7 @@ pub fn median_seconds(f: impl FnMut()) -> f64 {
 /// The floor phase runs in the complement φ = π/2 − θ (`sim::complement`), from
 /// φ_s = arcsin(cos θ_s) with cos θ_s from footnote 4 ([`separation_cos`]): near the floor θ_s
 /// carries an absolute error of an ulp of π/2, which in θ would be a relative error of u/φ_s in
-/// the whole floor phase (`tests/work_precision.rs` shows it at θ0 = π/2 − 1e-9).
+/// the whole floor phase (`tests/report/work_precision/runs.rs` shows it at θ0 = π/2 − 1e-9).
 pub fn flat_reference(base: &Scene, sep: &Separation) -> Result<f64, String> {
     let ladder = base.ladder;
     let sys = ComplementFloor::new(&ladder);

@@ -18,7 +18,7 @@
 //!    of 5 to 9 steps, gave a slope of 12.7 ± 4.3). Those costs come once per phase, so a full
 //!    fall needs 10 in each: dop853's first guess from θ0 = 0.3 at 1e-12 is under a seventh of
 //!    the settled step, in each phase; over both phases together its runs of 8 + 6 to 15 + 11
-//!    steps gave 9.5 ± 1.2 (`tests/order_per_phase.rs`);
+//!    steps gave 9.5 ± 1.2 (`tests/report/work_precision/fit.rs`);
 //! 3. bought by the tolerance: no other run of the method takes exactly as many steps (several
 //!    tolerances with the same work all measured the step limit, not the method: the loosest of
 //!    them is as step-limited as the rest), and its steps are strictly above those of the last

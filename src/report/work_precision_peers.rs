@@ -6,7 +6,7 @@
 //! simulate, so the `ladder` binary does not carry it by default: it is an optional dependency
 //! behind the cargo feature `peers` (and a dev-dependency of the criterion bench). Run
 //! `cargo run --release --features peers -- work-precision --out DIR`. CI lints this path
-//! (`.ci/run`); its test, `cargo test --features peers --test work_precision_peers`, runs there
+//! (`.ci/run`); its test, `cargo test --features peers --test report work_precision::peers`, runs there
 //! with `LADDER_SLOW=1` only (it needs a second optimised build of the library).
 //!
 //! **The task.** ode_solvers stops only at the ends of its steps and has no event location, so a

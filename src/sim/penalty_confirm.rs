@@ -13,7 +13,7 @@
 //!   −3 Ω² sin θ per radian: a force shift δF moves it by δF/(3 Ω² sin²θ) directly, and an
 //!   energy shift δE by (8/9) δE/sin θ; so c grows as the separation angle θ_r nears 0 (a start
 //!   pushed nearly to the wall force's limit θ̇0² = Ω² cos θ0). Measured with radau5 at
-//!   tolerance 1e-12 (`tests/penalty_confirm.rs`, which fails when a start breaks the bound):
+//!   tolerance 1e-12 (`tests/sim/penalty/confirm.rs`, which fails when a start breaks the bound):
 //!   κ (θ_s − θ_r) sin θ_r lies in 0.4..1.25 for κ = 3..1e4, damping γ = 0..κ (the preload puts
 //!   the dashpot inside the total force, so damping only lowers the shift) and starts from
 //!   θ0 = 1e-300 (and subnormal) to π/2 − 1e-9, pushes up to θ̇0 = 0.85 (θ_r = 0.157); issue 17
@@ -46,7 +46,7 @@
 //! integration error), is not the answer; with a tolerance the run is tried once more at
 //! τ/[`RETRY_DIVISOR`] ([`retry_control`]) before it says the contact was not resolved. The
 //! 1e6-scene campaign (seed 1) found two runs that the plan's refusals let through and the
-//! second try resolves (`tests/penalty_retry.rs`): F11, scene 113815 (dop853 at τ = 0.078 from
+//! second try resolves (`tests/sim/penalty/retry.rs`): F11, scene 113815 (dop853 at τ = 0.078 from
 //! φ0 = 0.027 below flat, κ = 7.6e6: its force errors lifted the foot at θ = 1.5459 before
 //! θ_r = 1.5527; at τ/10 within 1.5e-4 of θ_r) and F12, scene 439481 (radau5 at τ = 1.2e-12
 //! from φ0 = 2.6e-10, κ = 5.7e11, γ = 4.3e6: a zero 8.5e-11 rad from θ_r in 2 steps where the

@@ -18,7 +18,7 @@ use super::exact::separation_cos;
 use super::penalty_confirm::rigid_separation_angle;
 use super::penalty_start::OMEGA2;
 
-/// The largest measured κ (θ_s − θ_r) sin θ_r of the penalty model (`tests/penalty_confirm.rs`).
+/// The largest measured κ (θ_s − θ_r) sin θ_r of the penalty model (`tests/sim/penalty/confirm.rs`).
 pub const MEASURED_SHIFT: f64 = 1.25;
 
 /// For a penalty start (θ0, θ̇0) (θ̇0 in √(g/l)) with stiffness κ: None when the model's shift

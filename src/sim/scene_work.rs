@@ -35,12 +35,12 @@
 //!   constants below take the top of each range, so the estimate errs towards refusing: it
 //!   is within 0.9-1.5 of the runs where one count dominates and up to 2.1 above where the
 //!   accuracy and rounding counts meet (dop853, κ = 1e4, τ = 1e-15: 4.6e3 for 2.25e3);
-//!   `tests/scene_work.rs` holds it against runs. Outside the fitted range the runs went
+//!   `tests/sim/scene/work.rs` holds it against runs. Outside the fitted range the runs went
 //!   further: the 1e6-scene campaign's heavy share (scenes the plan put over 1e4 steps a
 //!   phase, first run with `--work-above`) hit the 1e7-step limit after 3-5 s on scenes 8113,
 //!   18442, 58703 and 67260 of seed 1 (κ = 7.9e9..7.2e11, γ up to 2.1e6, τ = 7e-14..2.5e-9),
 //!   whose runs took 1.41-2.24 times the estimate; so a count above [`MAX_STEPS`] /
-//!   [`EXPLICIT_MARGIN`] is refused (`tests/penalty_estimate_margin.rs`). radau5 is not held: its steps follow its
+//!   [`EXPLICIT_MARGIN`] is refused (`tests/sim/penalty/estimate_margin.rs`). radau5 is not held: its steps follow its
 //!   tolerance (the lead-in and its controller keep them to thousands up to κ = 1e12).
 //! * **radau5 on stiff springs below its rounding floor**: its error estimate sees the force
 //!   rates' rounding (κ u), so below [`RADAU5_LEAST_TOLERANCE`] on springs stiffer than
@@ -62,7 +62,7 @@
 //!   pushes, F_w0/τ = 10^U(−1.5, 3); and a grid of τ = 1e-1..1e-14): spurious zeros up to
 //!   F_w0/τ = 12.1 (dop853, κ = 3.6e4, θ0 = 1e-20, τ = 5.8e-11; dopri5 up to 3.6), none in
 //!   the 3,310 runs above it (3,034 separated within the bound, 276 stopped at the sweeps'
-//!   step caps; `tests/penalty_refusals.rs` reruns it). Above F_w0/τ ≈ 1 the spurious
+//!   step caps; `tests/sim/penalty/refusals.rs` reruns it). Above F_w0/τ ≈ 1 the spurious
 //!   zeros are isolated (a 1% change of κ or τ removes each), chance failures of the error
 //!   estimate rather than a region: hence the margin. Refused below
 //!   F_w0/τ = [`RESOLVED_WALL_FORCE`] = 40, a margin of 3.3, where a zero at the start would
@@ -87,7 +87,7 @@
 //!   when the separation is far as above. Below those limits many runs still separate
 //!   correctly (a bound on the risk, not a prediction): of seed 1's first 100,000 campaign
 //!   scenes the rule refuses 52, of which 41 would have run within tolerance, 7 ended at
-//!   spurious zeros and 3 took more than 1e6 steps; `tests/penalty_refusals.rs` sweeps it
+//!   spurious zeros and 3 took more than 1e6 steps; `tests/sim/penalty/refusals.rs` sweeps it
 //!   again.
 
 use super::exact::{flat::floor_duration, PhaseOne};

@@ -6,7 +6,7 @@ use super::EquationResult;
 use crate::registry::check::{Config, TOLERANCE_FACTOR};
 use crate::registry::prove::PARTICLE_COUNTS;
 
-/// One entry per column of [`super::table::table`] (the test in `tests/verify_table.rs` holds every
+/// One entry per column of [`super::table::table`] (the test in `tests/note/verify/table.rs` holds every
 /// column header to an entry here), and what a row's status means. One line per entry (the kinds
 /// one each): `ladder verify` fills them to the terminal's width, continuing under the text.
 pub fn legend(cfg: &Config) -> String {

@@ -6,7 +6,7 @@
 //! the display uses one. In a terminal narrower than the one-line layout ([`FULL_WIDTH`]
 //! columns; 100 is common) each display takes two lines, its title and then its cells
 //! ([`render_for`]), so nothing wraps mid-cell. [`super::legend::legend`] explains every
-//! column; `tests/verify_table.rs` holds the two in step.
+//! column; `tests/note/verify/table.rs` holds the two in step.
 
 use super::{EquationResult, OffMotion, Status};
 use crate::registry::check::TOLERANCE_FACTOR;

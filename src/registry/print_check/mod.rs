@@ -18,7 +18,7 @@ use crate::scalar::Scalar;
 use serde::Serialize;
 
 /// Misprinted forms (display, the form's LaTeX as printed): they must fail against the chain.
-/// Each is one side of a recorded erratum (`Equation::erratum`), tested in `tests/print.rs`.
+/// Each is one side of a recorded erratum (`Equation::erratum`), tested in `tests/note/print/check.rs`.
 pub const MISPRINTS: &[(u32, &str)] = &[
     (28, r"\tau_E - F_{E,y} l \sin \theta"),
     (

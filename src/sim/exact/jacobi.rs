@@ -39,7 +39,7 @@
 //! and k nears 1: there cn is of size √k' to k', and its relative error is u/cn, 1e-4 for
 //! k' = 1e-12. The ratio form can lose digits only in cot(a_N u) for a_N u near π/2; callers
 //! who know v = K − u (the time left to reach the bottom of the pendulum) pass it instead, and
-//! cot(a_N u) = tan(a_N v) is then accurate. Measured against mpmath (tests/exact_reference.rs):
+//! cot(a_N u) = tan(a_N v) is then accurate. Measured against mpmath (tests/sim/exact/reference.rs):
 //! within 38u plus the argument's own condition |u f'/f| times 4u, for k' down to 1e-100.
 use num_dual::DualNum;
 use std::f64::consts::FRAC_PI_2;

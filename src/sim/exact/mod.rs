@@ -74,7 +74,7 @@
 //! cannot beat that condition. (iii) Starts with s₀ and ρ both below 1e-140 are rejected: their
 //! squares would leave the normal range of f64.
 //!
-//! # Measured accuracy (tests/exact_reference.rs, 31 starts, references from mpmath at 40 digits)
+//! # Measured accuracy (tests/sim/exact/reference.rs, 31 starts, references from mpmath at 40 digits)
 //! | quantity | max error | where |
 //! |---|---|---|
 //! | separation angle θ_s | 1 ulp | all starts |

@@ -31,7 +31,7 @@
 //! separation angle was 16 ε off (dop853: 0.03 ε), and over starts from rest on a 0.001 rad
 //! grid with ε = 1e-4 to 1e-14 a first step's error reached 62 times its bound (θ0 = 1.193,
 //! ε = 1e-7). Six orders read three independent coefficients: on that grid the error stays
-//! below 0.2 of the bound (`tests/taylor_step.rs`), and the steps are about as long as before
+//! below 0.2 of the bound (`tests/sim/integrators/taylor/step.rs`), and the steps are about as long as before
 //! (median 0.97 of the two orders' step).
 //! There is no rejected step: the step is chosen before it is taken. The order is the least
 //! work per unit time with the fixed cost of a step counted ([`order_for`]). The step is
@@ -175,7 +175,7 @@ pub const STEP_ORDERS: usize = 6;
 /// coefficient of order m over the components, each divided by its `scale`), and
 /// h/H = ρ tol^{1/p} exp(−0.7/(p−1)). Orders whose coefficients all vanish are skipped; if all
 /// do (an equilibrium), the step is infinite. The stepper takes the last [`STEP_ORDERS`]; the
-/// last two are Jorba and Zou's choice (what `tests/taylor_step.rs` shows to fail).
+/// last two are Jorba and Zou's choice (what `tests/sim/integrators/taylor/step.rs` shows to fail).
 pub fn step_from_orders<const N: usize>(
     series: &Series<N>,
     scale: &[f64; N],

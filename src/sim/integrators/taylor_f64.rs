@@ -1,6 +1,6 @@
 //! The wall phase's Taylor recursion in f64, written for speed: the same sums as the generic
 //! [`super::taylor::wall_series`] and [`super::taylor::complement_series`], in the same order,
-//! so they give the same bits (`tests/taylor_f64.rs` checks it), at a fraction of the cost.
+//! so they give the same bits (`tests/sim/integrators/taylor/f64_paths.rs` checks it), at a fraction of the cost.
 //!
 //! **Why a second copy.** Each order k needs the convolutions Σ_j θ̇_j c_{k−1−j} and
 //! Σ_j θ̇_j s_{k−1−j}; the generic code indexes one factor backwards, with a bounds check per

@@ -18,7 +18,7 @@
 //! separation of pushed starts by up to 0.017 ω h² (the reliability campaign's F14: κ = 3.1e9
 //! at h ω = 0.17, 3.9e-9 rad where the bound allowed 1.4e-9). With each kick at its own time
 //! level the velocities at whole steps are the motion's to O(h²) without the factor κ, and
-//! nothing is excited (`tests/verlet_penalty_start.rs`). For a separable model the two
+//! nothing is excited (`tests/sim/penalty/verlet_start.rs`). For a separable model the two
 //! pairings are the same step.
 
 use super::fixed::{FixedMethod, FixedStep};

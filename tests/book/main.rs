@@ -1,0 +1,8 @@
+//! The book (`equations/*.md` and `ladder book`): its pages, its doc-as-test checks, the errata
+//! and units pages held against the code (`cargo test --test book pages`).
+
+mod check;
+mod docs;
+mod errata_doc;
+mod pages;
+mod units_doc;

@@ -1,0 +1,109 @@
+//! Typos injected into the print are caught (issue 9, item 6).
+//!
+//! CI runs a fixed-seed sample; the full sweep over every typo of every display is one command:
+//! `cargo test --release --test note print::inject -- --ignored --nocapture` (its catch rate is in
+//! README.md).
+
+use rand::seq::SliceRandom;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use sliding_ladder::registry::check::Config;
+use sliding_ladder::registry::equations;
+use sliding_ladder::registry::print_check::{injections, run_injection, Injection, Outcome, Typo};
+
+fn quick() -> Config {
+    Config {
+        float_cases: 20,
+        exact_points: 1,
+        seed: 11,
+    }
+}
+
+/// Run injections; return the number caught, the neutral typos and the misses.
+fn sweep(list: &[Injection]) -> (usize, Vec<String>, Vec<String>) {
+    let eqs = equations();
+    let (mut caught, mut neutral, mut missed) = (0, Vec::new(), Vec::new());
+    for inj in list {
+        let e = eqs
+            .iter()
+            .find(|e| e.number == inj.number)
+            .expect("registered");
+        match run_injection(e, inj, &quick()) {
+            Outcome::Caught(why) => {
+                // The report names the form (or why it no longer parses).
+                assert!(
+                    why.contains("form") || why.contains("parse") || why.contains("symbol"),
+                    "{why}"
+                );
+                caught += 1;
+            }
+            Outcome::Neutral => {
+                neutral.push(format!("({}) {:?}: {}", inj.number, inj.typo, inj.latex))
+            }
+            Outcome::Missed => {
+                missed.push(format!("({}) {:?}: {}", inj.number, inj.typo, inj.latex))
+            }
+        }
+    }
+    (caught, neutral, missed)
+}
+
+fn all_injections() -> Vec<Injection> {
+    equations()
+        .iter()
+        .flat_map(|e| injections(e.number, e.latex()))
+        .collect()
+}
+
+#[test]
+fn every_sort_of_typo_occurs_and_a_fixed_sample_is_caught() {
+    let all = all_injections();
+    for t in [
+        Typo::Coefficient,
+        Typo::Sign,
+        Typo::SinCos,
+        Typo::DropFactor,
+    ] {
+        assert!(all.iter().filter(|i| i.typo == t).count() > 10, "{t:?}");
+    }
+    let mut rng = ChaCha8Rng::seed_from_u64(2019);
+    let sample: Vec<Injection> = all.choose_multiple(&mut rng, 24).cloned().collect();
+    let (caught, neutral, missed) = sweep(&sample);
+    assert!(missed.is_empty(), "{missed:#?}");
+    assert!(caught >= 20, "caught {caught}, neutral {neutral:#?}");
+}
+
+#[test]
+fn the_typo_in_25_is_named_with_its_form_and_residual() {
+    let e = equations().into_iter().find(|e| e.number == 25).unwrap();
+    let inj = injections(25, e.latex())
+        .into_iter()
+        .find(|i| i.typo == Typo::SinCos)
+        .expect("a sin/cos in (25)");
+    match run_injection(&e, &inj, &quick()) {
+        Outcome::Caught(why) => assert!(why.contains("form") && why.contains("residual"), "{why}"),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+#[ignore = "full sweep, minutes: cargo test --release --test note print::inject -- --ignored --nocapture"]
+fn full_sweep_catch_rate() {
+    let all = all_injections();
+    let (caught, neutral, missed) = sweep(&all);
+    let counted = caught + missed.len();
+    println!(
+        "injection sweep: {} typos in 90 displays; {caught} caught, {} neutral (value unchanged), {} missed; catch rate {:.1}% of the {counted} that change a value",
+        all.len(),
+        neutral.len(),
+        missed.len(),
+        100.0 * caught as f64 / counted.max(1) as f64
+    );
+    for n in &neutral {
+        println!("neutral: {n}");
+    }
+    for m in &missed {
+        println!("missed: {m}");
+    }
+    assert!(missed.is_empty());
+}

@@ -1,0 +1,5 @@
+//! `sliding_ladder::verify`: the verdict table and the errata.
+
+mod errata_difference;
+mod errata_point;
+mod table;

@@ -1,0 +1,4 @@
+//! `report::diagram*`: the force diagrams of the torque analyses.
+
+mod figures;
+mod legend;

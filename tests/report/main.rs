@@ -1,0 +1,9 @@
+//! The reports (`sliding_ladder::report`): work-precision, the reliability campaign, figures,
+//! force diagrams and long runs (`cargo test --test report`).
+
+mod campaign;
+mod diagram;
+mod fall_figures;
+mod stability_long;
+mod svg_chart;
+mod work_precision;

@@ -1,0 +1,4 @@
+//! `sim::constrained`: the wall phase as a constrained (Lagrange multiplier) system.
+
+mod baumgarte;
+mod drift;

@@ -1,0 +1,4 @@
+//! `sim::integrators::verlet`: Störmer-Verlet.
+
+mod step;
+mod velocity_dependent;

@@ -1,0 +1,4 @@
+//! `sim::scene*`: scene files, their errors and the plan's refusals.
+
+mod errors;
+mod work;
