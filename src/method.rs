@@ -6,7 +6,7 @@
 //! registry checks (θ̈ solved from the residual equals (5) at random states, in floats within an
 //! error bound and exactly in rationals; the residual vanishes on the motion and not off it),
 //! and [`check_method`] runs them. `examples/midpoint_method.rs` adds one from outside the crate;
-//! `equations/EXTENDING.md` walks through it.
+//! `docs/EXTENDING.md` walks through it.
 
 use crate::ladder::analysis::{torque_equation, AngularMomentum, Reference};
 use crate::ladder::energy::{angular_acceleration, lagrange_residual, NoteLagrangian};

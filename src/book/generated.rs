@@ -159,9 +159,10 @@ pub fn methods_page(data: &BookData) -> String {
 points; its appendices add Jensen's methods and Milne's. Each derivation is written as a residual \
 affine in θ̈; the check solves it for θ̈, compares with (5) at random states (tolerance from the \
 running error bound) and shows that the residual vanishes on the motion only. \
-<a href=\"extending.html\">Adding a method</a> explains how to add one.</p>\n\
+<a href=\"{extending}\">Adding a method</a> explains how to add one.</p>\n\
 <table><thead><tr><th>method</th><th>verdict</th><th>float states</th><th>res/bound</th><th>problems</th></tr></thead>\
-<tbody>\n{rows}</tbody></table>\n"
+<tbody>\n{rows}</tbody></table>\n",
+        extending = super::about::page_name("docs/EXTENDING.md")
     )
 }
 

@@ -12,6 +12,7 @@
 //! into MathML Core ([`math`] says why). The HTML frame, the stylesheet and the atomic write are
 //! written by hand: a template engine would add a dependency for five page shapes.
 
+pub mod about;
 pub mod code;
 pub mod generated;
 pub mod markdown;

@@ -1,6 +1,7 @@
 //! Assembling the book: which pages, in which order, and how links map from the repository's
 //! layout (`equations/*.md`, `../src/…`, `figures/…`) to the book's.
 
+use super::about;
 use super::code::{locate, page_of};
 use super::markdown::{heading_number, links_in, render, title_of, Hooks};
 use super::pages::{page, NavItem, STYLE};
@@ -68,9 +69,12 @@ fn registry() -> BTreeMap<u32, Equation> {
         .collect()
 }
 
-/// Resolve a markdown link to the book's address; source files are recorded in `code`.
+/// Resolve a markdown link of a file in the folder `base` (`equations`, `docs`, ...) to the
+/// book's address: a chapter, an about page, a figure, or any other file of the repository as
+/// a source page (recorded in `code`).
 fn resolve(
     root: &Path,
+    base: &str,
     dest: &str,
     code_text: Option<&str>,
     code: &RefCell<BTreeSet<String>>,
@@ -79,36 +83,31 @@ fn resolve(
         return Some(dest.to_string());
     }
     let (path, frag) = match dest.split_once('#') {
-        Some((p, f)) => (p, Some(f)),
-        None => (dest, None),
+        Some((p, f)) => (p, format!("#{f}")),
+        None => (dest, String::new()),
     };
-    let dir = root.join("equations");
-    if path.ends_with(".md") && !path.contains('/') && dir.join(path).is_file() {
-        return Some(format!(
-            "{}{}",
-            page_name(path),
-            frag.map(|f| format!("#{f}")).unwrap_or_default()
-        ));
-    }
-    if path.starts_with("figures/") && dir.join(path).is_file() {
-        return Some(path.to_string());
-    }
-    // Any other file of the repository (`../src/…`, `symbols.toml`) is shown as a source page.
-    let file = match path.strip_prefix("../") {
-        Some(f) => f.to_string(),
-        None => format!("equations/{path}"),
-    };
-    let file = file.as_str();
-    if file.contains("..") || !root.join(file).is_file() {
+    let file = about::join_relative(base, path)?;
+    if !root.join(&file).is_file() {
         return None;
     }
-    code.borrow_mut().insert(file.to_string());
+    if let Some(rest) = file.strip_prefix("equations/") {
+        if rest.ends_with(".md") && !rest.contains('/') {
+            return Some(format!("{}{frag}", page_name(rest)));
+        }
+        if rest.starts_with("figures/") {
+            return Some(rest.to_string());
+        }
+    }
+    if file.starts_with("docs/") && file.ends_with(".md") {
+        return Some(format!("{}{frag}", about::page_name(&file)));
+    }
+    code.borrow_mut().insert(file.clone());
     let line = code_text
         .and_then(|c| locate(root, c))
         .filter(|l| l.file == file)
         .map(|l| format!("#L{}", l.line))
         .unwrap_or_default();
-    Some(format!("{}{line}", page_of(file)))
+    Some(format!("{}{line}", page_of(&file)))
 }
 
 /// Make every file of the book.
@@ -147,6 +146,7 @@ pub fn build(root: &Path, data: &BookData) -> Built {
     }
     nav.push(("methods.html".into(), "Methods".into()));
     nav.push(("figures.html".into(), "Figures".into()));
+    nav.push(("about.html".into(), "About the checks".into()));
     let reg = registry();
     let results: BTreeMap<u32, _> = data
         .results
@@ -183,7 +183,7 @@ pub fn build(root: &Path, data: &BookData) -> Built {
             errata.get(&n).copied(),
         ))
     };
-    let link = |dest: &str, text: Option<&str>| resolve(root, dest, text, &code);
+    let link = |dest: &str, text: Option<&str>| resolve(root, "equations", dest, text, &code);
     let hooks = Hooks {
         display: &display,
         link: &link,
@@ -244,6 +244,33 @@ pub fn build(root: &Path, data: &BookData) -> Built {
     for (name, bytes) in figures {
         out.push((format!("figures/{name}"), bytes));
     }
+    let docs = about::documents(root, &mut problems);
+    for d in &docs {
+        let base = d.file.rsplit_once('/').map_or("", |(b, _)| b);
+        let link = |dest: &str, text: Option<&str>| resolve(root, base, dest, text, &code);
+        let hooks = Hooks {
+            display: &display,
+            link: &link,
+        };
+        let (body, p) = render(&d.file, &d.source, &hooks);
+        problems.extend(p);
+        out.push((
+            d.page.clone(),
+            page(&d.title, 0, &nav, &d.page, &body).into_bytes(),
+        ));
+    }
+    out.extend(about::pictures(root, &mut problems));
+    out.push((
+        "about.html".into(),
+        page(
+            "About the checks",
+            0,
+            &nav,
+            "about.html",
+            &about::index_body(&docs),
+        )
+        .into_bytes(),
+    ));
     for file in code.into_inner() {
         match std::fs::read_to_string(root.join(&file)) {
             Ok(src) => {

@@ -137,7 +137,7 @@ pub fn verify(
         let (pd, nd, pf, nf, pm) = print_coverage(&results);
         let (pp, ppf) = print_proof_counts(&results);
         line(&mut text, format!(
-            "print: {pd} of {nd} displays parsed in full, {pf} of {nf} printed forms parsed and checked, {pm} displays with every Rust form matching the print (equations/symbols.toml); {pp} of {nd} displays proved symbolically as printed ({ppf} forms)"
+            "print: {pd} of {nd} displays parsed in full, {pf} of {nf} printed forms parsed and checked, {pm} displays with every Rust form matching the print (src/print/symbols.toml); {pp} of {nd} displays proved symbolically as printed ({ppf} forms)"
         ));
         text.push_str(&fill(&crate::verify::legend::legend(cfg), columns));
         text.push_str(&fill(&crate::verify::legend::law_lines(&results), columns));

@@ -1,7 +1,7 @@
 //! The points of the figure and the note's printed kinematics.
 //!
 //! The only geometric input is where the ends are while both contacts hold: the top C on the
-//! wall at (0, 2l cos θ) and the foot D on the floor at (2l sin θ, 0) (FIGURE.md). The centre of
+//! wall at (0, 2l cos θ) and the foot D on the floor at (2l sin θ, 0) (equations/FIGURE.md). The centre of
 //! mass B is the midpoint of C and D, E completes the rectangle A-D-E-C, A is the origin. The
 //! note's printed formulas for these points, their velocities and accelerations, are separate
 //! functions checked against the ones here (velocities by automatic differentiation).

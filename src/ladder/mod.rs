@@ -1,5 +1,5 @@
 //! The ladder of the note: a uniform rod of mass m and length 2l, its top C on a frictionless
-//! wall and its foot D on a frictionless floor, at angle θ to the wall (see `FIGURE.md`).
+//! wall and its foot D on a frictionless floor, at angle θ to the wall (see `equations/FIGURE.md`).
 //!
 //! The state carries sin θ and cos θ rather than θ, so that every equation is a rational
 //! function of the state and can be evaluated exactly at rational points of the unit circle.

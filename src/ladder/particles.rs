@@ -7,7 +7,7 @@
 //! energy, moment of inertia, gravitational torque — is quadratic or lower in position along the
 //! rod, hence the same for the particles as for the rod.
 //!
-//! Nothing here uses the note's formulas: positions come from the two contacts (FIGURE.md),
+//! Nothing here uses the note's formulas: positions come from the two contacts (equations/FIGURE.md),
 //! velocities, accelerations and jerks from automatic differentiation along the motion, and the
 //! contact forces from Newton's second law for the whole ladder. This is the reference that the
 //! note's printed equations are checked against.

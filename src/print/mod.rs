@@ -2,7 +2,7 @@
 //!
 //! Each display of the note (the registry's verbatim copy, `src/registry/latex.rs`) is parsed
 //! into an expression tree ([`ast`]), its symbols are mapped to quantities of the independent
-//! models by one data file, `equations/symbols.toml` ([`symbols`], [`quantity`]), and every form
+//! models by one data file, `src/print/symbols.toml` ([`symbols`], [`quantity`]), and every form
 //! is evaluated in any [`crate::scalar::Scalar`] ([`eval`]): f64 with running error bounds, exact
 //! rationals, AD duals for every d/dt, so the registry's own machinery checks the print itself
 //! (`crate::registry::print_check`).

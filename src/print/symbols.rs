@@ -1,4 +1,4 @@
-//! The symbol table: `equations/symbols.toml`, embedded in the binary with `include_str!` and
+//! The symbol table: `src/print/symbols.toml`, embedded in the binary with `include_str!` and
 //! read with serde + toml. Each entry maps a printed symbol to a quantity of the model, per
 //! section where the note reuses a symbol with another meaning, and states where the note
 //! defines it and its dimension and SI unit (used by the units check).
@@ -9,7 +9,7 @@ use serde::Deserialize;
 use std::sync::OnceLock;
 
 /// The table's text, as shipped.
-pub const SYMBOLS_TOML: &str = include_str!("../../equations/symbols.toml");
+pub const SYMBOLS_TOML: &str = include_str!("symbols.toml");
 
 /// One entry of the symbol table.
 #[derive(Clone, Debug, Deserialize)]

@@ -1,6 +1,6 @@
 //! The reliability campaign (issue 11, item 3): scenes drawn at random from the whole domain
 //! the README promises, each run through the path `ladder simulate` takes (scene text → parse →
-//! plan → run → outputs) and judged by [`super::campaign_judge`]; `examples/campaign.rs` is
+//! plan → run → outputs) and judged by [`super::campaign_judge`]; `tools/experiments/campaign.rs` is
 //! the command.
 //!
 //! **The domain drawn** (each scene from its own ChaCha8 stream, `seed` and the scene's index,

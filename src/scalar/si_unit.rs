@@ -1,5 +1,5 @@
 //! The dimension an SI unit spells (`N`, `kg m^2/s`, `rad/s^2`), so a stated unit can be held
-//! against a computed dimension (the symbol table, `equations/UNITS.md`).
+//! against a computed dimension (the symbol table, `docs/UNITS.md`).
 //!
 //! The project states units in a small vocabulary: kg, m, s, N, J, rad (a pure number), `1`,
 //! factors separated by spaces, each with an optional integer power and one `/` (`kg m^2/s` is

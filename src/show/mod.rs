@@ -1,7 +1,7 @@
 //! `ladder show N`: one display of the note in depth (issue 15).
 //!
 //! For a display (1)-(90): its print (LaTeX and a Unicode reading), section, title, kind and
-//! verdict; what each symbol means, with its unit (`equations/symbols.toml`); every printed form
+//! verdict; what each symbol means, with its unit (`src/print/symbols.toml`); every printed form
 //! in order, evaluated at a state the user chooses (`--at`, [`at`], completed on the motion by
 //! [`state`]) in f64, exactly when the state is rational, and with its SI unit ([`values`]); the
 //! checks `ladder verify` runs on it, with their residuals and verdicts, run for this display

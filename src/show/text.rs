@@ -123,7 +123,7 @@ pub fn render(s: &Shown) -> String {
         s.latex.split_whitespace().collect::<Vec<_>>().join(" ")
     );
     let _ = writeln!(o, "  reads:   {}", s.unicode);
-    let _ = writeln!(o, "\nsymbols (equations/symbols.toml)");
+    let _ = writeln!(o, "\nsymbols (src/print/symbols.toml)");
     for y in &s.symbols {
         let milne = if y.milne { " (Milne)" } else { "" };
         let _ = writeln!(

@@ -214,7 +214,7 @@ pub(super) fn value_error(cx: &Ctx, e: &toml::de::Error) -> SceneError {
     cx.err(
         span,
         &field,
-        format!("{msg}; allowed: see the scene format in README.md"),
+        format!("{msg}; allowed: see the scene format in README.md and docs/simulator.md"),
     )
 }
 

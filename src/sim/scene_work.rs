@@ -18,7 +18,7 @@
 //!   κ = 6.9e6 hit the 1e7-step limit after 15 s):
 //!   - *stability*: its error control holds h ω near the edge of its stability region, c ω t_s
 //!     steps. Measured from θ0 = 0.0106 and 0.3 (θ̇0 = 4e-5) at τ = 1e-4 and 1e-6, κ = 1e6..1e11,
-//!     γ = 0 and 10 (`examples/penalty_stability_count.rs`): dopri5 takes 0.53-1.03 ω t_s
+//!     γ = 0 and 10 (`tools/experiments/penalty_stability_count.rs`): dopri5 takes 0.53-1.03 ω t_s
 //!     steps, dop853 0.19-0.69; c is the top of each (1.05, 0.7). It was ω t_s / 3, an
 //!     assumption: campaign scene 180450 (dopri5, κ = 6.9e11, τ = 3.7e-5) was estimated at
 //!     3.25e6 steps and hit the 1e7-step limit;

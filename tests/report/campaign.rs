@@ -1,4 +1,4 @@
-//! The reliability campaign's parts (issue 11, item 3; `examples/campaign.rs` runs them): the
+//! The reliability campaign's parts (issue 11, item 3; `tools/experiments/campaign.rs` runs them): the
 //! draw covers the whole domain and writes scenes the parser reads back exactly, the flat-time
 //! reference agrees with a tight integration, and the judge rejects wrong results.
 

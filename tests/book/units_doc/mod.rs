@@ -1,4 +1,4 @@
-//! equations/UNITS.md is in step with the code: each symbol's dimension is what its Rust function
+//! docs/UNITS.md is in step with the code: each symbol's dimension is what its Rust function
 //! yields in dimensions, each SI unit spells that dimension, and each output of `ladder simulate`
 //! scales with a change of units as its stated dimension says.
 
@@ -21,8 +21,8 @@ mod simulate;
 
 /// The rows of every table on the page: (section heading, cells).
 fn tables() -> Vec<(String, Vec<String>)> {
-    let path = sliding_ladder::docs::default_dir().join("UNITS.md");
-    let text = std::fs::read_to_string(&path).expect("equations/UNITS.md");
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/UNITS.md");
+    let text = std::fs::read_to_string(&path).expect("docs/UNITS.md");
     let (mut rows, mut heading, mut cell, mut row) = (Vec::new(), String::new(), None, Vec::new());
     let mut in_heading = false;
     for ev in Parser::new_ext(&text, Options::ENABLE_TABLES) {

@@ -1,6 +1,6 @@
 //! Issue 14 item 4, beyond the JSON: the columns of the CSV files `ladder simulate --out` writes
 //! and every number its printed summary gives with a unit scale, under a change of units, as
-//! the unit equations/UNITS.md (or the summary itself) states.
+//! the unit docs/UNITS.md (or the summary itself) states.
 
 use super::{run_scene, si_dimension, tables, LENGTH, MASS, TIME};
 use sliding_ladder::scalar::Dimension;
@@ -89,7 +89,7 @@ fn csv_problems(stated: &BTreeMap<String, Dimension>, a: &Csv, b: &Csv, steps: f
 }
 
 /// Issue 14 item 4: every column of the CSV files `ladder simulate --out` writes scales as the
-/// unit equations/UNITS.md states for it; a column stated in the wrong unit is caught.
+/// unit docs/UNITS.md states for it; a column stated in the wrong unit is caught.
 #[test]
 fn every_csv_column_scales_as_its_stated_unit() {
     let mut stated: BTreeMap<String, Dimension> = tables()

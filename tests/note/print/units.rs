@@ -226,7 +226,7 @@ fn quantity_dimension(entry: &Entry) -> Option<Option<Dimension>> {
     zero.then_some(None)
 }
 
-/// The symbol table (`equations/symbols.toml`, which `ladder show` prints and the print's
+/// The symbol table (`src/print/symbols.toml`, which `ladder show` prints and the print's
 /// check reads): every entry's stated dimension is the dimension of the model quantity it
 /// denotes, and its SI unit spells that dimension. A wrong dimension or unit is caught. Two
 /// sorts cannot be compared, and are counted: θ, which the model never holds (it carries sin θ

@@ -15,7 +15,7 @@
 //!
 //! The estimates are those of the stability count ω t_s / 3 the plan used then; 180450, at a
 //! loose tolerance, is all stability: measured, dopri5 takes up to 1.03 ω t_s steps there
-//! (`examples/penalty_stability_count.rs`), and the count is now 1.05 ω t_s (0.7 for dop853).
+//! (`tools/experiments/penalty_stability_count.rs`), and the count is now 1.05 ω t_s (0.7 for dop853).
 
 use sliding_ladder::sim::scene::parse;
 use sliding_ladder::sim::scene_parts::MAX_STEPS;

@@ -24,7 +24,7 @@ use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel};
 use sliding_ladder::sim::penalty_confirm::{rigid_separation_angle, separation_bound};
 use sliding_ladder::sim::penalty_run::{separate_with, PenaltySeparation};
 
-/// Pushed starts (θ0, θ̇0 in √(g/l)) from the F14 sweep (`examples/penalty_fixed_step.rs`),
+/// Pushed starts (θ0, θ̇0 in √(g/l)) from the F14 sweep (`tools/experiments/penalty_fixed_step.rs`),
 /// where the mid-step pairing missed by the most.
 const STARTS: [(f64, f64); 3] = [(1.243, 0.209), (0.263, 0.211), (0.712, 0.175)];
 /// Springs stiff enough that the ringing is far above the O(h²) slow error, cheap enough for
