@@ -5,7 +5,7 @@ use crate::report::files::{write_all, OutFile};
 use crate::report::work_precision::{default_scenes, sweep, TIMING};
 use crate::report::work_precision_fit::Point;
 use crate::report::work_precision_report::{csv, panel, report, SceneReport};
-use crate::sim::integrators::RIGID_METHODS as METHODS;
+use crate::sim::integrators::names;
 use crate::sim::scene;
 use clap::Args;
 use std::path::{Path, PathBuf};
@@ -46,7 +46,7 @@ pub fn work_precision(scene_paths: &[PathBuf], json: bool, out: Option<&Path>) -
     if scenes.is_empty() {
         scenes = default_scenes();
     }
-    let per_scene: usize = METHODS.iter().map(|m| sweep(m).len()).sum();
+    let per_scene: usize = names().map(|m| sweep(m).len()).sum();
     let bar = indicatif::ProgressBar::new((per_scene * scenes.len()) as u64);
     let mut reports = Vec::new();
     for sc in &scenes {

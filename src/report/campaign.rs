@@ -25,7 +25,7 @@
 //! format allows is drawn, so refusals (exit 2) are part of the campaign: they are counted by
 //! the field they name.
 
-use crate::sim::integrators::{METHODS, RIGID_METHODS};
+use crate::sim::integrators::{any_model_names, is_adaptive, names};
 use crate::sim::output::Output;
 use crate::sim::scene::{ContactModel, End, Scene};
 use crate::sim::scene_work::phase_steps;
@@ -37,9 +37,67 @@ use std::fmt::Write;
 /// Every method a scene may name: the integrators and, for rigid scenes, the closed form.
 pub fn methods(penalty: bool) -> Vec<&'static str> {
     match penalty {
-        true => METHODS.to_vec(),
-        false => RIGID_METHODS.iter().copied().chain(["exact"]).collect(),
+        true => any_model_names().collect(),
+        false => names().chain(["exact"]).collect(),
     }
+}
+
+/// The methods of the table when the campaign's seeds were first run and published (the lab
+/// notebook cites scenes by seed and index): a rigid scene drew one of these nine, a penalty
+/// scene one of the first seven, uniformly from its own stream. That draw is kept, so those
+/// scenes stay as they were.
+const FIRST_METHODS: [&str; 9] = [
+    "euler",
+    "symplectic-euler",
+    "verlet",
+    "rk4",
+    "dopri5",
+    "dop853",
+    "radau5",
+    "taylor",
+    "exact",
+];
+
+/// The method of a seeded scene: `first[pick]` (the draw of the methods first published), unless
+/// a method of `current` added since wins it. Weighted rendezvous hashing decides: the first
+/// methods together score with weight `first.len()`, each newcomer with weight 1, each score
+/// w / −ln u with u from [`unit`]`(seed, index, name)`. A newcomer so takes about its share of
+/// the scenes, and adding one moves to it only the scenes it wins: every other scene keeps its
+/// method and, since the draw consumes nothing more from the scene's stream, all of its draw.
+pub fn pick_method(
+    seed: u64,
+    index: u64,
+    first: &[&'static str],
+    pick: usize,
+    current: &[&'static str],
+) -> &'static str {
+    let weighed = |name: &str, w: f64| w / -unit(seed, index, name).ln();
+    let mut best = (first[pick], weighed("", first.len() as f64));
+    for m in current.iter().copied().filter(|m| !first.contains(m)) {
+        let s = weighed(m, 1.0);
+        if s > best.1 {
+            best = (m, s);
+        }
+    }
+    best.0
+}
+
+/// A number in (0, 1) hashed from (seed, index, name): FNV-1a of the name, then SplitMix64's
+/// finaliser over the three (well mixed and dependency-free; any fixed hash would do).
+fn unit(seed: u64, index: u64, name: &str) -> f64 {
+    let fnv = name.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    });
+    let mut z = seed
+        .wrapping_mul(0x9e37_79b9_7f4a_7c15)
+        .wrapping_add(index)
+        .rotate_left(17)
+        ^ fnv;
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^= z >> 31;
+    // 53 random bits, offset by half a step so that neither 0 nor 1 occurs.
+    ((z >> 11) as f64 + 0.5) / (1u64 << 53) as f64
 }
 
 /// Every output a scene may ask for.
@@ -215,8 +273,9 @@ pub fn draw(seed: u64, index: u64) -> String {
         start.line(),
         num(rate0)
     );
-    let methods = methods(penalty);
-    let method = methods[rng.gen_range(0..methods.len())];
+    let first = &FIRST_METHODS[..if penalty { 7 } else { 9 }];
+    let pick = rng.gen_range(0..first.len());
+    let method = pick_method(seed, index, first, pick, &methods(penalty));
     if penalty {
         let kappa = exp10(rng, 0.0, 12.0);
         let gamma = match rng.gen_bool(0.5) {
@@ -235,7 +294,7 @@ pub fn draw(seed: u64, index: u64) -> String {
     let _ = write!(text, "[integrator]\nmethod = \"{method}\"\n");
     match method {
         "exact" => {}
-        "dopri5" | "dop853" | "radau5" | "taylor" => {
+        _ if is_adaptive(method) => {
             let _ = writeln!(text, "tolerance = {}", num(exp10(rng, -16.0, -1.0)));
         }
         _ => {
@@ -283,4 +342,41 @@ pub fn draw(seed: u64, index: u64) -> String {
     let list: Vec<String> = want.iter().map(|w| format!("\"{w}\"")).collect();
     let _ = writeln!(text, "[outputs]\nwant = [{}]", list.join(", "));
     text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{methods, pick_method, FIRST_METHODS};
+
+    /// With the table as first published every scene keeps its first draw; a method added
+    /// later takes over only scenes it wins (every other keeps its method), about its share.
+    #[test]
+    fn pick_method_moves_only_the_scenes_a_new_method_wins() {
+        let first = &FIRST_METHODS[..];
+        assert_eq!(methods(false), first, "the table is still the first one");
+        for i in 0..1000 {
+            let k = (i as usize * 7) % first.len();
+            assert_eq!(pick_method(1, i, first, k, first), first[k]);
+        }
+        let mut with_heun = first.to_vec();
+        with_heun.push("heun");
+        let mut moved = 0;
+        for i in 0..10_000u64 {
+            let k = (i as usize * 7) % first.len();
+            let b = pick_method(1, i, first, k, &with_heun);
+            if b != first[k] {
+                assert_eq!(b, "heun", "scene {i}");
+                moved += 1;
+            }
+        }
+        // One in ten expected: 1000 ± 30 (binomial σ); 5σ either side.
+        assert!((850..=1150).contains(&moved), "{moved}");
+        // Which scenes move depends on the seed.
+        let moved_at = |seed| {
+            (0..200u64)
+                .filter(|&i| pick_method(seed, i, first, 0, &with_heun) == "heun")
+                .collect::<Vec<_>>()
+        };
+        assert_ne!(moved_at(1), moved_at(2));
+    }
 }

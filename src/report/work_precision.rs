@@ -13,7 +13,7 @@ use crate::sim::complement::{self, ComplementFloor};
 use crate::sim::exact::{separation_cos, PhaseOne, Separation};
 use crate::sim::fall;
 use crate::sim::integrators::taylor::{Taylor, MAX_ORDER};
-use crate::sim::integrators::{is_adaptive, Control};
+use crate::sim::integrators::{card, is_adaptive, Control};
 use crate::sim::output::Output;
 use crate::sim::rigid::Ladder;
 use crate::sim::run::integrate_phase;
@@ -84,22 +84,18 @@ impl Point for Run {
     }
 }
 
-/// The sweep of each method: tolerances or steps.
+/// The sweep of each method, tolerances or steps, from its card (`Card::sweep`); empty for a
+/// name the table does not know.
 pub fn sweep(method: &str) -> Vec<f64> {
-    let decades = |a: i32, b: i32| (a..=b).map(|k| 10f64.powi(-k)).collect::<Vec<_>>();
-    let halves = |h0: f64, n: i32| (0..n).map(|k| h0 / 2f64.powi(k)).collect::<Vec<_>>();
-    match method {
-        // Half decades for dop853: its runs of at least 10 steps above the rounding floor span
-        // only 2-3 decades of tolerance on the short scenes, too few decade points for the
-        // order fit (`work_precision_fit`, rule 2).
-        "dop853" => (6..=32).map(|k| 10f64.powf(-0.5 * k as f64)).collect(),
-        "taylor" => decades(3, 16),
-        "dopri5" => decades(3, 15),
-        "radau5" => decades(3, 13),
-        "rk4" => halves(0.1, 10),
-        "verlet" => halves(0.05, 10),
-        _ => halves(0.01, 9),
-    }
+    card(method).map_or_else(Vec::new, |c| {
+        c.sweep
+            .controls()
+            .into_iter()
+            .map(|c| match c {
+                Control::Fixed(v) | Control::Tolerance(v) => v,
+            })
+            .collect()
+    })
 }
 
 /// The default scene of the sweep: from rest at θ0 = 0.3 (scenes/from-rest.toml).

@@ -6,7 +6,7 @@ use super::plot::{Chart, PlotSpec, Series};
 use super::svg_chart::decade_label;
 use super::work_precision::{measure, Run, Timing, PEERS_OF};
 use super::work_precision_fit::{observed_order, pareto, OrderFit, Point};
-use crate::sim::integrators::{order, RIGID_METHODS as METHODS};
+use crate::sim::integrators::{names, order};
 use crate::sim::scene::{End, Scene};
 use serde::Serialize;
 
@@ -33,12 +33,13 @@ pub fn report(
     timing: Timing,
     tick: impl FnMut(&str),
 ) -> Result<SceneReport, String> {
+    let methods: Vec<&str> = names().collect();
     #[allow(unused_mut)]
-    let mut runs = measure(scene, &METHODS, timing, tick)?;
+    let mut runs = measure(scene, &methods, timing, tick)?;
     // ode_solvers' DOP853 and Dopri5 in the same run (`--features peers`; see the module).
     #[cfg(feature = "peers")]
     runs.extend(super::work_precision_peers::measure_peers(scene, timing)?);
-    let orders = METHODS
+    let orders = methods
         .iter()
         .map(|m| ((*m).to_string(), order(m), observed_order(&runs, m)))
         .collect();
@@ -91,10 +92,9 @@ pub fn csv(reports: &[SceneReport]) -> String {
 pub fn panel(rep: &SceneReport) -> (Chart, Vec<Series>) {
     // Real log axes (the chart draws decades); an error below 1e-17 is shown at 1e-17.
     let point = |r: &Run| (r.seconds, r.error().max(1e-17));
-    let mut series: Vec<Series> = METHODS
-        .iter()
+    let mut series: Vec<Series> = names()
         .map(|m| Series {
-            name: (*m).into(),
+            name: m.into(),
             points: rep
                 .runs
                 .iter()

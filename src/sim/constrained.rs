@@ -24,7 +24,7 @@
 //! run for the drift.
 
 use super::event::{Direction, Event};
-use super::integrators::any::AnyStepper;
+use super::integrators::AnyStepper;
 use super::integrators::{Control, Ode, Stats, Stepper};
 use super::rigid::event_safe_step;
 use super::run::{integrate_phase, Observer, RunError};

@@ -14,7 +14,7 @@
 
 use super::complement;
 use super::event::{Direction, Event};
-use super::integrators::any::AnyStepper;
+use super::integrators::AnyStepper;
 use super::integrators::{Control, Stats, Stepper};
 pub use super::lead_in::{linear_lead_in, LINEAR_AMPLITUDE};
 use super::outcome::SeparationState;

@@ -4,7 +4,7 @@
 //! tolerance. Kept apart from the model so each file has one job.
 
 use super::event::{Direction, Event};
-use super::integrators::any::AnyStepper;
+use super::integrators::AnyStepper;
 use super::integrators::{order, Control, Ode, Stats, Stepper};
 use super::lead_in::linear_lead_in;
 use super::penalty::{

@@ -37,7 +37,7 @@ pub struct Scene {
     pub phi0: Option<f64>,
     /// θ̇0, rad/s.
     pub rate0: f64,
-    /// Integrator name (one of [`METHODS`](super::integrators::METHODS) or `exact`).
+    /// Integrator name (one of [`TABLE`](super::integrators::TABLE) or `exact`).
     pub method: String,
     /// Step or tolerance (None for `exact`).
     pub control: Option<Control>,

@@ -10,7 +10,7 @@
 //! 1e-3..10 √κ) lifted off up to κ = 2.50 and never above (none in 5,700 runs with
 //! κ = 2.5..10). A scene needs κ ≥ [`SOFTEST_CONTACT`] = 5, a margin of 2.
 
-use super::integrators::{is_adaptive, Control, RIGID_METHODS, TAYLOR};
+use super::integrators::{card, is_adaptive, names, Control, TABLE};
 use super::output::Output;
 use super::penalty::{Contact, KAPPA_RANGE};
 use super::rigid::Ladder;
@@ -117,11 +117,11 @@ pub(super) fn check_penalty(
             "\"exact\" is the rigid model's reference and the penalty model needs an integrator; allowed: e.g. radau5",
         ));
     }
-    if method == TAYLOR {
+    if card(method).is_some_and(|c| c.rigid_only) {
         return Err(cx.err(
             Some(i.method.span()),
             "integrator.method",
-            "\"taylor\" has recursions for the rigid phases only; the penalty model needs another integrator (e.g. radau5)",
+            format!("\"{method}\" has recursions for the rigid phases only; the penalty model needs another integrator (e.g. radau5)"),
         ));
     }
     if end != End::Separation {
@@ -176,13 +176,13 @@ pub(super) fn check_integrator(
         }
         return Ok((method.into(), None));
     }
-    if !RIGID_METHODS.contains(&method) {
+    if card(method).is_none() {
         return Err(cx.err(
             Some(i.method.span()),
             "integrator.method",
             format!(
                 "unknown method \"{method}\"; allowed: {}, exact",
-                RIGID_METHODS.join(", ")
+                names().collect::<Vec<_>>().join(", ")
             ),
         ));
     }
@@ -254,11 +254,20 @@ pub(super) fn check_order(
         return Ok(None);
     };
     let allowed = format!("a whole number in [{MIN_ORDER}, {MAX_ORDER}] (default: from the tolerance, the least work per unit time)");
-    if method != TAYLOR {
+    if card(method).is_some_and(|c| c.order.is_some()) {
+        // The methods whose order is chosen per run (their card has no order of its own).
+        let takers: Vec<String> = TABLE
+            .iter()
+            .filter(|c| c.order.is_none())
+            .map(|c| format!("method = \"{}\"", c.name))
+            .collect();
         return Err(cx.err(
             Some(o.span()),
             "integrator.order",
-            format!("\"{method}\" takes no order; allowed: order with method = \"taylor\" only"),
+            format!(
+                "\"{method}\" takes no order; allowed: order with {} only",
+                takers.join(" or ")
+            ),
         ));
     }
     let p = cx.number(

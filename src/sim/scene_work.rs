@@ -83,7 +83,7 @@
 //!   4,820 at 75 or above), with dop853 up to 1,164 (471 of 33,045; none in the 5,999 at
 //!   3,500 or above). dop853's tail is long and thin (6 zeros above 200 in 17,504 runs
 //!   there, all at κ ≥ 3e5, after 5 to 3,257 steps). Refused below
-//!   [`RESOLVED_WALL_FORCE_RATE`] (75 for dopri5, 3,500 for dop853: margins of 3.2 and 3.0),
+//!   [`resolved_wall_force_rates`] (75 for dopri5, 3,500 for dop853: margins of 3.2 and 3.0),
 //!   when the separation is far as above. Below those limits many runs still separate
 //!   correctly (a bound on the risk, not a prediction): of seed 1's first 100,000 campaign
 //!   scenes the rule refuses 52, of which 41 would have run within tolerance, 7 ended at
@@ -91,7 +91,8 @@
 //!   again.
 
 use super::exact::{flat::floor_duration, PhaseOne};
-use super::integrators::Control;
+use super::integrators::card::PenaltyFit;
+use super::integrators::{card, Control, TABLE};
 use super::lead_in::linear_lead_in;
 use super::penalty::Contact;
 use super::penalty_confirm::{rigid_separation_angle, separation_bound};
@@ -107,17 +108,12 @@ use num_dual::Dual64;
 const OMEGA: f64 = 0.866_025_403_784_438_6;
 /// Largest h ω of a fixed step with penalty springs.
 const MAX_STEP_FREQUENCY: f64 = 0.2;
-/// The explicit adaptive methods' step-count fits on penalty springs (module docs):
-/// (method, stability constant c, q + 1 of its error estimate, a, b).
-const EXPLICIT_FITS: [(&str, f64, f64, f64, f64); 2] = [
-    ("dopri5", 1.05, 5.0, 0.3, 0.05),
-    ("dop853", 0.7, 8.0, 0.3, 2.5),
-];
 /// How far below [`MAX_STEPS`] an explicit adaptive method's estimated count must stay: runs
 /// took up to 2.24 times the estimate (module docs).
 pub const EXPLICIT_MARGIN: f64 = 3.0;
 /// radau5 on penalty springs stiffer than this needs a tolerance of at least
-/// [`RADAU5_LEAST_TOLERANCE`] (module docs).
+/// [`RADAU5_LEAST_TOLERANCE`] (module docs). Measured on radau5; an implicit method added to
+/// the table is held to the same rule until it is measured.
 pub const RADAU5_STIFF: f64 = 1e8;
 /// The least tolerance radau5 reaches on springs stiffer than [`RADAU5_STIFF`] (module docs).
 pub const RADAU5_LEAST_TOLERANCE: f64 = 1e-15;
@@ -127,7 +123,23 @@ pub const RESOLVED_WALL_FORCE: f64 = 40.0;
 /// Least Ḟ_w0 T/τ each explicit adaptive method needs on penalty springs from θ0 = 0 with a
 /// push (F_w0 = 0 there; module docs): three times the largest ratio with a spurious zero in
 /// the sweeps.
-pub const RESOLVED_WALL_FORCE_RATE: [(&str, f64); 2] = [("dopri5", 75.0), ("dop853", 3500.0)];
+/// From the cards' [`PenaltyFit::wall_force_rate`] (dopri5 75, dop853 3,500).
+pub fn resolved_wall_force_rates() -> Vec<(&'static str, f64)> {
+    TABLE
+        .iter()
+        .filter_map(|c| c.penalty_fit.map(|f| (c.name, f.wall_force_rate)))
+        .collect()
+}
+
+/// Whether `method` is implicit (its card says so); false for a name the table does not know.
+fn is_implicit(method: &str) -> bool {
+    card(method).is_some_and(|c| c.is_implicit())
+}
+
+/// Whether `method` gains energy on every oscillation (its card says so).
+fn gains_energy(method: &str) -> bool {
+    card(method).is_some_and(|c| c.gains_energy_on_oscillations())
+}
 
 /// The rate of the rigid wall force (m g per √(l/g)) at (θ, θ̇) (dimensionless) along the
 /// motion (5), θ̈ = Ω² sin θ: θ̇ (Ω² − θ̇²) at θ = 0. By a dual number through
@@ -150,7 +162,13 @@ pub fn starting_wall_force(theta0: f64, rate0: f64) -> (f64, f64) {
 /// springs of stiffness κ vibrating at up to ω: the most of the stability, accuracy and
 /// rounding counts (module docs).
 pub fn explicit_penalty_steps(method: &str, kappa: f64, omega: f64, t: f64, tol: f64) -> f64 {
-    let Some(&(_, c, q1, a, b)) = EXPLICIT_FITS.iter().find(|f| f.0 == method) else {
+    let Some(PenaltyFit {
+        stability: c,
+        estimate_order: q1,
+        accuracy: (a, b),
+        ..
+    }) = card(method).and_then(|c| c.penalty_fit)
+    else {
         return omega * t / 3.0;
     };
     let stability = c * omega * t;
@@ -208,7 +226,7 @@ pub fn phase_steps(
     let t_s = separation_time(theta0, rate0, unit);
     let Control::Fixed(h) = control else {
         return match (vibration(ladder, contact), control) {
-            (Some((omega, kappa, _)), Control::Tolerance(tol)) if method != "radau5" => [
+            (Some((omega, kappa, _)), Control::Tolerance(tol)) if !is_implicit(method) => [
                 explicit_penalty_steps(method, kappa, omega, t_s.min(t_end), tol),
                 0.0,
             ],
@@ -250,7 +268,7 @@ pub(super) fn check_work(
         );
         match control {
             Control::Fixed(h) => {
-                let (limit, why) = if method == "euler" {
+                let (limit, why) = if gains_energy(method) {
                     (
                         (0.02 / (omega * omega * t_s)).min(MAX_STEP_FREQUENCY / omega),
                         "explicit Euler gains energy by (h ω)² a step",
@@ -279,7 +297,7 @@ pub(super) fn check_work(
                     ),
                 ));
             }
-            Control::Tolerance(tol) if method == "radau5" && kappa > RADAU5_STIFF => {
+            Control::Tolerance(tol) if is_implicit(method) && kappa > RADAU5_STIFF => {
                 if tol < RADAU5_LEAST_TOLERANCE {
                     return Err(cx.err(
                         i.tolerance.as_ref().map(|t| t.span()),
@@ -296,7 +314,7 @@ pub(super) fn check_work(
                 let rigid = rigid_separation_angle(start.0, rate);
                 let to_go = (rigid - theta_i).abs();
                 let (least, largest) = (RESOLVED_WALL_FORCE * tol, fw0 / RESOLVED_WALL_FORCE);
-                let far = method != "radau5" && to_go > separation_bound(kappa, rigid, 1, tol);
+                let far = !is_implicit(method) && to_go > separation_bound(kappa, rigid, 1, tol);
                 let tol_span = i.tolerance.as_ref().map(|t| t.span());
                 if far && fw0 > 0.0 && tol > largest {
                     return Err(cx.err(
@@ -309,8 +327,11 @@ pub(super) fn check_work(
                 }
                 // θ0 = 0 with a push (F8; or a subnormal θ0, where the force underflows to 0):
                 // no wall force at the start, only its rate.
-                let need = RESOLVED_WALL_FORCE_RATE.iter().find(|r| r.0 == method);
-                if let Some(&(_, need)) = need.filter(|_| far && fw0 == 0.0) {
+                let need = card(method).and_then(|c| c.penalty_fit);
+                if let Some(need) = need
+                    .map(|f| f.wall_force_rate)
+                    .filter(|_| far && fw0 == 0.0)
+                {
                     let growth = wall_force_rate(theta_i, rate);
                     let largest = growth / need;
                     if tol > largest {

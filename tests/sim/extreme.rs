@@ -415,7 +415,7 @@ fn a_tiny_starts_separation_time_counts_its_lead_in() {
 /// the steps are shorter for accuracy.)
 #[test]
 fn constrained_steps_are_held_to_the_event_safe_length() {
-    use sliding_ladder::sim::integrators::any::AnyStepper;
+    use sliding_ladder::sim::integrators::AnyStepper;
     use sliding_ladder::sim::integrators::Stepper;
     let model = Constrained {
         alpha: 0.0,

@@ -8,7 +8,7 @@
 
 use num_dual::DualNum;
 use sliding_ladder::sim::event::{Direction, Event};
-use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Ode, Stepper};
 use sliding_ladder::sim::run::{integrate_phase, Observer};
 

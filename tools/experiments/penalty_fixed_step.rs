@@ -18,7 +18,7 @@
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{order, Control};
 use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel};
 use sliding_ladder::sim::penalty_confirm::{rigid_separation_angle, separation_bound};

@@ -7,7 +7,7 @@
 //!
 //! Run: `cargo run --release --example penalty_stability_count`.
 
-use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::Control;
 use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel};
 use sliding_ladder::sim::penalty_run::separate_with;

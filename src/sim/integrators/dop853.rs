@@ -8,10 +8,13 @@
 //! rounded to f64 by the compiler). The error weights are `rtol * max(scale(y0), scale(y1))`, as in
 //! [`super::error_norm`], with the combined 5th/3rd-order estimate of dop853.f.
 
+use super::Integrator;
 use super::adaptive::{trial_step, AdaptiveState, Controller};
 use super::{all_finite, eval, Ode, Stats, StepError, Stepper};
 
 use super::dop853_tables::*;
+use super::card::{Card, ControlKind, Stiffness, Sweep, PenaltyFit};
+use super::Control;
 
 /// `y + h * sum_j a[j] * k[idx[j]]`.
 #[inline(always)]
@@ -39,6 +42,24 @@ const CONTROL: Controller = Controller {
     fac_hi: 1.0 / 0.333,
 };
 
+
+/// The card of Dormand-Prince 8(5,3) ([`super::card`]).
+pub const CARD: Card = Card {
+    name: "dop853",
+    title: "Dormand-Prince 8(5,3)",
+    control: ControlKind::Tolerance,
+    order: Some(8),
+    // 5.96: the stability function 1 + z bᵀ(I − zA)⁻¹1 of the 12-stage tableau has |R(i y)| ≤ 1 up
+    // to y ≈ 5.96 (computed from SciPy's copy of the same coefficients).
+    stiffness: Stiffness::Explicit { oscillation_limit: 5.96 },
+    rigid_only: false,
+    // Half decades: its runs of at least 10 steps above the rounding floor span only 2-3 decades
+    // of tolerance on the short scenes, too few decade points for the order fit
+    // (`report::work_precision_fit`, rule 2).
+    sweep: Sweep::Tolerances { from: 3, to: 16, per_decade: 2 },
+    penalty_fit: Some(PenaltyFit { stability: 0.7, estimate_order: 8.0, accuracy: (0.3, 2.5), wall_force_rate: 3500.0 }),
+    stiff_case: Some(Control::Tolerance(1e-10)),
+};
 /// The DOP853 integrator (adaptive, dense output of order 7).
 #[derive(Clone, Debug)]
 pub struct Dop853<const N: usize> {
@@ -56,6 +77,15 @@ impl<const N: usize> Dop853<N> {
             comp: [0.0; N],
             k: [[0.0; N]; 16],
             cont: None,
+        }
+    }
+}
+
+impl<const N: usize> Integrator<N> for Dop853<N> {
+    fn start(t0: f64, y0: [f64; N], control: Control, _order: Option<usize>) -> Option<Self> {
+        match control {
+            Control::Tolerance(rtol) => Some(Dop853::new(t0, y0, rtol)),
+            Control::Fixed(_) => None,
         }
     }
 }

@@ -5,8 +5,11 @@
 //! (coefficients) and sec. II.6 (dense output), and the Fortran code `dopri5.f` (parameters
 //! `D1`..`D7` of its dense output, the PI step-size control with `BETA = 0.04`).
 
+use super::Integrator;
 use super::adaptive::{trial_step, AdaptiveState, Controller};
 use super::{all_finite, error_norm, eval, Ode, Stats, StepError, Stepper};
+use super::card::{Card, ControlKind, Stiffness, Sweep, PenaltyFit};
+use super::Control;
 
 const C2: f64 = 1.0 / 5.0;
 const C3: f64 = 3.0 / 10.0;
@@ -77,6 +80,20 @@ const CONTROL: Controller = Controller {
     fac_hi: 5.0,
 };
 
+
+/// The card of Dormand-Prince 5(4) ([`super::card`]).
+pub const CARD: Card = Card {
+    name: "dopri5",
+    title: "Dormand-Prince 5(4)",
+    control: ControlKind::Tolerance,
+    order: Some(5),
+    // 0.997: R(z) = Σ_{k≤5} z^k/k! + z⁶/600 has |R(i y)| ≤ 1 only up to y ≈ 0.997 (a test holds it).
+    stiffness: Stiffness::Explicit { oscillation_limit: 0.997 },
+    rigid_only: false,
+    sweep: Sweep::Tolerances { from: 3, to: 15, per_decade: 1 },
+    penalty_fit: Some(PenaltyFit { stability: 1.05, estimate_order: 5.0, accuracy: (0.3, 0.05), wall_force_rate: 75.0 }),
+    stiff_case: Some(Control::Tolerance(1e-10)),
+};
 /// The DOPRI5 integrator (adaptive, dense output of order 4).
 #[derive(Clone, Debug)]
 pub struct Dopri5<const N: usize> {
@@ -90,6 +107,15 @@ impl<const N: usize> Dopri5<N> {
         Dopri5 {
             state: AdaptiveState::new(t0, y0, rtol),
             k: [[0.0; N]; 7],
+        }
+    }
+}
+
+impl<const N: usize> Integrator<N> for Dopri5<N> {
+    fn start(t0: f64, y0: [f64; N], control: Control, _order: Option<usize>) -> Option<Self> {
+        match control {
+            Control::Tolerance(rtol) => Some(Dopri5::new(t0, y0, rtol)),
+            Control::Fixed(_) => None,
         }
     }
 }

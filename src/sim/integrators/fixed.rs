@@ -2,7 +2,7 @@
 //! Hermite interpolant over the last step (free, since the end slope is the next step's first
 //! stage).
 
-use super::{all_finite, eval, hermite, Ode, Stats, StepError, Stepper};
+use super::{all_finite, eval, hermite, Control, Integrator, Ode, Stats, StepError, Stepper};
 
 /// One step of a fixed-step method.
 pub trait FixedMethod<const N: usize> {
@@ -51,6 +51,15 @@ pub struct FixedStep<M, const N: usize> {
     f_prev: [f64; N],
     stats: Stats,
     _method: std::marker::PhantomData<M>,
+}
+
+impl<M: FixedMethod<N>, const N: usize> Integrator<N> for FixedStep<M, N> {
+    fn start(t0: f64, y0: [f64; N], control: Control, _order: Option<usize>) -> Option<Self> {
+        match control {
+            Control::Fixed(h) => Some(FixedStep::new(t0, y0, h)),
+            Control::Tolerance(_) => None,
+        }
+    }
 }
 
 impl<M: FixedMethod<N>, const N: usize> FixedStep<M, N> {

@@ -18,21 +18,39 @@
 #![allow(clippy::needless_range_loop)]
 
 mod adaptive;
-pub mod any;
+pub mod card;
 mod dense_lu;
-pub mod dop853;
 mod dop853_tables;
-pub mod dopri5;
-pub mod euler;
 pub mod fixed;
-pub mod radau5;
-pub mod rk4;
-pub mod symplectic_euler;
-pub mod taylor;
+#[macro_use]
+mod table;
 pub mod taylor_f64;
 pub mod taylor_poly;
 pub mod taylor_series;
-pub mod verlet;
+
+pub use table::Integrator;
+
+// The list of integrators, one line each: its module and its stepper type (`table` makes the
+// module, the variant of `AnyStepper` and the entry of `TABLE` from it).
+integrators! {
+    euler::Euler,
+    symplectic_euler::SymplecticEuler,
+    verlet::Verlet,
+    rk4::Rk4,
+    dopri5::Dopri5,
+    dop853::Dop853,
+    radau5::Radau5,
+    taylor::Taylor,
+}
+
+impl<const N: usize> AnyStepper<N> {
+    /// The method called `name` (a name of [`TABLE`]) with its step or tolerance, or None when
+    /// the name is unknown or the control does not fit the method.
+    #[inline]
+    pub fn new(name: &str, control: Control, t0: f64, y0: [f64; N]) -> Option<Self> {
+        Self::with_order(name, control, None, t0, y0)
+    }
+}
 
 use num_dual::DualNum;
 use std::fmt;
@@ -263,48 +281,32 @@ pub fn hermite<const N: usize>(
     std::array::from_fn(|i| h00 * y0[i] + h10 * h * f0[i] + h01 * y1[i] + h11 * h * f1[i])
 }
 
-/// All methods by name, as scenes spell them.
-pub const METHODS: [&str; 7] = [
-    "euler",
-    "symplectic-euler",
-    "verlet",
-    "rk4",
-    "dopri5",
-    "dop853",
-    "radau5",
-];
-
-/// The Taylor method (rigid wall and floor phases only: it needs [`Ode::taylor_series`]).
-pub const TAYLOR: &str = "taylor";
-
-/// Every method a rigid scene may name: [`METHODS`] (any model) and [`TAYLOR`].
-pub const RIGID_METHODS: [&str; 8] = [
-    "euler",
-    "symplectic-euler",
-    "verlet",
-    "rk4",
-    "dopri5",
-    "dop853",
-    "radau5",
-    TAYLOR,
-];
-
-/// Whether `method` takes a tolerance (adaptive) rather than a step.
-pub fn is_adaptive(method: &str) -> bool {
-    matches!(method, "dopri5" | "dop853" | "radau5" | TAYLOR)
+/// The card of the method called `name`, if the table has one.
+pub fn card(name: &str) -> Option<&'static card::Card> {
+    TABLE.iter().copied().find(|c| c.name == name)
 }
 
-/// Theoretical order of each method (None for the Taylor method: its order follows the
-/// tolerance, [`taylor::order_for`]).
+/// The names of every method, in the table's order (a rigid scene may name any of them).
+pub fn names() -> impl Iterator<Item = &'static str> {
+    TABLE.iter().map(|c| c.name)
+}
+
+/// The names of the methods that run on any model (not only the rigid phases): what a scene
+/// with penalty contact, or the constrained model, may name.
+pub fn any_model_names() -> impl Iterator<Item = &'static str> {
+    TABLE.iter().filter(|c| !c.rigid_only).map(|c| c.name)
+}
+
+/// Whether `method` takes a tolerance (adaptive) rather than a step; false for a name the table
+/// does not know.
+pub fn is_adaptive(method: &str) -> bool {
+    card(method).is_some_and(|c| c.is_adaptive())
+}
+
+/// The classical order of `method` (None for the Taylor method, whose order follows the
+/// tolerance, [`taylor::order_for`], and for a name the table does not know).
 pub fn order(method: &str) -> Option<u32> {
-    Some(match method {
-        "euler" | "symplectic-euler" => 1,
-        "verlet" => 2,
-        "rk4" => 4,
-        "dopri5" | "radau5" => 5,
-        "dop853" => 8,
-        _ => return None,
-    })
+    card(method).and_then(|c| c.order)
 }
 
 /// True when every component is finite.

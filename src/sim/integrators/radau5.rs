@@ -12,10 +12,13 @@
 //! to a real and a complex system): for the ladder N is 2 or 4, where that is simplest and fast.
 //! The dense output is the collocation polynomial itself.
 
+use super::Integrator;
 use super::adaptive::{start_step, trial_step};
 use super::dense_lu::{lu_factor, lu_solve};
 use super::{all_finite, eval, Ode, Stats, StepError, Stepper};
 use num_dual::Dual64;
+use super::card::{Card, ControlKind, Stiffness, Sweep};
+use super::Control;
 
 const SQ6: f64 = 2.449_489_742_783_178;
 /// Collocation nodes c1, c2, c3 = 1.
@@ -86,6 +89,19 @@ fn step_norm<const N: usize, S: Ode<N>>(
     super::rms(&ratio)
 }
 
+
+/// The card of Radau IIA 5 ([`super::card`]).
+pub const CARD: Card = Card {
+    name: "radau5",
+    title: "Radau IIA 5",
+    control: ControlKind::Tolerance,
+    order: Some(5),
+    stiffness: Stiffness::Implicit,
+    rigid_only: false,
+    sweep: Sweep::Tolerances { from: 3, to: 13, per_decade: 1 },
+    penalty_fit: None,
+    stiff_case: Some(Control::Tolerance(1e-10)),
+};
 /// The Radau IIA(5) integrator.
 #[derive(Clone, Debug)]
 pub struct Radau5<const N: usize> {
@@ -195,6 +211,15 @@ impl<const N: usize> Radau5<N> {
             }
         }
         out
+    }
+}
+
+impl<const N: usize> Integrator<N> for Radau5<N> {
+    fn start(t0: f64, y0: [f64; N], control: Control, _order: Option<usize>) -> Option<Self> {
+        match control {
+            Control::Tolerance(rtol) => Some(Radau5::new(t0, y0, rtol)),
+            Control::Fixed(_) => None,
+        }
     }
 }
 

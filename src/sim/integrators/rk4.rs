@@ -3,7 +3,23 @@
 
 use super::fixed::{FixedMethod, FixedStep};
 use super::{eval, Ode};
+use super::card::{Card, ControlKind, Stiffness, Sweep};
+use super::Control;
 
+
+/// The card of classic Runge-Kutta 4 ([`super::card`]).
+pub const CARD: Card = Card {
+    name: "rk4",
+    title: "classic Runge-Kutta 4",
+    control: ControlKind::Step,
+    order: Some(4),
+    // 2√2: |R(i y)| ≤ 1 for R(z) = Σ_{k≤4} z^k/k! exactly while y ≤ 2√2.
+    stiffness: Stiffness::Explicit { oscillation_limit: 2.828_427_124_746_190_3 },
+    rigid_only: false,
+    sweep: Sweep::Steps { first: 0.1, count: 10 },
+    penalty_fit: None,
+    stiff_case: Some(Control::Fixed(1e-3)),
+};
 /// The classic RK4 step.
 #[derive(Clone, Copy, Debug)]
 pub struct Rk4Step;

@@ -5,7 +5,22 @@
 //! symplectic, so the energy error stays bounded instead of drifting as with explicit Euler.
 
 use super::fixed::{FixedStep, SlopeOnlyMethod};
+use super::card::{Card, ControlKind, Stiffness, Sweep};
 
+
+/// The card of symplectic Euler ([`super::card`]).
+pub const CARD: Card = Card {
+    name: "symplectic-euler",
+    title: "symplectic Euler",
+    control: ControlKind::Step,
+    order: Some(1),
+    // 2: the step's matrix on q'' = −ω² q has trace 2 − (h ω)², stable while |trace| ≤ 2.
+    stiffness: Stiffness::Explicit { oscillation_limit: 2.0 },
+    rigid_only: false,
+    sweep: Sweep::Steps { first: 0.01, count: 9 },
+    penalty_fit: None,
+    stiff_case: None,
+};
 /// The symplectic Euler step for a second-order state `[q, v]`.
 #[derive(Clone, Copy, Debug)]
 pub struct SymplecticEulerStep;

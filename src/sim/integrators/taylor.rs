@@ -59,8 +59,10 @@ pub use super::taylor_series::{
     complement_floor_series, complement_series, dot, floor_series, product, reciprocals,
     sin_cos_coefficient, wall_series, FloorScratch,
 };
+use super::{Control, Integrator};
 use super::{all_finite, Ode, Stats, StepError, Stepper};
 use std::cell::Cell;
+use super::card::{Card, ControlKind, Stiffness, Sweep};
 
 /// Lowest order it accepts.
 pub const MIN_ORDER: usize = 2;
@@ -113,6 +115,20 @@ fn least_work_order(tol: f64) -> usize {
     MAX_ORDER
 }
 
+
+/// The card of Taylor series ([`super::card`]).
+pub const CARD: Card = Card {
+    name: "taylor",
+    title: "Taylor series",
+    control: ControlKind::Tolerance,
+    order: None,
+    // Not used: the method runs on the rigid phases only, which have no stiff oscillation.
+    stiffness: Stiffness::Explicit { oscillation_limit: 0.0 },
+    rigid_only: true,
+    sweep: Sweep::Tolerances { from: 3, to: 16, per_decade: 1 },
+    penalty_fit: None,
+    stiff_case: None,
+};
 /// The Taylor-series integrator (adaptive step, order from the tolerance or given).
 #[derive(Clone, Debug)]
 pub struct Taylor<const N: usize> {
@@ -196,6 +212,16 @@ pub fn step_from_orders<const N: usize>(
         }
     }
     (ln_rho + tol.ln() / p as f64 - 0.7 / (p - 1) as f64).exp()
+}
+
+impl<const N: usize> Integrator<N> for Taylor<N> {
+    fn start(t0: f64, y0: [f64; N], control: Control, order: Option<usize>) -> Option<Self> {
+        match (control, order) {
+            (Control::Tolerance(tol), None) => Some(Taylor::new(t0, y0, tol)),
+            (Control::Tolerance(tol), Some(p)) => Some(Taylor::with_order(t0, y0, tol, p)),
+            (Control::Fixed(_), _) => None,
+        }
+    }
 }
 
 impl<const N: usize> Stepper<N> for Taylor<N> {

@@ -23,10 +23,26 @@
 
 use super::fixed::{FixedMethod, FixedStep};
 use super::{eval, Ode};
+use super::card::{Card, ControlKind, Stiffness, Sweep};
+use super::Control;
 
 /// Fixed-point iterations allowed for the implicit half kick.
 const MAX_ITER: usize = 50;
 
+
+/// The card of Störmer-Verlet ([`super::card`]).
+pub const CARD: Card = Card {
+    name: "verlet",
+    title: "Störmer-Verlet",
+    control: ControlKind::Step,
+    order: Some(2),
+    // 2: the step's matrix on q'' = −ω² q has trace 2 − (h ω)², stable while |trace| ≤ 2.
+    stiffness: Stiffness::Explicit { oscillation_limit: 2.0 },
+    rigid_only: false,
+    sweep: Sweep::Steps { first: 0.05, count: 10 },
+    penalty_fit: None,
+    stiff_case: Some(Control::Fixed(1e-3)),
+};
 /// The Störmer-Verlet step for a second-order state `[q, v]`.
 #[derive(Clone, Copy, Debug)]
 pub struct VerletStep;

@@ -10,7 +10,7 @@
 //! the same floating-point numbers, so they are compared exactly.
 
 use sliding_ladder::sim::constrained::{self, Constrained};
-use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Stepper};
 
 const H: f64 = 0.125;

@@ -18,7 +18,7 @@
 
 use proptest::prelude::*;
 use sliding_ladder::sim::fall::{self, Outcome};
-use sliding_ladder::sim::integrators::{is_adaptive, Control, RIGID_METHODS};
+use sliding_ladder::sim::integrators::{is_adaptive, names, Control};
 use sliding_ladder::sim::output::Output;
 use sliding_ladder::sim::rigid::Ladder;
 use sliding_ladder::sim::scene::{ContactModel, End, Scene};
@@ -65,11 +65,7 @@ fn angle_error_and_bound(sc: &Scene, o: &Outcome, tol: f64) -> (f64, f64) {
 }
 
 fn adaptive() -> Vec<&'static str> {
-    RIGID_METHODS
-        .iter()
-        .copied()
-        .filter(|m| is_adaptive(m))
-        .collect()
+    names().filter(|m| is_adaptive(m)).collect()
 }
 
 fn unit_time(l: &Ladder) -> f64 {

@@ -4,8 +4,8 @@
 //! leave every result right to its tolerance (the events fall back to the step's interpolant),
 //! so only a direct comparison sees it (mutation testing: `step_series` → None went unseen).
 
-use sliding_ladder::sim::integrators::any::AnyStepper;
 use sliding_ladder::sim::integrators::taylor::Taylor;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Stepper};
 use sliding_ladder::sim::rigid::{Ladder, WallPhase};
 

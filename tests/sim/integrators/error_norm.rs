@@ -13,7 +13,7 @@
 //! Second, a system that sets no scale is measured relative to its own size.
 
 use num_dual::DualNum;
-use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Ode, StepError, Stepper};
 
 const OMEGA: f64 = 50.0;

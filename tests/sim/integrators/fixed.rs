@@ -4,7 +4,7 @@
 //! the step below 1, where t · h < t < t_stop; a system without a cap takes longer steps.)
 
 use num_dual::DualNum;
-use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Ode, StepError, Stepper};
 
 /// ẏ = 1, no step cap.

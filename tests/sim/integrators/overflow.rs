@@ -10,7 +10,7 @@
 //! sine or cosine is not finite is refused too (the rotor below).
 
 use num_dual::DualNum;
-use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{taylor, Control, Ode, StepError, Stepper};
 
 const SLOPE: f64 = 1e307;

@@ -6,7 +6,7 @@
 //! unseen; only Verlet's count had such a test, `tests/sim/integrators/verlet/step.rs`.)
 
 use num_dual::DualNum;
-use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Ode, Stepper};
 use std::cell::Cell;
 

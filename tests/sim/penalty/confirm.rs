@@ -7,7 +7,7 @@
 use sliding_ladder::report::campaign_judge::out_of_tolerance;
 use sliding_ladder::sim::extreme::linear_lead_in;
 use sliding_ladder::sim::fall;
-use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::Control;
 use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel, OMEGA2};
 use sliding_ladder::sim::penalty_confirm::{

@@ -3,7 +3,7 @@
 //!   [`RESOLVED_WALL_FORCE`]): below it a run can end at a spurious zero of the wall force,
 //!   above it none was seen;
 //!   and its companion for θ0 = 0 with a push, where that force is 0 and only its rate
-//!   Ḟ_w0 counts ([`RESOLVED_WALL_FORCE_RATE`]);
+//!   Ḟ_w0 counts (`resolved_wall_force_rates`);
 //! * springs softer than [`SOFTEST_CONTACT`] (`sim::scene_checks`): the foot lifts off first.
 //!
 //! The fast test shows runs on each side of the first (`tests/sim/scene/work.rs` of the second);
@@ -18,7 +18,7 @@ use sliding_ladder::sim::penalty_confirm::{rigid_separation_angle, separation_bo
 use sliding_ladder::sim::penalty_run::separation;
 use sliding_ladder::sim::scene::SOFTEST_CONTACT;
 use sliding_ladder::sim::scene_work::{
-    starting_wall_force, wall_force_rate, RESOLVED_WALL_FORCE, RESOLVED_WALL_FORCE_RATE,
+    resolved_wall_force_rates, starting_wall_force, wall_force_rate, RESOLVED_WALL_FORCE,
 };
 use std::f64::consts::FRAC_PI_2;
 
@@ -136,12 +136,18 @@ fn pushes_from_zero_give_no_spurious_zero_within_a_factor_3_of_the_limit() {
         eprintln!("skipped: set LADDER_SLOW=1");
         return;
     }
+    let rates = resolved_wall_force_rates();
+    assert_eq!(
+        rates.len(),
+        2,
+        "the sweep below was set for dopri5 and dop853: {rates:?}"
+    );
     let mut rng = ChaCha8Rng::seed_from_u64(8);
     // Per method: (largest Ḟ_w0/τ with a spurious zero, spurious, runs, refused but fine).
     let mut seen = [(0.0f64, 0, 0, 0); 2];
     for _ in 0..4000 {
         let m = rng.gen_range(0..2);
-        let (method, need) = RESOLVED_WALL_FORCE_RATE[m];
+        let (method, need) = rates[m];
         let kappa = 10f64.powf(rng.gen_range(0.7..10.0));
         let gamma = match rng.gen_bool(0.5) {
             true => 0.0,
@@ -167,7 +173,7 @@ fn pushes_from_zero_give_no_spurious_zero_within_a_factor_3_of_the_limit() {
         s.3 += usize::from(r == Seen::Fine && growth / tol < need);
     }
     for (m, (worst, spurious, runs, fine_refused)) in seen.into_iter().enumerate() {
-        let (method, need) = RESOLVED_WALL_FORCE_RATE[m];
+        let (method, need) = rates[m];
         eprintln!("{method}: {runs} runs, {spurious} spurious zeros, the largest at Ḟ_w0/τ = {worst:.3}; {fine_refused} runs below the limit {need} were fine");
         assert!(
             spurious > 0,

@@ -7,7 +7,7 @@
 //! the scene's tolerance is shown failing (so each case fails without the retry).
 
 use sliding_ladder::sim::fall;
-use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Stats};
 use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel};
 use sliding_ladder::sim::penalty_run::{separate_with, separation, PenaltyRun};

@@ -17,8 +17,8 @@
 //! and τ = 1e-13 for radau5's. The mid-step pairing, written out below as the method it was,
 //! must break that bound from the same starts: that is the check failing on the defect.
 
-use sliding_ladder::sim::integrators::any::AnyStepper;
 use sliding_ladder::sim::integrators::fixed::{FixedMethod, FixedStep};
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{eval, Control, Ode, Stepper};
 use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel};
 use sliding_ladder::sim::penalty_confirm::{rigid_separation_angle, separation_bound};

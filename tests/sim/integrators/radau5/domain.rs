@@ -9,7 +9,7 @@
 //! rejection's step size, which no test reached).
 
 use num_dual::DualNum;
-use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Ode, StepError, Stepper};
 
 /// ẏ = −y for t < 1, −k y after; NaN below y = 0.

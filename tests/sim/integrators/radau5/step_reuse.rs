@@ -9,7 +9,7 @@
 //! So did `!keep_jac` → `keep_jac`, which dropped the Jacobian exactly when Newton contracted.)
 
 use num_dual::DualNum;
-use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Ode, Stepper};
 
 /// ẏ = −y: linear, so Newton's first iterate solves each step's system exactly.

@@ -8,8 +8,8 @@
 
 use sliding_ladder::sim::complement::{ComplementFloor, ComplementWall};
 use sliding_ladder::sim::floor::{state_at_separation, FloorPhase};
-use sliding_ladder::sim::integrators::any::AnyStepper;
 use sliding_ladder::sim::integrators::taylor::Taylor;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Ode, Stepper};
 use sliding_ladder::sim::rigid::{Ladder, WallPhase};
 

@@ -7,7 +7,7 @@
 //! same roundings as the formula: 2 ulps allowed.
 
 use num_dual::DualNum;
-use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Ode, Stepper};
 
 /// Two oscillators, ẍ = −x and ÿ = −4y: the accelerations differ, and neither uses a velocity.

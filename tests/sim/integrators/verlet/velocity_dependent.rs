@@ -15,7 +15,7 @@
 
 use num_dual::DualNum;
 use sliding_ladder::report::work_precision_fit::line_fit;
-use sliding_ladder::sim::integrators::any::AnyStepper;
+use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Ode, Stepper};
 
 const B: f64 = 2.0;
