@@ -1,6 +1,7 @@
 //! `sim::integrators`: every method against known solutions, its step rules and counters.
 
 mod any;
+mod card;
 mod convergence;
 mod error_norm;
 mod fixed;
