@@ -228,8 +228,20 @@ fn start_angle(rng: &mut ChaCha8Rng) -> f64 {
     }
 }
 
-/// Scene `index` of the campaign with `seed`, as TOML text.
+/// Scene `index` of the campaign with `seed`, as TOML text, among today's methods.
 pub fn draw(seed: u64, index: u64) -> String {
+    draw_among(seed, index, true)
+}
+
+/// Scene `index` as it was first drawn and published, among [`FIRST_METHODS`] only: the scene
+/// the lab notebook and the regression tests cite by index, whatever methods have been added
+/// to the table since (which may win that index in [`draw`]).
+pub fn draw_first(seed: u64, index: u64) -> String {
+    draw_among(seed, index, false)
+}
+
+/// [`draw`], or [`draw_first`] when `newcomers` is false.
+fn draw_among(seed: u64, index: u64, newcomers: bool) -> String {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     rng.set_stream(index);
     let rng = &mut rng;
@@ -275,7 +287,12 @@ pub fn draw(seed: u64, index: u64) -> String {
     );
     let first = &FIRST_METHODS[..if penalty { 7 } else { 9 }];
     let pick = rng.gen_range(0..first.len());
-    let method = pick_method(seed, index, first, pick, &methods(penalty));
+    let current = if newcomers {
+        methods(penalty)
+    } else {
+        first.to_vec()
+    };
+    let method = pick_method(seed, index, first, pick, &current);
     if penalty {
         let kappa = exp10(rng, 0.0, 12.0);
         let gamma = match rng.gen_bool(0.5) {
@@ -346,14 +363,13 @@ pub fn draw(seed: u64, index: u64) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{methods, pick_method, FIRST_METHODS};
+    use super::{pick_method, FIRST_METHODS};
 
     /// With the table as first published every scene keeps its first draw; a method added
     /// later takes over only scenes it wins (every other keeps its method), about its share.
     #[test]
     fn pick_method_moves_only_the_scenes_a_new_method_wins() {
         let first = &FIRST_METHODS[..];
-        assert_eq!(methods(false), first, "the table is still the first one");
         for i in 0..1000 {
             let k = (i as usize * 7) % first.len();
             assert_eq!(pick_method(1, i, first, k, first), first[k]);

@@ -136,11 +136,6 @@ fn is_implicit(method: &str) -> bool {
     card(method).is_some_and(|c| c.is_implicit())
 }
 
-/// Whether `method` gains energy on every oscillation (its card says so).
-fn gains_energy(method: &str) -> bool {
-    card(method).is_some_and(|c| c.gains_energy_on_oscillations())
-}
-
 /// The rate of the rigid wall force (m g per √(l/g)) at (θ, θ̇) (dimensionless) along the
 /// motion (5), θ̈ = Ω² sin θ: θ̇ (Ω² − θ̇²) at θ = 0. By a dual number through
 /// [`rigid_forces`], so that it cannot drift from the force itself.
@@ -268,13 +263,18 @@ pub(super) fn check_work(
         );
         match control {
             Control::Fixed(h) => {
-                let (limit, why) = if gains_energy(method) {
-                    (
+                let (limit, why) = match card(method).filter(|c| c.gains_energy_on_oscillations()) {
+                    Some(c) => (
                         (0.02 / (omega * omega * t_s)).min(MAX_STEP_FREQUENCY / omega),
-                        "explicit Euler gains energy by (h ω)² a step",
-                    )
-                } else {
-                    (MAX_STEP_FREQUENCY / omega, "h ω ≤ 0.2 to follow them")
+                        format!(
+                            "{} gains energy on every oscillation, by up to (h ω)² a step",
+                            c.title
+                        ),
+                    ),
+                    None => (
+                        MAX_STEP_FREQUENCY / omega,
+                        "h ω ≤ 0.2 to follow them".into(),
+                    ),
                 };
                 if h / unit > limit {
                     return Err(cx.err(

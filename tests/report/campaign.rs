@@ -2,7 +2,7 @@
 //! draw covers the whole domain and writes scenes the parser reads back exactly, the flat-time
 //! reference agrees with a tight integration, and the judge rejects wrong results.
 
-use sliding_ladder::report::campaign::{draw, methods as scene_methods, selected};
+use sliding_ladder::report::campaign::{draw, draw_first, methods as scene_methods, selected};
 use sliding_ladder::report::campaign_judge::{non_finite, out_of_tolerance, Problem};
 use sliding_ladder::sim::exact::flat::floor_duration;
 use sliding_ladder::sim::fall::{self, Outcome};
@@ -217,16 +217,16 @@ fn the_contact_filter_leaves_out_exactly_one_model() {
     );
     // Scene 857 (dop853 at a tolerance of 2.8e-16 on stiff springs, finding F6) is now refused
     // up front: the plan counts the accuracy-bound steps.
-    let refused = parse("drawn.toml", &draw(1, 857)).expect_err("F6 is refused");
+    let refused = parse("drawn.toml", &draw_first(1, 857)).expect_err("F6 is refused");
     assert_eq!(refused.field, "integrator.method");
     // F3's scenes 69, 129 and 418 (starts near π/2 whose springs cannot tell separation from
     // flat) are refused up front too (`sim::penalty_plan`).
     for i in [69, 129, 418] {
-        let refused = parse("drawn.toml", &draw(1, i)).expect_err("F3 is refused");
+        let refused = parse("drawn.toml", &draw_first(1, i)).expect_err("F3 is refused");
         assert_eq!(refused.field, "contact.stiffness", "scene {i}");
     }
     for i in [328, 427, 514, 769, 858] {
-        let s = parse("drawn.toml", &draw(1, i)).expect("a valid scene");
+        let s = parse("drawn.toml", &draw_first(1, i)).expect("a valid scene");
         assert!(!selected(&s.contact, Some("rigid")), "scene {i}");
         assert!(selected(&s.contact, Some("penalty")), "scene {i}");
     }

@@ -97,6 +97,10 @@ pub struct Card {
     /// method's is (by the tolerance, or by the scene's `order` key, which only such a method
     /// takes).
     pub order: Option<u32>,
+    /// The order of its dense output (the interpolant between steps): the cubic Hermite
+    /// polynomial of the fixed-step methods gives min(order, 4). None when it is chosen per
+    /// run, as [`Card::order`].
+    pub dense_order: Option<u32>,
     /// Its behaviour on stiff oscillations.
     pub stiffness: Stiffness,
     /// Whether it needs the model's Taylor recursions, which only the rigid wall and floor

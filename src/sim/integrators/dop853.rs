@@ -49,6 +49,8 @@ pub const CARD: Card = Card {
     title: "Dormand-Prince 8(5,3)",
     control: ControlKind::Tolerance,
     order: Some(8),
+    // dop853.f: "dense output of order 7".
+    dense_order: Some(7),
     // 5.96: the stability function 1 + z bᵀ(I − zA)⁻¹1 of the 12-stage tableau has |R(i y)| ≤ 1 up
     // to y ≈ 5.96 (computed from SciPy's copy of the same coefficients).
     stiffness: Stiffness::Explicit { oscillation_limit: 5.96 },

@@ -87,6 +87,8 @@ pub const CARD: Card = Card {
     title: "Dormand-Prince 5(4)",
     control: ControlKind::Tolerance,
     order: Some(5),
+    // dopri5.f: "dense output of order 4".
+    dense_order: Some(4),
     // 0.997: R(z) = Σ_{k≤5} z^k/k! + z⁶/600 has |R(i y)| ≤ 1 only up to y ≈ 0.997
     // (`tests/sim/integrators/card.rs` holds it).
     stiffness: Stiffness::Explicit { oscillation_limit: 0.997 },

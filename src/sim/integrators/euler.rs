@@ -10,6 +10,7 @@ pub const CARD: Card = Card {
     title: "explicit Euler",
     control: ControlKind::Step,
     order: Some(1),
+    dense_order: Some(1),
     // 0: |1 + i h ω| > 1 for every step, so Euler gains energy on any oscillation.
     stiffness: Stiffness::Explicit { oscillation_limit: 0.0 },
     rigid_only: false,

@@ -96,6 +96,8 @@ pub const CARD: Card = Card {
     title: "Radau IIA 5",
     control: ControlKind::Tolerance,
     order: Some(5),
+    // The collocation polynomial of degree 3 (stage order 3).
+    dense_order: Some(4),
     stiffness: Stiffness::Implicit,
     rigid_only: false,
     sweep: Sweep::Tolerances { from: 3, to: 13, per_decade: 1 },

@@ -13,6 +13,7 @@ pub const CARD: Card = Card {
     title: "classic Runge-Kutta 4",
     control: ControlKind::Step,
     order: Some(4),
+    dense_order: Some(4),
     // 2√2: |R(i y)| ≤ 1 for R(z) = Σ_{k≤4} z^k/k! exactly while y ≤ 2√2.
     stiffness: Stiffness::Explicit { oscillation_limit: 2.828_427_124_746_190_3 },
     rigid_only: false,

@@ -14,6 +14,7 @@ pub const CARD: Card = Card {
     title: "symplectic Euler",
     control: ControlKind::Step,
     order: Some(1),
+    dense_order: Some(1),
     // 2: the step's matrix on q'' = −ω² q has trace 2 − (h ω)², stable while |trace| ≤ 2.
     stiffness: Stiffness::Explicit { oscillation_limit: 2.0 },
     rigid_only: false,

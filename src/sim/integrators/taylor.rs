@@ -122,6 +122,8 @@ pub const CARD: Card = Card {
     title: "Taylor series",
     control: ControlKind::Tolerance,
     order: None,
+    // Its step's own polynomial, of the order the run chooses.
+    dense_order: None,
     // Not used: the method runs on the rigid phases only, which have no stiff oscillation.
     stiffness: Stiffness::Explicit { oscillation_limit: 0.0 },
     rigid_only: true,

@@ -36,6 +36,7 @@ pub const CARD: Card = Card {
     title: "Störmer-Verlet",
     control: ControlKind::Step,
     order: Some(2),
+    dense_order: Some(2),
     // 2: the step's matrix on q'' = −ω² q has trace 2 − (h ω)², stable while |trace| ≤ 2.
     stiffness: Stiffness::Explicit { oscillation_limit: 2.0 },
     rigid_only: false,

@@ -248,9 +248,9 @@ fn the_judge_holds_a_penalty_separation_to_the_contacts_error_model() {
 /// from 1e-7 below flat: both separate between the start and flat, within the judge's bound.
 #[test]
 fn penalty_starts_near_the_floor_are_refused_or_right() {
-    use sliding_ladder::report::campaign::draw;
+    use sliding_ladder::report::campaign::draw_first;
     for i in [69, 129, 418] {
-        let e = parse("s.toml", &draw(1, i)).expect_err("refused");
+        let e = parse("s.toml", &draw_first(1, i)).expect_err("refused");
         assert_eq!(e.field, "contact.stiffness", "scene {i}");
         assert!(
             e.to_string()
@@ -267,7 +267,7 @@ fn penalty_starts_near_the_floor_are_refused_or_right() {
         "1e-12",
     );
     for sc in [
-        parse("s.toml", &draw(1, 514)).expect("scene 514 runs"),
+        parse("s.toml", &draw_first(1, 514)).expect("scene 514 runs"),
         parse("s.toml", &stiff).expect("runs"),
     ] {
         let o = fall::run(&sc, fall::MAX_STEPS).expect("separates");

@@ -91,7 +91,10 @@ fn cases() -> Vec<(&'static str, String, String)> {
         (
             "unknown method",
             with("method = \"dop853\"", "method = \"rk45\""),
-            s("scene.toml:11: [integrator] method: unknown method \"rk45\"; allowed: euler, symplectic-euler, verlet, rk4, dopri5, dop853, radau5, taylor, exact"),
+            format!(
+                "scene.toml:11: [integrator] method: unknown method \"rk45\"; allowed: {}, exact",
+                sliding_ladder::sim::integrators::names().collect::<Vec<_>>().join(", ")
+            ),
         ),
         (
             "duplicate key",
