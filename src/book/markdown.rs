@@ -148,8 +148,11 @@ pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
                 }));
             }
             Event::Html(h) | Event::InlineHtml(h) => {
-                // The sources hold no raw HTML; should one appear it is shown, not obeyed.
-                out.push(Event::Text(h));
+                // A comment is a marker for the doc harness (`<!-- worked-example N -->`,
+                // [`crate::docs`]): not for the reader. Any other raw HTML is shown, not obeyed.
+                if !is_comment(&h) {
+                    out.push(Event::Text(h));
+                }
             }
             other => out.push(other),
         }
@@ -157,6 +160,12 @@ pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
     let mut html_out = String::new();
     html::push_html(&mut html_out, out.into_iter());
     (html_out, problems)
+}
+
+/// True when `html` is one whole HTML comment (`<!-- … -->`, surrounding blanks allowed).
+fn is_comment(html: &str) -> bool {
+    let t = html.trim();
+    t.starts_with("<!--") && t.ends_with("-->") && !t[4..t.len() - 3].contains("-->")
 }
 
 /// The links of a markdown table section (e.g. the contents of `README.md`), in order.
@@ -176,4 +185,32 @@ pub fn title_of(src: &str) -> String {
         .find(|l| l.starts_with("# "))
         .unwrap_or("# Untitled");
     line.trim_start_matches("# ").trim().to_string()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn plain(src: &str) -> String {
+        let hooks = Hooks {
+            display: &|_, _| None,
+            link: &|d, _| Some(d.to_string()),
+        };
+        let (html, problems) = render("t.md", src, &hooks);
+        assert!(problems.is_empty(), "{problems:?}");
+        html
+    }
+
+    #[test]
+    fn a_harness_comment_is_not_shown_and_other_html_is_shown_as_text() {
+        let html = plain("Before.\n\n<!-- worked-example 25 -->\nInside.\n<!-- end worked-example -->\n\nAfter.\n");
+        assert!(!html.contains("worked-example"), "{html}");
+        assert!(
+            html.contains("Inside.") && html.contains("After."),
+            "{html}"
+        );
+        let html = plain("A <b>bold</b> claim.\n");
+        assert!(html.contains("&lt;b&gt;bold&lt;/b&gt;"), "{html}");
+        assert!(!is_comment("<!-- a --> <b>x</b> <!-- b -->"));
+    }
 }
