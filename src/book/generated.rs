@@ -52,7 +52,7 @@ pub fn index_page(data: &BookData, home: &BTreeMap<u32, String>, readme: &str) -
 
 fn block(latex: &str, what: &str, problems: &mut Vec<String>) -> String {
     match mathml(latex, true) {
-        Ok(m) => m,
+        Ok(m) => format!("<div class=\"display\"><div class=\"formula\">{m}</div></div>"),
         Err(e) => {
             problems.push(format!("errata.html: {what}: {e}"));
             "<p class=\"math-error\">[did not typeset]</p>".into()
@@ -113,7 +113,7 @@ symbolically (with s = sin θ, c = cos θ, s² + c² = 1).</p>\n",
             .map(|r| format!(" {}", esc(r.title)))
             .unwrap_or_default();
         out.push_str(&format!(
-            "<section class=\"erratum\" data-erratum=\"{n}\"><h2>{link}{title}</h2>\n<dl>\
+            "<section class=\"erratum\" id=\"erratum-{n}\" data-erratum=\"{n}\"><h2>{link}{title}</h2>\n<dl>\
 <dt>Printed</dt><dd>{p}</dd><dt>Corrected</dt><dd>{c}</dd><dt>Printed − corrected</dt><dd>{d}</dd>\
 <dt>Residual at an exact point</dt><dd>printed {pr}, corrected {cr}</dd><dt>Units</dt><dd>{u}</dd>\
 <dt>Why</dt><dd>{why}</dd></dl></section>\n",

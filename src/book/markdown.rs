@@ -72,7 +72,11 @@ pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
     let mut problems = Vec::new();
     let mut out: Vec<Event> = Vec::with_capacity(events.len());
     let mut pending: Option<u32> = None;
+    let bare = display_only_paragraphs(&events);
     for (i, ev) in events.iter().enumerate() {
+        if bare.contains(&i) {
+            continue;
+        }
         let ev = ev.clone();
         match ev {
             Event::Start(Tag::Heading {
@@ -110,7 +114,9 @@ pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
                         }
                     },
                     None => match mathml(&latex, true) {
-                        Ok(m) => format!("<div class=\"display\">{m}</div>"),
+                        Ok(m) => {
+                            format!("<div class=\"display\"><div class=\"formula\">{m}</div></div>")
+                        }
                         Err(e) => {
                             problems.push(format!("{name}: {e}"));
                             "<p class=\"math-error\">[this display did not typeset]</p>".into()
@@ -160,6 +166,42 @@ pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
     let mut html_out = String::new();
     html::push_html(&mut html_out, out.into_iter());
     (html_out, problems)
+}
+
+/// The indices of the `<p>` and `</p>` of each paragraph that holds nothing but display math:
+/// a display is a block (`<div>`), which HTML does not allow inside `<p>` (a browser would close
+/// the paragraph before it and leave an empty one after).
+fn display_only_paragraphs(events: &[Event]) -> Vec<usize> {
+    let blank = |e: &Event| match e {
+        Event::SoftBreak | Event::HardBreak => true,
+        Event::Text(t) => t.trim().is_empty(),
+        _ => false,
+    };
+    let mut out = Vec::new();
+    for (i, e) in events.iter().enumerate() {
+        if !matches!(e, Event::Start(Tag::Paragraph)) {
+            continue;
+        }
+        let Some(len) = events[i + 1..]
+            .iter()
+            .position(|e| matches!(e, Event::End(TagEnd::Paragraph)))
+        else {
+            continue;
+        };
+        let inner = &events[i + 1..i + 1 + len];
+        let displays = inner
+            .iter()
+            .filter(|e| matches!(e, Event::DisplayMath(_)))
+            .count();
+        if displays > 0
+            && inner
+                .iter()
+                .all(|e| blank(e) || matches!(e, Event::DisplayMath(_)))
+        {
+            out.extend([i, i + 1 + len]);
+        }
+    }
+    out
 }
 
 /// True when `html` is one whole HTML comment (`<!-- … -->`, surrounding blanks allowed).
@@ -212,5 +254,16 @@ mod tests {
         let html = plain("A <b>bold</b> claim.\n");
         assert!(html.contains("&lt;b&gt;bold&lt;/b&gt;"), "{html}");
         assert!(!is_comment("<!-- a --> <b>x</b> <!-- b -->"));
+    }
+
+    #[test]
+    fn a_display_is_not_wrapped_in_a_paragraph_but_inline_math_is() {
+        let html = plain("Text before.\n\n$$\nx = 1\n$$\n\nAnd $y$ inline.\n");
+        assert!(!html.contains("<p><div"), "{html}");
+        assert!(html.contains("<div class=\"display\">"), "{html}");
+        assert!(html.contains("<p>And <math"), "{html}");
+        // A display inside a sentence keeps its paragraph (the sentence is not dropped).
+        let html = plain("We have $$x = 1$$ here.\n");
+        assert!(html.contains("<p>We have"), "{html}");
     }
 }

@@ -1,6 +1,7 @@
-//! Beside each numbered display: its live status from the checks, the forms checked, the
-//! residual and the proof, the Rust functions (file and line), and for an erratum the printed
-//! and corrected forms with their difference.
+//! Below each numbered display, folded (`<details>`, no script): its live status from the
+//! checks, the forms checked, the residual and the proof, the Rust functions (file and line),
+//! and for an erratum the printed and corrected forms with their difference. The display itself
+//! has the page's full width, so a long torque expansion is not squeezed beside the panel.
 
 use super::code::{page_of, Location};
 use super::math::mathml;
@@ -31,7 +32,8 @@ pub struct Function<'a> {
     pub location: Option<Location>,
 }
 
-/// The numbered display (MathML and its number) followed by the panel of its checks.
+/// The numbered display (MathML in a `formula` box, its number beside it) and below it the
+/// folded panel of its checks.
 pub fn numbered_display(
     latex: &str,
     r: &EquationResult,
@@ -42,7 +44,7 @@ pub fn numbered_display(
     let status = status_name(r.status);
     Ok(format!(
         "<div class=\"eq\" id=\"display-{a}\" data-number=\"{n}\" data-status=\"{status}\" data-proved=\"{p}\" data-units=\"{u}\">\n\
-<div class=\"display\">{m}<span class=\"eqno\">{label}</span></div>\n{panel}</div>\n",
+<div class=\"display\"><div class=\"formula\">{m}</div><span class=\"eqno\">{label}</span></div>\n{panel}</div>\n",
         a = anchor(&r.label),
         n = r.number,
         p = r.proved,
@@ -208,8 +210,8 @@ fn panel(
         None => String::new(),
     };
     Ok(format!(
-        "<aside class=\"checks\" aria-label=\"Checks of {}\"><p class=\"status\">{}</p><dl>{dl}</dl>{forms}</aside>\n",
-        esc(&r.label),
-        badges(r)
+        "<details class=\"checks\"><summary><span class=\"status\">{}</span> checks of {}</summary><dl>{dl}</dl>{forms}</details>\n",
+        badges(r),
+        esc(&r.label)
     ))
 }
