@@ -125,16 +125,54 @@ fn erratum_forms(e: &ErratumReport) -> Result<String, String> {
     Ok(format!(
         "<div class=\"erratum-forms\"><dl>\
 <dt>Printed</dt><dd>{}</dd><dt>Corrected</dt><dd>{}</dd>\
-<dt>Printed − corrected</dt><dd>{}</dd>\
-<dt>At an exact point</dt><dd>printed residual {}, corrected {}</dd>\
+<dt>{}</dt><dd>{}</dd>\
+<dt>At an exact point</dt><dd>printed residual {} {u}, corrected {}</dd>\
 <dt>Why</dt><dd>{}</dd></dl></div>",
         m(e.printed)?,
         m(e.corrected)?,
-        m(&e.difference_latex)?,
+        misprint_label(e),
+        misprint(e).map_err(|x| format!("{label}: {x}"))?,
         esc(&e.printed_residual_exact),
         esc(&e.corrected_residual),
-        esc(e.why)
+        esc(e.why),
+        u = esc(&e.residual_unit)
     ))
+}
+
+/// The label of [`misprint`]: what the printed form lost, or (no reading fits) the difference.
+pub fn misprint_label(e: &ErratumReport) -> &'static str {
+    if e.reading_latex.is_some() {
+        "Misprint"
+    } else {
+        "Printed − corrected"
+    }
+}
+
+/// The misprint in physical terms (its formulas as inline MathML), or printed − corrected with
+/// its unit when no reading fits: "lacks a factor m", never "(1 − m)".
+pub fn misprint(e: &ErratumReport) -> Result<String, String> {
+    match &e.reading_latex {
+        Some(md) => markdown_math(md),
+        None => Ok(format!(
+            "{} <small>({})</small>",
+            mathml(&e.difference_latex, false)?,
+            esc(&e.residual_unit)
+        )),
+    }
+}
+
+/// Text with `$…$` math as HTML: the text escaped, each formula as inline MathML.
+pub fn markdown_math(md: &str) -> Result<String, String> {
+    md.split('$')
+        .enumerate()
+        .map(|(i, part)| {
+            if i % 2 == 1 {
+                mathml(part, false)
+            } else {
+                Ok(esc(part))
+            }
+        })
+        .collect()
 }
 
 /// The units verdict: the print's (every printed form in dimensions, the offending sum and form

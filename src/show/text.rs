@@ -354,7 +354,19 @@ fn finish(mut o: String, s: &Shown) -> String {
         let _ = writeln!(o, "  printed:   {}", er.printed);
         let _ = writeln!(o, "  corrected: {}", er.corrected);
         let _ = writeln!(o, "  why: {}", er.why);
-        let _ = writeln!(o, "  printed − corrected: {}", er.difference_text);
+        // In physical terms where a reading fits; a subtraction such as (1 − m) is not one.
+        match &er.reading {
+            Some(r) => {
+                let _ = writeln!(o, "  misprint: {r}");
+            }
+            None => {
+                let _ = writeln!(
+                    o,
+                    "  printed − corrected: {}, in {}",
+                    er.difference_text, er.residual_unit
+                );
+            }
+        }
         let _ = writeln!(o, "  {}", er.units.doc_line().trim_start_matches("- "));
     }
     let _ = writeln!(o, "\ncode");
