@@ -141,6 +141,17 @@ pub fn render(s: &Shown) -> String {
     for h in &st.how {
         let _ = writeln!(o, "  {h}");
     }
+    let ph = &st.phase;
+    let _ = writeln!(
+        o,
+        "  phase: {} (F_w = {} N, F_f = {} N by (14), (15))",
+        ph.phase,
+        short(ph.wall_force),
+        short(ph.floor_force)
+    );
+    for w in &ph.warnings {
+        let _ = writeln!(o, "  warning: {w}");
+    }
     match &st.why_not_exact {
         Some(w) => {
             let _ = writeln!(o, "  exact values: none here: {w}");
