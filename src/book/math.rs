@@ -72,12 +72,11 @@ const FN_SPACE: &str = "<mspace width=\"0.1667em\" />";
 /// The thin space pulldown-latex 0.8.0 (the newest release) writes before a function name such
 /// as `\sin` when it follows an ordinary atom (TeX's Ord–Op space) is written *inside* the
 /// script element when the function is a script's base: `l^2 \sin^2 \theta` comes out as
-/// `<msup><mspace/><mi>sin</mi><mn>2</mn></msup>`, three children where `msup` takes two, and
-/// Chromium draws "sin" as the base's script, i.e. "sin2". The renderer checks for a script
+/// `<msup><mspace/><mi>sin</mi><mn>2</mn></msup>`, three children where `msup` takes two, which
+/// Chromium does not draw as a script: the page read "sin2". The renderer checks for a script
 /// context only *after* writing the space (`Content::Function` in its `mathml.rs`), and the
 /// event stream offers no way to suppress it, so the space is moved here to where TeX puts it:
 /// before the scripted operator, `<mspace/><msup><mi>sin</mi><mn>2</mn></msup>`.
-
 fn space_before_scripted_function(mut out: String) -> String {
     const SCRIPTS: [&str; 6] = ["msup", "msub", "msubsup", "munder", "mover", "munderover"];
     let mut from = 0;
