@@ -20,6 +20,9 @@ pub struct Hooks<'a> {
     /// The book's address for a link of the markdown (`dest`), given the inline code inside
     /// the link, if any (a function path); `None` when it cannot be resolved.
     pub link: &'a dyn Fn(&str, Option<&str>) -> Option<String>,
+    /// The book's address of display N (extensions 1000+k), for references "(N)" in the prose
+    /// ([`super::refs`]); `None` leaves the reference as text.
+    pub equation: &'a dyn Fn(u32) -> Option<String>,
 }
 
 /// The number in a heading `(N) Title` or `(PN) Title` (extension: 1000 + N).
@@ -163,6 +166,7 @@ pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
             other => out.push(other),
         }
     }
+    let out = super::refs::link_references(out, hooks.equation);
     let mut html_out = String::new();
     html::push_html(&mut html_out, out.into_iter());
     (html_out, problems)
@@ -237,6 +241,7 @@ mod tests {
         let hooks = Hooks {
             display: &|_, _| None,
             link: &|d, _| Some(d.to_string()),
+            equation: &|_| None,
         };
         let (html, problems) = render("t.md", src, &hooks);
         assert!(problems.is_empty(), "{problems:?}");
