@@ -52,7 +52,7 @@ pub fn index_page(data: &BookData, home: &BTreeMap<u32, String>, readme: &str) -
 
 fn block(latex: &str, what: &str, problems: &mut Vec<String>) -> String {
     match mathml(latex, true) {
-        Ok(m) => m,
+        Ok(m) => format!("<div class=\"display\"><div class=\"formula\">{m}</div></div>"),
         Err(e) => {
             problems.push(format!("errata.html: {what}: {e}"));
             "<p class=\"math-error\">[did not typeset]</p>".into()
@@ -81,9 +81,14 @@ pub fn errata_page(
     for c in &data.claims {
         let verdict = match (c.holds, c.printed_fails, c.erratum) {
             (true, Some(true), Some((p, k))) => format!(
-                "prose erratum: printed {} fails, corrected {} holds",
+                "prose erratum: printed {} fails, corrected {} holds{}",
                 prose(p),
-                prose(k)
+                prose(k),
+                c.reading_latex
+                    .as_deref()
+                    .and_then(|r| super::panel::markdown_math(r).ok())
+                    .map(|r| format!("; {r}"))
+                    .unwrap_or_default()
             ),
             (true, None, Some((p, k))) => format!(
                 "prose slip (the formula is right): printed {}, meant {}",
@@ -113,15 +118,20 @@ symbolically (with s = sin θ, c = cos θ, s² + c² = 1).</p>\n",
             .map(|r| format!(" {}", esc(r.title)))
             .unwrap_or_default();
         out.push_str(&format!(
-            "<section class=\"erratum\" data-erratum=\"{n}\"><h2>{link}{title}</h2>\n<dl>\
-<dt>Printed</dt><dd>{p}</dd><dt>Corrected</dt><dd>{c}</dd><dt>Printed − corrected</dt><dd>{d}</dd>\
-<dt>Residual at an exact point</dt><dd>printed {pr}, corrected {cr}</dd><dt>Units</dt><dd>{u}</dd>\
+            "<section class=\"erratum\" id=\"erratum-{n}\" data-erratum=\"{n}\"><h2>{link}{title}</h2>\n<dl>\
+<dt>Printed</dt><dd>{p}</dd><dt>Corrected</dt><dd>{c}</dd><dt>{dl}</dt><dd>{d}</dd>\
+<dt>Residual at an exact point (SI units)</dt><dd>printed {pr} {ru}, corrected {cr}</dd><dt>Units</dt><dd>{u}</dd>\
 <dt>Why</dt><dd>{why}</dd></dl></section>\n",
             n = e.number,
             link = eq_link(home, e.number, &label),
             p = block(e.printed, &label, problems),
             c = block(e.corrected, &label, problems),
-            d = block(&e.difference_latex, &label, problems),
+            dl = super::panel::misprint_label(e),
+            d = super::panel::misprint(e).unwrap_or_else(|x| {
+                problems.push(format!("errata.html: {label}: {x}"));
+                "<p class=\"math-error\">[did not typeset]</p>".into()
+            }),
+            ru = esc(&e.residual_unit),
             pr = esc(&e.printed_residual_exact),
             cr = esc(&e.corrected_residual),
             u = esc(e.units.doc_line().trim_start_matches("- ")),

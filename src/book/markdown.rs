@@ -20,6 +20,9 @@ pub struct Hooks<'a> {
     /// The book's address for a link of the markdown (`dest`), given the inline code inside
     /// the link, if any (a function path); `None` when it cannot be resolved.
     pub link: &'a dyn Fn(&str, Option<&str>) -> Option<String>,
+    /// The book's address of display N (extensions 1000+k), for references "(N)" in the prose
+    /// ([`super::refs`]); `None` leaves the reference as text.
+    pub equation: &'a dyn Fn(u32) -> Option<String>,
 }
 
 /// The number in a heading `(N) Title` or `(PN) Title` (extension: 1000 + N).
@@ -72,7 +75,11 @@ pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
     let mut problems = Vec::new();
     let mut out: Vec<Event> = Vec::with_capacity(events.len());
     let mut pending: Option<u32> = None;
+    let bare = display_only_paragraphs(&events);
     for (i, ev) in events.iter().enumerate() {
+        if bare.contains(&i) {
+            continue;
+        }
         let ev = ev.clone();
         match ev {
             Event::Start(Tag::Heading {
@@ -110,7 +117,9 @@ pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
                         }
                     },
                     None => match mathml(&latex, true) {
-                        Ok(m) => format!("<div class=\"display\">{m}</div>"),
+                        Ok(m) => {
+                            format!("<div class=\"display\"><div class=\"formula\">{m}</div></div>")
+                        }
                         Err(e) => {
                             problems.push(format!("{name}: {e}"));
                             "<p class=\"math-error\">[this display did not typeset]</p>".into()
@@ -148,15 +157,61 @@ pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
                 }));
             }
             Event::Html(h) | Event::InlineHtml(h) => {
-                // The sources hold no raw HTML; should one appear it is shown, not obeyed.
-                out.push(Event::Text(h));
+                // A comment is a marker for the doc harness (`<!-- worked-example N -->`,
+                // [`crate::docs`]): not for the reader. Any other raw HTML is shown, not obeyed.
+                if !is_comment(&h) {
+                    out.push(Event::Text(h));
+                }
             }
             other => out.push(other),
         }
     }
+    let out = super::refs::link_references(out, hooks.equation);
     let mut html_out = String::new();
     html::push_html(&mut html_out, out.into_iter());
     (html_out, problems)
+}
+
+/// The indices of the `<p>` and `</p>` of each paragraph that holds nothing but display math:
+/// a display is a block (`<div>`), which HTML does not allow inside `<p>` (a browser would close
+/// the paragraph before it and leave an empty one after).
+fn display_only_paragraphs(events: &[Event]) -> Vec<usize> {
+    let blank = |e: &Event| match e {
+        Event::SoftBreak | Event::HardBreak => true,
+        Event::Text(t) => t.trim().is_empty(),
+        _ => false,
+    };
+    let mut out = Vec::new();
+    for (i, e) in events.iter().enumerate() {
+        if !matches!(e, Event::Start(Tag::Paragraph)) {
+            continue;
+        }
+        let Some(len) = events[i + 1..]
+            .iter()
+            .position(|e| matches!(e, Event::End(TagEnd::Paragraph)))
+        else {
+            continue;
+        };
+        let inner = &events[i + 1..i + 1 + len];
+        let displays = inner
+            .iter()
+            .filter(|e| matches!(e, Event::DisplayMath(_)))
+            .count();
+        if displays > 0
+            && inner
+                .iter()
+                .all(|e| blank(e) || matches!(e, Event::DisplayMath(_)))
+        {
+            out.extend([i, i + 1 + len]);
+        }
+    }
+    out
+}
+
+/// True when `html` is one whole HTML comment (`<!-- … -->`, surrounding blanks allowed).
+fn is_comment(html: &str) -> bool {
+    let t = html.trim();
+    t.starts_with("<!--") && t.ends_with("-->") && !t[4..t.len() - 3].contains("-->")
 }
 
 /// The links of a markdown table section (e.g. the contents of `README.md`), in order.
@@ -176,4 +231,44 @@ pub fn title_of(src: &str) -> String {
         .find(|l| l.starts_with("# "))
         .unwrap_or("# Untitled");
     line.trim_start_matches("# ").trim().to_string()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn plain(src: &str) -> String {
+        let hooks = Hooks {
+            display: &|_, _| None,
+            link: &|d, _| Some(d.to_string()),
+            equation: &|_| None,
+        };
+        let (html, problems) = render("t.md", src, &hooks);
+        assert!(problems.is_empty(), "{problems:?}");
+        html
+    }
+
+    #[test]
+    fn a_harness_comment_is_not_shown_and_other_html_is_shown_as_text() {
+        let html = plain("Before.\n\n<!-- worked-example 25 -->\nInside.\n<!-- end worked-example -->\n\nAfter.\n");
+        assert!(!html.contains("worked-example"), "{html}");
+        assert!(
+            html.contains("Inside.") && html.contains("After."),
+            "{html}"
+        );
+        let html = plain("A <b>bold</b> claim.\n");
+        assert!(html.contains("&lt;b&gt;bold&lt;/b&gt;"), "{html}");
+        assert!(!is_comment("<!-- a --> <b>x</b> <!-- b -->"));
+    }
+
+    #[test]
+    fn a_display_is_not_wrapped_in_a_paragraph_but_inline_math_is() {
+        let html = plain("Text before.\n\n$$\nx = 1\n$$\n\nAnd $y$ inline.\n");
+        assert!(!html.contains("<p><div"), "{html}");
+        assert!(html.contains("<div class=\"display\">"), "{html}");
+        assert!(html.contains("<p>And <math"), "{html}");
+        // A display inside a sentence keeps its paragraph (the sentence is not dropped).
+        let html = plain("We have $$x = 1$$ here.\n");
+        assert!(html.contains("<p>We have"), "{html}");
+    }
 }

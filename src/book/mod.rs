@@ -19,6 +19,7 @@ pub mod markdown;
 pub mod math;
 pub mod pages;
 pub mod panel;
+pub mod refs;
 pub mod site;
 mod write;
 

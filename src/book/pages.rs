@@ -52,8 +52,12 @@ pub fn page(title: &str, depth: usize, nav: &[NavItem], current: &str, body: &st
     )
 }
 
-/// The stylesheet: readable on a phone (one column below 48em), printable (no navigation, no
-/// backgrounds, displays kept whole).
+/// The stylesheet: readable on a phone, printable (no navigation, no backgrounds, displays kept
+/// whole). Each display has the column's full width, its number beside it and its checks folded
+/// below; an aligned display (`aligned`, which pulldown-latex writes as an `mtable` of class
+/// `menv-alignlike`) has its columns right- and left-aligned in turn, so every line meets at its
+/// "=" (MathML Core centres table cells by default). The math font is named, so widths are the
+/// same wherever the fonts are installed (Debian: fonts-dejavu-extra).
 pub const STYLE: &str = r#"
 :root { --ink: #1b1b1b; --muted: #555; --rule: #d0d0d0; --ok: #1a7f37; --bad: #b42318;
   --def: #4a5d8a; --err: #9a6700; --bg-aside: #f6f7f9; }
@@ -75,13 +79,19 @@ th, td { border: 1px solid var(--rule); padding: .25em .5em; text-align: left; v
 img { max-width: 100%; height: auto; }
 figure { margin: 1.2em 0; }
 figcaption { color: var(--muted); font-size: .95em; }
-math { font-size: 1.1em; }
-.eq { display: flex; flex-wrap: wrap; gap: .6em 1.5em; align-items: flex-start; margin: .8em 0; }
-.display { flex: 1 1 24em; display: flex; align-items: center; gap: 1em; overflow-x: auto; }
-.display math { flex: 1; }
-.eqno { white-space: nowrap; }
-.checks { flex: 1 1 18em; background: var(--bg-aside); border-left: 3px solid var(--rule);
-  padding: .4em .8em; font: 13px/1.45 system-ui, sans-serif; }
+math { font-size: 1.1em;
+  font-family: "DejaVu Math TeX Gyre", "Latin Modern Math", "STIX Two Math", math; }
+.eq { margin: .8em 0 1.2em; }
+.display { display: flex; align-items: center; gap: 1em; }
+.formula { flex: 1 1 auto; min-width: 0; overflow-x: auto; }
+.eqno { flex: none; white-space: nowrap; }
+mtd { padding: 0; }
+mtable.menv-alignlike > mtr > mtd:nth-child(odd) { text-align: right; text-align: -webkit-right; }
+mtable.menv-alignlike > mtr > mtd:nth-child(even) { text-align: left; text-align: -webkit-left; }
+mtable.menv-align > mtr > mtd:nth-child(2n + 3) { padding-left: 1em; }
+.checks { background: var(--bg-aside); border-left: 3px solid var(--rule); margin-top: .3em;
+  padding: .2em .8em; font: 13px/1.45 system-ui, sans-serif; }
+.checks summary { cursor: pointer; color: var(--muted); }
 .checks dl { margin: .3em 0; display: grid; grid-template-columns: max-content 1fr; gap: .15em .6em; }
 .checks dt { color: var(--muted); }
 .checks dd { margin: 0; overflow-wrap: anywhere; }
@@ -91,15 +101,14 @@ math { font-size: 1.1em; }
 .badge.definition { background: var(--def); }
 .badge.erratum { background: var(--err); }
 .badge.failed { background: var(--bad); }
-section.erratum dl { display: grid; grid-template-columns: max-content 1fr; gap: .3em 1em; align-items: center; }
-section.erratum dt { color: var(--muted); font: 14px/1.4 system-ui, sans-serif; }
-section.erratum dd { margin: 0; }
+section.erratum dt { color: var(--muted); font: 14px/1.4 system-ui, sans-serif; margin-top: .5em; }
+section.erratum dd { margin: 0 0 0 1em; }
 section.erratum math[display="block"] { text-align: left; }
 .erratum-forms { border-left: 3px solid var(--err); padding-left: .6em; }
 .source .line { display: block; white-space: pre; }
 .source .ln { display: inline-block; width: 4em; color: #999; text-decoration: none; user-select: none; }
 .source .line:target { background: #fff3b0; }
-@media (max-width: 48em) { body { font-size: 16px; } .checks { border-left: 0; border-top: 3px solid var(--rule); } }
+@media (max-width: 48em) { body { font-size: 16px; } }
 @media print { header, footer { display: none; } main { max-width: none; } .eq, figure, tr { break-inside: avoid; }
   a { color: inherit; text-decoration: none; } .checks { background: none; } }
 "#;

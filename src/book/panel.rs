@@ -1,6 +1,7 @@
-//! Beside each numbered display: its live status from the checks, the forms checked, the
-//! residual and the proof, the Rust functions (file and line), and for an erratum the printed
-//! and corrected forms with their difference.
+//! Below each numbered display, folded (`<details>`, no script): its live status from the
+//! checks, the forms checked, the residual and the proof, the Rust functions (file and line),
+//! and for an erratum the printed and corrected forms with their difference. The display itself
+//! has the page's full width, so a long torque expansion is not squeezed beside the panel.
 
 use super::code::{page_of, Location};
 use super::math::mathml;
@@ -31,7 +32,8 @@ pub struct Function<'a> {
     pub location: Option<Location>,
 }
 
-/// The numbered display (MathML and its number) followed by the panel of its checks.
+/// The numbered display (MathML in a `formula` box, its number beside it) and below it the
+/// folded panel of its checks.
 pub fn numbered_display(
     latex: &str,
     r: &EquationResult,
@@ -42,7 +44,7 @@ pub fn numbered_display(
     let status = status_name(r.status);
     Ok(format!(
         "<div class=\"eq\" id=\"display-{a}\" data-number=\"{n}\" data-status=\"{status}\" data-proved=\"{p}\" data-units=\"{u}\">\n\
-<div class=\"display\">{m}<span class=\"eqno\">{label}</span></div>\n{panel}</div>\n",
+<div class=\"display\"><div class=\"formula\">{m}</div><span class=\"eqno\">{label}</span></div>\n{panel}</div>\n",
         a = anchor(&r.label),
         n = r.number,
         p = r.proved,
@@ -123,16 +125,54 @@ fn erratum_forms(e: &ErratumReport) -> Result<String, String> {
     Ok(format!(
         "<div class=\"erratum-forms\"><dl>\
 <dt>Printed</dt><dd>{}</dd><dt>Corrected</dt><dd>{}</dd>\
-<dt>Printed − corrected</dt><dd>{}</dd>\
-<dt>At an exact point</dt><dd>printed residual {}, corrected {}</dd>\
+<dt>{}</dt><dd>{}</dd>\
+<dt>At an exact point</dt><dd>printed residual {} {u}, corrected {}</dd>\
 <dt>Why</dt><dd>{}</dd></dl></div>",
         m(e.printed)?,
         m(e.corrected)?,
-        m(&e.difference_latex)?,
+        misprint_label(e),
+        misprint(e).map_err(|x| format!("{label}: {x}"))?,
         esc(&e.printed_residual_exact),
         esc(&e.corrected_residual),
-        esc(e.why)
+        esc(e.why),
+        u = esc(&e.residual_unit)
     ))
+}
+
+/// The label of [`misprint`]: what the printed form lost, or (no reading fits) the difference.
+pub fn misprint_label(e: &ErratumReport) -> &'static str {
+    if e.reading_latex.is_some() {
+        "Misprint"
+    } else {
+        "Printed − corrected"
+    }
+}
+
+/// The misprint in physical terms (its formulas as inline MathML), or printed − corrected with
+/// its unit when no reading fits: "lacks a factor m", never "(1 − m)".
+pub fn misprint(e: &ErratumReport) -> Result<String, String> {
+    match &e.reading_latex {
+        Some(md) => markdown_math(md),
+        None => Ok(format!(
+            "{} <small>({})</small>",
+            mathml(&e.difference_latex, false)?,
+            esc(&e.residual_unit)
+        )),
+    }
+}
+
+/// Text with `$…$` math as HTML: the text escaped, each formula as inline MathML.
+pub fn markdown_math(md: &str) -> Result<String, String> {
+    md.split('$')
+        .enumerate()
+        .map(|(i, part)| {
+            if i % 2 == 1 {
+                mathml(part, false)
+            } else {
+                Ok(esc(part))
+            }
+        })
+        .collect()
 }
 
 /// The units verdict: the print's (every printed form in dimensions, the offending sum and form
@@ -208,8 +248,8 @@ fn panel(
         None => String::new(),
     };
     Ok(format!(
-        "<aside class=\"checks\" aria-label=\"Checks of {}\"><p class=\"status\">{}</p><dl>{dl}</dl>{forms}</aside>\n",
-        esc(&r.label),
-        badges(r)
+        "<details class=\"checks\"><summary><span class=\"status\">{}</span> checks of {}</summary><dl>{dl}</dl>{forms}</details>\n",
+        badges(r),
+        esc(&r.label)
     ))
 }

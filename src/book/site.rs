@@ -184,9 +184,18 @@ pub fn build(root: &Path, data: &BookData) -> Built {
         ))
     };
     let link = |dest: &str, text: Option<&str>| resolve(root, "equations", dest, text, &code);
+    let equation = |n: u32| {
+        let page = home.get(&n)?;
+        let anchor = match n.checked_sub(crate::registry::EXTENSION_BASE) {
+            Some(k) if k > 0 => format!("eq-P{k}"),
+            _ => format!("eq-{n}"),
+        };
+        Some(format!("{page}#{anchor}"))
+    };
     let hooks = Hooks {
         display: &display,
         link: &link,
+        equation: &equation,
     };
     let mut out: Vec<BookFile> = Vec::new();
     let mut bodies: BTreeMap<String, String> = BTreeMap::new();
@@ -251,6 +260,7 @@ pub fn build(root: &Path, data: &BookData) -> Built {
         let hooks = Hooks {
             display: &display,
             link: &link,
+            equation: &equation,
         };
         let (body, p) = render(&d.file, &d.source, &hooks);
         problems.extend(p);

@@ -80,7 +80,13 @@ pub fn errata_command(json_out: bool, cfg: &Config, columns: usize) -> ExitCode 
                     read(corrected)
                 );
             }
-            if let Some(d) = &c.difference_latex {
+            if let Some(r) = &c.reading_latex {
+                say!(
+                    "  {:<16}   misprint: {}   (for any state; the correction is proved symbolically)",
+                    "",
+                    crate::verify::errata_reading::plain(r)
+                );
+            } else if let Some(d) = &c.difference_latex {
                 say!(
                     "  {:<16}   printed − corrected = {}   (for any state; the correction is proved symbolically)",
                     "",
@@ -144,33 +150,39 @@ pub fn misprint_text(list: &[ErratumReport]) -> String {
         out += &format!("     corrected: {}\n", unicode(r.corrected));
         out += &format!("     why: {}\n", r.why);
         let ladder = r.point.iter().any(|(n, _)| n == "sin θ");
-        out += &format!(
-            "     printed − corrected = {}   ({}; for any state)\n",
-            unicode(&r.difference_latex),
-            if ladder {
-                "s = sin θ, c = cos θ"
-            } else {
-                "per particle: the term of particle 1 of the sum"
-            }
-        );
+        let legend = if ladder {
+            "s = sin θ, c = cos θ"
+        } else {
+            "per particle: the term of particle 1 of the sum"
+        };
+        // In physical terms where a reading fits; a subtraction such as (1 − m) is not one.
+        out += &match &r.reading {
+            Some(reading) => format!("     misprint: {reading}   ({legend}; for any state)\n"),
+            None => format!(
+                "     printed − corrected = {}, in {}   ({legend}; for any state)\n",
+                unicode(&r.difference_latex),
+                r.residual_unit
+            ),
+        };
         let minus = |s: &str| s.replace('-', "−");
         let point: Vec<String> = r
             .point
             .iter()
             .map(|(n, v)| format!("{n} = {}", minus(v)))
             .collect();
-        out += &format!("     at the exact point {}:\n", point.join(", "));
+        out += &format!("     at the exact point (SI units) {}:\n", point.join(", "));
         let of = r
             .residual_component
             .map(|c| format!(" ({c} component)"))
             .unwrap_or_default();
         out += &format!(
-            "       residual{of}: {which} as printed − '{}' = {} (≈ {}); corrected − '{}' = {}\n",
+            "       residual{of}: {which} as printed − '{}' = {} {u} (≈ {} {u}); corrected − '{}' = {}\n",
             r.residual_against,
             minus(&r.printed_residual_exact),
             minus(&approx(r.printed_residual)),
             r.residual_against,
-            minus(&r.corrected_residual)
+            minus(&r.corrected_residual),
+            u = r.residual_unit
         );
         out += &format!("     {}\n", r.units.doc_line().trim_start_matches("- "));
         if r.units.printed != r.units.printed_code {

@@ -32,6 +32,7 @@ pub mod poly;
 mod si_unit;
 mod sym_factor;
 mod sym_print;
+mod sym_reading;
 mod symbolic;
 
 pub use bound::{Bound, UNIT_ROUNDOFF};
@@ -40,8 +41,9 @@ pub use degree::Degree;
 pub use dimension::{Clash, Dim, Dimension, Exponent, Inconsistency};
 pub use jet::Jet;
 pub use modp::{Modp, MODULUS};
-pub use sym_factor::{factored_latex, factored_text};
+pub use sym_factor::{factored_latex, factored_text, Factored};
 pub use sym_print::{latex, text};
+pub use sym_reading::{reading, Reading};
 pub use symbolic::{Den, Sym};
 
 use num_bigint::BigInt;

@@ -44,7 +44,7 @@ impl Factored {
         }
         p
     }
-    fn render(&self, latex: bool) -> String {
+    pub(super) fn render(&self, latex: bool) -> String {
         let mut parts = Vec::new();
         let a = self.coef.abs();
         if !a.is_one() {
@@ -59,7 +59,8 @@ impl Factored {
         if !self.mono.is_empty() {
             parts.push(mono_str(&self.mono, latex));
         }
-        let alone = parts.is_empty() && self.factors.len() == 1;
+        // A lone factor needs no parentheses, unless a minus sign stands before it.
+        let alone = parts.is_empty() && self.factors.len() == 1 && !self.coef.is_negative();
         for f in &self.factors {
             let body = factor_str(f, latex);
             parts.push(if alone {

@@ -17,6 +17,7 @@
 pub mod at;
 pub mod checks;
 pub mod find;
+pub mod phase;
 pub mod source;
 pub mod state;
 mod text;

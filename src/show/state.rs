@@ -56,6 +56,8 @@ pub struct Summary {
     /// Why the state is not exact, when it is not.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub why_not_exact: Option<String>,
+    /// The contact forces there, the phase of the fall and a warning for a force that would pull.
+    pub phase: super::phase::Phase,
 }
 
 /// The book's worked example (`docs::worked::EXAMPLE`): m = 1 kg, l = 1 m, g = 9.81 m/s²,
@@ -207,6 +209,7 @@ pub fn build(at: &At) -> Point {
         _ => None,
     };
     let fs = &float.1;
+    let phase = super::phase::phase(&float, &bound, on_motion, theta0);
     Point {
         summary: Summary {
             m: float.0.m,
@@ -221,6 +224,7 @@ pub fn build(at: &At) -> Point {
             on_motion,
             how,
             why_not_exact: if exact.is_some() { None } else { why_not },
+            phase,
         },
         float,
         bound,
@@ -299,5 +303,51 @@ mod tests {
         let off = build(&parse_at("theta=40deg, theta_ddot=0").unwrap());
         assert_eq!(off.float.1.accel, 0.0);
         assert!(!off.summary.on_motion);
+    }
+
+    #[test]
+    fn past_separation_the_state_warns_that_the_wall_would_pull() {
+        // From rest upright the top leaves the wall at cos θ = 2/3, θ = 48.19°.
+        let sep = (2.0f64 / 3.0).acos().to_degrees();
+        let before = build(&parse_at("theta=40deg").unwrap()).summary.phase;
+        assert!(before.warnings.is_empty(), "{:?}", before.warnings);
+        assert!(before.phase.starts_with("phase 1"), "{}", before.phase);
+        let past = build(&parse_at("theta=60deg").unwrap()).summary.phase;
+        assert!(past.wall_force < 0.0);
+        assert!(past.phase.starts_with("past separation"), "{}", past.phase);
+        assert!(past.phase.contains("θ = 48.19°"), "{}", past.phase);
+        assert!((past.separation.unwrap().to_degrees() - sep).abs() < 1e-9);
+        assert_eq!(past.warnings.len(), 1);
+        assert!(
+            past.warnings[0].starts_with("F_w = -"),
+            "{:?}",
+            past.warnings
+        );
+        // Released at 30°, 48.19° is still on the wall (separation at acos((2/3) cos 30°) = 54.7°).
+        let later = build(&parse_at("theta=50deg, theta0=30deg").unwrap())
+            .summary
+            .phase;
+        assert!(
+            later.warnings.is_empty() && later.phase.contains("θ = 54.74°"),
+            "{}",
+            later.phase
+        );
+        // A θ̇ given on the motion is traced back to its release: θ̇² = (3g/2l)(1 − cos θ) is
+        // the release from upright, so 60° is past separation again.
+        let w = (1.5f64 * 9.81 * (1.0 - 60f64.to_radians().cos())).sqrt();
+        let given = build(&parse_at(&format!("theta=60deg, theta_dot={w}")).unwrap());
+        assert!(
+            given.summary.phase.phase.contains("θ0 = 0°"),
+            "{}",
+            given.summary.phase.phase
+        );
+        // A θ̈ that needs the floor to pull: θ̈ large and positive at a low angle.
+        let pull = build(&parse_at("theta=80deg, theta_dot=0, theta_ddot=100").unwrap());
+        assert!(pull
+            .summary
+            .phase
+            .warnings
+            .iter()
+            .any(|w| w.starts_with("F_f = -")));
     }
 }

@@ -141,6 +141,17 @@ pub fn render(s: &Shown) -> String {
     for h in &st.how {
         let _ = writeln!(o, "  {h}");
     }
+    let ph = &st.phase;
+    let _ = writeln!(
+        o,
+        "  phase: {} (F_w = {} N, F_f = {} N by (14), (15))",
+        ph.phase,
+        short(ph.wall_force),
+        short(ph.floor_force)
+    );
+    for w in &ph.warnings {
+        let _ = writeln!(o, "  warning: {w}");
+    }
     match &st.why_not_exact {
         Some(w) => {
             let _ = writeln!(o, "  exact values: none here: {w}");
@@ -354,7 +365,19 @@ fn finish(mut o: String, s: &Shown) -> String {
         let _ = writeln!(o, "  printed:   {}", er.printed);
         let _ = writeln!(o, "  corrected: {}", er.corrected);
         let _ = writeln!(o, "  why: {}", er.why);
-        let _ = writeln!(o, "  printed − corrected: {}", er.difference_text);
+        // In physical terms where a reading fits; a subtraction such as (1 − m) is not one.
+        match &er.reading {
+            Some(r) => {
+                let _ = writeln!(o, "  misprint: {r}");
+            }
+            None => {
+                let _ = writeln!(
+                    o,
+                    "  printed − corrected: {}, in {}",
+                    er.difference_text, er.residual_unit
+                );
+            }
+        }
         let _ = writeln!(o, "  {}", er.units.doc_line().trim_start_matches("- "));
     }
     let _ = writeln!(o, "\ncode");

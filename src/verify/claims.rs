@@ -39,6 +39,10 @@ pub struct Claim {
     /// as LaTeX (θ, θ̇ free), when the corrected form is also proved equal to the model's value.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub difference_latex: Option<String>,
+    /// The same difference in physical terms ("the printed term … lacks a factor l"), as markdown
+    /// with `$…$` math ([`crate::scalar::Reading`]), when a reading fits.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reading_latex: Option<String>,
 }
 
 /// The prose L_A of sec. A.5 with l to the given power: −(2/3) m lᵏ θ̇ (printed k = 1, right k = 2).
@@ -56,6 +60,12 @@ pub fn la_prose_difference() -> Option<String> {
     (corrected.clone() - model)
         .is_zero()
         .then(|| crate::scalar::factored_latex(&(la_prose(&l, &s, 1) - corrected)))
+}
+
+/// The A.5 prose slip in physical terms (see [`Claim::reading_latex`]).
+pub fn la_prose_reading() -> Option<String> {
+    let (l, s, _) = crate::registry::prove::symbolic_ladder(LadderSample::Kinematic);
+    crate::scalar::reading(&(la_prose(&l, &s, 1) - la_prose(&l, &s, 2))).map(|r| r.render(true))
 }
 
 /// Three exact ladder states of the given sort (fixed integers: reproducible).
@@ -131,6 +141,7 @@ pub fn claims() -> Vec<Claim> {
         holds,
         printed_fails: None,
         difference_latex: None,
+        reading_latex: None,
     };
     let erratum = |location, claim, printed, corrected, holds, printed_fails| Claim {
         location,
@@ -139,6 +150,7 @@ pub fn claims() -> Vec<Claim> {
         holds,
         printed_fails: Some(printed_fails),
         difference_latex: None,
+        reading_latex: None,
     };
     let on_circle = all(Kinematic, |l, s| {
         corner_position(Corner::B, l, s).dot(&corner_position(Corner::B, l, s)) == sq(&l.l)
@@ -237,9 +249,11 @@ pub fn claims() -> Vec<Claim> {
             holds: d_label_printed,
             printed_fails: None,
             difference_latex: None,
+            reading_latex: None,
         },
         Claim {
             difference_latex: la_prose_difference(),
+            reading_latex: la_prose_reading(),
             ..erratum("sec. A.5", "L = L_A written as −(2/3) m l θ̇: a factor l is missing", r"-\frac{2}{3}m l \dot{\theta}", r"-\frac{2}{3}m l^2 \dot{\theta}", la_prose_corrected, la_prose_printed_fails)
         },
     ]

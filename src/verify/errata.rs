@@ -47,6 +47,14 @@ pub struct ErratumReport {
     pub difference_text: String,
     /// The same difference as LaTeX.
     pub difference_latex: String,
+    /// The misprint in physical terms ("the printed term … lacks a factor m", "has θ̇² where θ̈
+    /// belongs"), when one of [`crate::scalar::Reading`]'s readings fits; else `None`, and the
+    /// reader is shown the difference.
+    pub reading: Option<String>,
+    /// The same, as markdown with `$…$` math (for the book and ERRATA.md).
+    pub reading_latex: Option<String>,
+    /// The unit of the residuals: the corrected form's ("N·m", "kg·m²/s").
+    pub residual_unit: String,
     /// The second witness: dimensional analysis of the printed and corrected forms.
     pub units: ErratumUnits,
 }
@@ -214,6 +222,7 @@ pub fn errata(_cfg: &Config) -> Vec<ErratumReport> {
             found.unwrap_or((Rational::int(0), Rational::int(1), "none", None));
         let form = misprinted_form(e.number, e.latex());
         let (difference_text, difference_latex) = difference(&e);
+        let reading = super::errata_reading::reading(&e);
         out.push(ErratumReport {
             number: e.number,
             printed: err.printed,
@@ -229,6 +238,9 @@ pub fn errata(_cfg: &Config) -> Vec<ErratumReport> {
             corrected_residual: good.to_string(),
             difference_text,
             difference_latex,
+            reading: reading.as_ref().map(|r| r.0.clone()),
+            reading_latex: reading.map(|r| r.1),
+            residual_unit: super::errata_reading::residual_unit(&e),
             units: erratum_units(&e),
         });
     }

@@ -2,6 +2,7 @@
 
 pub mod claims;
 pub mod errata;
+pub mod errata_reading;
 pub mod fill;
 pub mod legend;
 pub mod proof;

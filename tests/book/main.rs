@@ -1,8 +1,10 @@
 //! The book (`equations/*.md` and `ladder book`): its pages, its doc-as-test checks, the errata
-//! and units pages held against the code (`cargo test --test book pages`).
+//! and units pages held against the code (`cargo test --test book`).
 
 mod check;
+mod chromium;
 mod docs;
 mod errata_doc;
+mod mathml;
 mod pages;
 mod units_doc;

@@ -365,3 +365,44 @@ fn the_tour_is_what_the_command_prints() {
         "docs/tour.md differs from the command's output"
     );
 }
+
+/// Issue 39: past separation `ladder show` says so. From rest upright (m = 1 kg, l = 1 m,
+/// g = 9.81 m/s²) the closed form F_w = (3mg/4) sin θ (3 cos θ − 2) (sec. 2.1) is −3.1859 N at
+/// 60°, past the separation at cos θ = 2/3 (48.19°); at 40° it is positive and nothing is said.
+#[test]
+fn show_warns_past_separation_and_names_the_phase() {
+    let fw = |deg: f64| {
+        let t = deg.to_radians();
+        0.75 * 9.81 * t.sin() * (3.0 * t.cos() - 2.0)
+    };
+    let (code, text, _) = ladder(&["show", "14", "--at", "theta=60deg", "--cases", "20"]);
+    assert_eq!(code, 0, "{text}");
+    let want = format!("warning: F_w = {:.4} N < 0", fw(60.0));
+    assert!(text.contains(&want), "missing '{want}' in\n{text}");
+    assert!(
+        text.contains("phase: past separation") && text.contains("θ = 48.19°"),
+        "{text}"
+    );
+    let (code, text, _) = ladder(&["show", "14", "--at", "theta=40deg", "--cases", "20"]);
+    assert_eq!(code, 0, "{text}");
+    assert!(fw(40.0) > 0.0);
+    assert!(!text.contains("warning:"), "{text}");
+    assert!(text.contains("phase: phase 1, both contacts"), "{text}");
+    // The JSON carries the same: the phase and the warning.
+    let (_, json, _) = ladder(&[
+        "show",
+        "14",
+        "--at",
+        "theta=60deg",
+        "--json",
+        "--cases",
+        "20",
+    ]);
+    let j: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let ph = &j["state"]["phase"];
+    assert!(
+        (ph["wall_force"].as_f64().unwrap() - fw(60.0)).abs() < 1e-12,
+        "{ph}"
+    );
+    assert_eq!(ph["warnings"].as_array().unwrap().len(), 1, "{ph}");
+}

@@ -123,7 +123,7 @@ fn a_wrong_expected_difference_is_caught() {
 #[test]
 fn the_prose_erratum_of_a5_has_its_difference() {
     // −(2/3) m l θ̇ printed where −(2/3) m l² θ̇ belongs: the difference is (2/3) m l θ̇ (l − 1),
-    // by hand; and the page shows it.
+    // by hand; and the page reads it in physical terms: the printed term lacks a factor l.
     let c = sliding_ladder::verify::claims::claims()
         .into_iter()
         .find(|c| c.location == "sec. A.5")
@@ -132,7 +132,9 @@ fn the_prose_erratum_of_a5_has_its_difference() {
     assert_eq!(c.difference_latex.as_deref(), Some(want));
     let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/equations/ERRATA.md"))
         .expect("ERRATA.md");
-    assert!(page.contains(&format!("${want}$")));
+    let reading = r"the printed term $-\frac{2}{3} m l \dot\theta$ lacks a factor $l$";
+    assert_eq!(c.reading_latex.as_deref(), Some(reading));
+    assert!(page.contains(reading), "ERRATA.md lacks: {reading}");
     // The printed prose form is not L_A (12) symbolically, the corrected one is.
     let (l, s, _) = sliding_ladder::registry::prove::symbolic_ladder(
         sliding_ladder::registry::LadderSample::Kinematic,

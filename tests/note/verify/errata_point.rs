@@ -188,7 +188,7 @@ fn the_terminal_shows_unicode_and_json_keeps_latex() {
     assert!(text.contains("4ml²θ̇²/3"), "{text}");
     assert!(text.contains("form 3 of the display"), "{text}");
     assert!(
-        text.contains("at the exact point m = 3, l = 5, g = 7, sin θ = 4/5"),
+        text.contains("at the exact point (SI units) m = 3, l = 5, g = 7, sin θ = 4/5"),
         "{text}"
     );
     let json = serde_json::to_value(&list).unwrap();
@@ -203,9 +203,10 @@ fn errata_md_names_the_form_the_residual_and_the_point_as_the_code_has_them() {
     let list = errata(&Default::default());
     for r in &list {
         let line = format!(
-            "- residual at the exact point of `ladder errata`: form {} as printed {}, corrected 0",
+            "- residual at the exact point of `ladder errata` (SI units): form {} as printed {} {}, corrected 0",
             r.misprinted_form.unwrap(),
-            r.printed_residual_exact
+            r.printed_residual_exact,
+            r.residual_unit
         );
         assert!(page.contains(&line), "ERRATA.md lacks: {line}");
     }

@@ -1,0 +1,112 @@
+//! Equation references in the prose as links: "(40)" in a page's text becomes a link to display
+//! (40) wherever it lives in the book, "(P3)" to the extension's display (P3). Headings, code,
+//! and text already inside a link are left alone, and so is anything that is not exactly a
+//! number in parentheses ("(2/3)", "(1 − m)").
+
+use pulldown_cmark::{CowStr, Event, LinkType, Tag, TagEnd};
+
+/// The number of a reference `(N)` or `(PN)` (extension: 1000 + N) starting at `s`, and its
+/// length in bytes.
+fn reference(s: &str) -> Option<(u32, usize)> {
+    let inner = s.strip_prefix('(')?;
+    let close = inner.find(')')?;
+    let body = &inner[..close];
+    let (digits, base) = match body.strip_prefix('P') {
+        Some(d) => (d, crate::registry::EXTENSION_BASE),
+        None => (body, 0),
+    };
+    if digits.is_empty() || digits.len() > 3 || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    Some((base + digits.parse::<u32>().ok()?, close + 2))
+}
+
+/// `events` with every reference in plain text turned into a link to `target(N)`, when known.
+pub fn link_references<'a>(
+    events: Vec<Event<'a>>,
+    target: &dyn Fn(u32) -> Option<String>,
+) -> Vec<Event<'a>> {
+    let mut out = Vec::with_capacity(events.len());
+    // Depth inside headings, links and code blocks, where text stays text.
+    let mut shielded = 0usize;
+    for ev in events {
+        match &ev {
+            Event::Start(Tag::Heading { .. } | Tag::Link { .. } | Tag::CodeBlock(_)) => {
+                shielded += 1
+            }
+            Event::End(TagEnd::Heading(_) | TagEnd::Link | TagEnd::CodeBlock) => {
+                shielded = shielded.saturating_sub(1)
+            }
+            _ => {}
+        }
+        let Event::Text(text) = &ev else {
+            out.push(ev);
+            continue;
+        };
+        if shielded > 0 || !text.contains('(') {
+            out.push(ev);
+            continue;
+        }
+        let (mut rest, mut plain) = (text.as_ref(), String::new());
+        while let Some(i) = rest.find('(') {
+            plain.push_str(&rest[..i]);
+            rest = &rest[i..];
+            match reference(rest).and_then(|(n, len)| target(n).map(|t| (t, len))) {
+                Some((dest, len)) => {
+                    if !plain.is_empty() {
+                        out.push(Event::Text(CowStr::from(std::mem::take(&mut plain))));
+                    }
+                    out.push(Event::Start(Tag::Link {
+                        link_type: LinkType::Inline,
+                        dest_url: CowStr::from(dest),
+                        title: CowStr::from(""),
+                        id: CowStr::from(""),
+                    }));
+                    out.push(Event::Text(CowStr::from(rest[..len].to_string())));
+                    out.push(Event::End(TagEnd::Link));
+                    rest = &rest[len..];
+                }
+                None => {
+                    plain.push('(');
+                    rest = &rest[1..];
+                }
+            }
+        }
+        plain.push_str(rest);
+        if !plain.is_empty() {
+            out.push(Event::Text(CowStr::from(plain)));
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use pulldown_cmark::{html, Options, Parser};
+
+    fn render(md: &str) -> String {
+        let target = |n: u32| (n <= 90 || n > 1000).then(|| format!("p.html#eq-{n}"));
+        let events = link_references(Parser::new_ext(md, Options::empty()).collect(), &target);
+        let mut s = String::new();
+        html::push_html(&mut s, events.into_iter());
+        s
+    }
+
+    #[test]
+    fn a_number_in_parentheses_links_and_nothing_else_does() {
+        let h = render("By (40) and (P3), not (2/3) nor (1 − m) nor (91).\n");
+        assert!(h.contains("<a href=\"p.html#eq-40\">(40)</a>"), "{h}");
+        assert!(h.contains("<a href=\"p.html#eq-1003\">(P3)</a>"), "{h}");
+        assert!(h.contains("not (2/3) nor (1 − m) nor (91)."), "{h}");
+    }
+
+    #[test]
+    fn headings_links_and_code_keep_their_text() {
+        let h = render("# (11) Torque\n\nSee [eq. (12)](x.html) and `(13)`.\n\n    (14)\n");
+        assert!(h.contains("<h1>(11) Torque</h1>"), "{h}");
+        assert!(h.contains("<a href=\"x.html\">eq. (12)</a>"), "{h}");
+        assert!(h.contains("<code>(13)</code>"), "{h}");
+        assert!(h.contains("<pre><code>(14)"), "{h}");
+    }
+}
