@@ -19,7 +19,7 @@ pub struct AboutDoc {
 }
 
 /// The folders of `docs/` whose markdown becomes pages, in the order the about page lists them.
-const FOLDERS: [&str; 2] = ["docs", "docs/mutation"];
+pub const FOLDERS: [&str; 2] = ["docs", "docs/mutation"];
 
 /// The book page of a markdown file of `docs/`: its path below `docs/`, lowercased, with `/`
 /// as `-` (`docs/mutation/MUTATION-SIM.md` → `about-mutation-mutation-sim.html`).

@@ -46,7 +46,7 @@ pub fn methods(penalty: bool) -> Vec<&'static str> {
 /// notebook cites scenes by seed and index): a rigid scene drew one of these nine, a penalty
 /// scene one of the first seven, uniformly from its own stream. That draw is kept, so those
 /// scenes stay as they were.
-const FIRST_METHODS: [&str; 9] = [
+pub const FIRST_METHODS: [&str; 9] = [
     "euler",
     "symplectic-euler",
     "verlet",

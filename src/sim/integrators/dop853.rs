@@ -43,7 +43,7 @@ const CONTROL: Controller = Controller {
 };
 
 
-/// The card of Dormand-Prince 8(5,3) ([`super::card`]).
+/// The card of Dormand-Prince 8(5,3) ([`mod@super::card`]).
 pub const CARD: Card = Card {
     name: "dop853",
     title: "Dormand-Prince 8(5,3)",

@@ -81,7 +81,7 @@ const CONTROL: Controller = Controller {
 };
 
 
-/// The card of Dormand-Prince 5(4) ([`super::card`]).
+/// The card of Dormand-Prince 5(4) ([`mod@super::card`]).
 pub const CARD: Card = Card {
     name: "dopri5",
     title: "Dormand-Prince 5(4)",

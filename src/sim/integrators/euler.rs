@@ -4,7 +4,7 @@ use super::fixed::{FixedStep, SlopeOnlyMethod};
 use super::card::{Card, ControlKind, Stiffness, Sweep};
 
 
-/// The card of explicit Euler ([`super::card`]).
+/// The card of explicit Euler ([`mod@super::card`]).
 pub const CARD: Card = Card {
     name: "euler",
     title: "explicit Euler",

@@ -90,7 +90,7 @@ fn step_norm<const N: usize, S: Ode<N>>(
 }
 
 
-/// The card of Radau IIA 5 ([`super::card`]).
+/// The card of Radau IIA 5 ([`mod@super::card`]).
 pub const CARD: Card = Card {
     name: "radau5",
     title: "Radau IIA 5",

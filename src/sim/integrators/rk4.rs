@@ -7,7 +7,7 @@ use super::card::{Card, ControlKind, Stiffness, Sweep};
 use super::Control;
 
 
-/// The card of classic Runge-Kutta 4 ([`super::card`]).
+/// The card of classic Runge-Kutta 4 ([`mod@super::card`]).
 pub const CARD: Card = Card {
     name: "rk4",
     title: "classic Runge-Kutta 4",

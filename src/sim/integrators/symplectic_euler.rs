@@ -8,7 +8,7 @@ use super::fixed::{FixedStep, SlopeOnlyMethod};
 use super::card::{Card, ControlKind, Stiffness, Sweep};
 
 
-/// The card of symplectic Euler ([`super::card`]).
+/// The card of symplectic Euler ([`mod@super::card`]).
 pub const CARD: Card = Card {
     name: "symplectic-euler",
     title: "symplectic Euler",

@@ -116,7 +116,7 @@ fn least_work_order(tol: f64) -> usize {
 }
 
 
-/// The card of Taylor series ([`super::card`]).
+/// The card of Taylor series ([`mod@super::card`]).
 pub const CARD: Card = Card {
     name: "taylor",
     title: "Taylor series",

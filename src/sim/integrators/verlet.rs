@@ -30,7 +30,7 @@ use super::Control;
 const MAX_ITER: usize = 50;
 
 
-/// The card of Störmer-Verlet ([`super::card`]).
+/// The card of Störmer-Verlet ([`mod@super::card`]).
 pub const CARD: Card = Card {
     name: "verlet",
     title: "Störmer-Verlet",
