@@ -6,7 +6,7 @@
 
 use serde_json::Value;
 use sliding_ladder::registry::check::TOLERANCE_FACTOR;
-use sliding_ladder::registry::print_check::CONTINUATIONS;
+use sliding_ladder::registry::print_check::continuation;
 use sliding_ladder::registry::{equations, Eval, LadderSample};
 use std::process::Command;
 
@@ -59,9 +59,9 @@ fn within_bounds(f: &Value, base: &Value) -> bool {
 /// print parser from the registry's LaTeX.
 fn printed_count(n: u32) -> usize {
     let latex = sliding_ladder::registry::printed_latex(n);
-    match CONTINUATIONS.iter().find(|c| c.0 == n) {
-        Some((_, prefix)) => {
-            sliding_ladder::print::parser::parse_display(&format!("{prefix}{latex}"))
+    match continuation(n) {
+        Some(prefix) => {
+            sliding_ladder::print::parser::parse_display(&format!("{prefix} {latex}"))
                 .unwrap()
                 .form_count()
                 - 1

@@ -28,7 +28,7 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Check every numbered equation (1)-(90): one row per equation.
+    /// Check every numbered display of the note: one row per display.
     Verify(verify::VerifyArgs),
     /// One display in depth: print, symbols, every form's value at a state, its checks.
     Show(show::ShowArgs),
@@ -58,6 +58,9 @@ pub fn run() -> ExitCode {
             return ExitCode::from(code);
         }
     };
+    if let Some(code) = note_unreadable() {
+        return code;
+    }
     match cli.command {
         None => {
             let verified = verify::verify(
@@ -84,4 +87,18 @@ pub fn run() -> ExitCode {
         Some(Command::Show(a)) => show::run(a),
         Some(Command::Book(a)) => book::run(a),
     }
+}
+
+/// The note in use could not be read in full: every problem on stderr as `file:line: reason`,
+/// exit 2. (The embedded note reads cleanly, a test shows; this catches a binary built from an
+/// edited `equations/` whose section is malformed.)
+fn note_unreadable() -> Option<ExitCode> {
+    let errors = &crate::registry::source::current().errors;
+    if errors.is_empty() {
+        return None;
+    }
+    for e in errors {
+        eprintln!("ladder: {e}");
+    }
+    Some(ExitCode::from(2))
 }

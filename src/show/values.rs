@@ -249,7 +249,7 @@ pub fn form_values_of(e: &Equation, latex: &str, point: &Point) -> Result<Vec<Fo
             .position(|f| f.role != Role::Misprint)
             .unwrap_or(0);
         for (k, f) in chain.iter().enumerate() {
-            let role = if e.number == 57 && ci == 0 && k == 0 {
+            let role = if e.continues.is_some() && ci == 0 && k == 0 {
                 "continued"
             } else if f.text == "evaluation condition" {
                 "condition"

@@ -11,7 +11,7 @@
 //! variables, not only at the one exact point of [`super::check_print`].
 
 use super::{evaluate_chains, form_text, print_chains_with, sample_check, term_chains, Form};
-use super::{Role, MISPRINTS};
+use super::{misprints, Role};
 use crate::print::quantity::Model;
 use crate::registry::prove::{
     judge_chains, reduce, symbolic_ladder, symbolic_particle_values, Relation, PARTICLE_COUNTS,
@@ -112,7 +112,7 @@ fn flat(chains: &[Chain<Sym>]) -> Vec<Sym> {
 
 /// Prove the print of one display (given as LaTeX) symbolically.
 pub fn prove_print(e: &Equation, latex: &str) -> PrintProof {
-    prove_print_with(e, latex, MISPRINTS)
+    prove_print_with(e, latex, &misprints())
 }
 
 /// [`prove_print`] with a given list of misprinted forms.

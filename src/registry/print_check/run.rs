@@ -1,7 +1,7 @@
 //! Running a display's printed chains on the registry's samples.
 
 use super::{
-    evaluate_chains, form_text, print_chains_with, term_chains, Form, PrintReport, MISPRINTS,
+    evaluate_chains, form_text, misprints, print_chains_with, term_chains, Form, PrintReport,
 };
 use crate::print::quantity::Model;
 use crate::registry::check::{exact_residual, float_residual, Config, TOLERANCE_FACTOR};
@@ -16,7 +16,7 @@ use rand_chacha::ChaCha8Rng;
 
 /// Check the print of one display on its registry samples.
 pub fn check_print(e: &Equation, latex: &str, cfg: &Config) -> PrintReport {
-    check_print_with(e, latex, cfg, MISPRINTS)
+    check_print_with(e, latex, cfg, &misprints())
 }
 
 /// [`check_print`] with a given list of misprinted forms.

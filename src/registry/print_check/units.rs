@@ -4,7 +4,7 @@
 //!
 //! Every form must have one dimension (no sum of unlike terms: the offending sum is named, as
 //! a reader would write it, by [`crate::print::clash`]) and every form of a chain the chain's
-//! dimension. A recorded misprint ([`super::MISPRINTS`]) that fails this is the erratum's
+//! dimension. A recorded misprint ([`super::misprints`]) that fails this is the erratum's
 //! witness in units; any other form that fails it is a defect of the print's check, like a
 //! residual. `ladder verify` (its `units` column) and `ladder show` (each form's SI unit) both
 //! read this module, so the two cannot disagree.
