@@ -30,8 +30,8 @@ fn headings() -> BTreeMap<String, String> {
     out
 }
 
-/// The `*Law:*` statements of the book by label: the text after "is the law of motion: " up to
-/// the sentence that follows it.
+/// The `*Law:*` statements of the book by label: on a line starting `*Law:*`, the text after
+/// "is the law of motion: " up to the sentence that follows it.
 fn laws() -> BTreeMap<String, String> {
     let dir = sliding_ladder::docs::default_dir();
     let mut out = BTreeMap::new();
@@ -42,9 +42,11 @@ fn laws() -> BTreeMap<String, String> {
             if let Some(rest) = line.strip_prefix("### (") {
                 label = rest.split_once(')').map(|(l, _)| format!("({l})"));
             }
-            let Some(rest) = line.split_once("is the law of motion: ").map(|x| x.1) else {
+            let law = line.strip_prefix("*Law:* ");
+            let Some(rest) = law.and_then(|l| l.split_once("is the law of motion: ")) else {
                 continue;
             };
+            let rest = rest.1;
             let end = [". Every other", ". This is the only"]
                 .iter()
                 .filter_map(|t| rest.find(t))
