@@ -22,6 +22,11 @@ use std::process::ExitCode;
     about = "The sliding ladder: the note's equations checked, the fall simulated"
 )]
 struct Cli {
+    /// Read the displays from this folder of markdown instead of the note built in: every
+    /// `*.md` file, each display a section `### (N) Title`, its LaTeX between `$$` lines and a
+    /// line `*Kind:* …` (see equations/README.md); for verify, show, errata and book.
+    #[arg(long, global = true, value_name = "DIR")]
+    equations: Option<std::path::PathBuf>,
     #[command(subcommand)]
     command: Option<Command>,
 }
@@ -58,6 +63,11 @@ pub fn run() -> ExitCode {
             return ExitCode::from(code);
         }
     };
+    if let Some(dir) = &cli.equations {
+        if let Err(code) = use_folder(dir) {
+            return code;
+        }
+    }
     if let Some(code) = note_unreadable() {
         return code;
     }
@@ -101,4 +111,18 @@ fn note_unreadable() -> Option<ExitCode> {
         eprintln!("ladder: {e}");
     }
     Some(ExitCode::from(2))
+}
+
+/// Read the displays from `dir` for the rest of the run; a folder that cannot be read is one
+/// line on stderr and exit 2 (a malformed section is reported by [`note_unreadable`]).
+fn use_folder(dir: &std::path::Path) -> Result<(), ExitCode> {
+    let note = crate::registry::source::Note::from_dir(dir).map_err(|e| {
+        eprintln!("ladder: {e}");
+        ExitCode::from(2)
+    })?;
+    crate::registry::source::use_note(note).map_err(|e| {
+        eprintln!("ladder: {e}");
+        ExitCode::from(2)
+    })?;
+    Ok(())
 }

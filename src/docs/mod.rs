@@ -41,6 +41,14 @@ pub fn default_dir() -> PathBuf {
     }
 }
 
+/// The folder of the note in use: `ladder --equations DIR`'s, else this crate's `equations/`.
+pub fn note_dir() -> PathBuf {
+    crate::registry::source::current()
+        .dir
+        .clone()
+        .unwrap_or_else(default_dir)
+}
+
 pub use crate::registry::source::normalize_latex;
 
 fn line_of(src: &str, offset: usize) -> usize {

@@ -7,7 +7,7 @@
 //! markdown must be in this table (else the section is a `file:line` error) and every function
 //! in the table must be named by some section (a test).
 
-use super::sample::{LadderSample, ParticleSample};
+use super::sample::{LadderSample, ParticleSample, PrintSample};
 use super::{Check, Eval, Fns};
 
 /// The states a ladder or floor-phase check is evaluated at, by the name the markdown uses.
@@ -70,6 +70,21 @@ pub fn check_of(function: &str, sample: &str, name: &'static str) -> Result<Chec
         format!("`{function}` is evaluated at states {allowed}; '{sample}' is none of them")
     })?;
     Ok(Check { name, eval })
+}
+
+/// The states a print alone is evaluated at, by the name of a `*States:*` line.
+pub fn print_states(name: &str) -> Result<PrintSample, String> {
+    let ladder = LADDER_SAMPLES.iter().find(|s| s.0 == name);
+    let particles = PARTICLE_SAMPLES.iter().find(|s| s.0 == name);
+    match (ladder, particles) {
+        (Some(s), _) => Ok(PrintSample::Ladder(s.1)),
+        (_, Some(s)) => Ok(PrintSample::Particles(s.1)),
+        _ => Err(format!(
+            "*States:* '{name}' is none of {}, {}",
+            names(LADDER_SAMPLES),
+            names(PARTICLE_SAMPLES)
+        )),
+    }
 }
 
 #[cfg(test)]

@@ -267,6 +267,8 @@ pub struct Equation {
     pub latex: &'static str,
     /// For a display that begins with `=`, the last form of the display it continues.
     pub continues: Option<&'static str>,
+    /// The states of its `*States:*` line, for a print checked alone.
+    pub states: Option<sample::PrintSample>,
     /// The markdown file of its section.
     pub file: &'static str,
     /// The line of its heading.
@@ -305,6 +307,11 @@ pub fn printed_latex(n: u32) -> &'static str {
     source::current()
         .section(n)
         .map_or("", |s| s.latex.as_str())
+}
+
+/// The symbol table of the note in use: `symbols.toml`'s entries and those its files declare.
+pub fn symbol_table() -> &'static [crate::print::symbols::Entry] {
+    &source::current().symbols
 }
 
 /// The equations of the extension beyond the note: the floor phase, (P1)-(P5).

@@ -13,7 +13,7 @@ use super::{Chain, Equation, Role, Side};
 use crate::print::ast::{Chain as PChain, Expr};
 use crate::print::eval::{evaluate, Ctx};
 use crate::print::quantity::{Model, Value};
-use crate::print::symbols::{table, Entry};
+use crate::print::symbols::Entry;
 use crate::scalar::Scalar;
 use serde::Serialize;
 
@@ -78,6 +78,16 @@ pub struct PrintReport {
     pub matches_code: bool,
     /// Rust forms that equal no parsed form.
     pub code_mismatches: Vec<String>,
+    /// On-shell print: whether it failed at every exact point off the motion, as it must.
+    pub off_shell_fails: Option<bool>,
+    /// On-shell print: the `=` at which it breaks off the motion, when the same at every point.
+    pub off_motion_breaks: Option<Vec<u32>>,
+    /// Exact points the print was evaluated at (on the motion).
+    pub exact_points: usize,
+    /// Of those, the points where some chain's residual was not zero.
+    pub exact_failures: usize,
+    /// The largest degree of a residual of its chains (Schwartz-Zippel).
+    pub degree: u32,
 }
 
 /// The chains of a display's print, ready to evaluate.
@@ -211,7 +221,7 @@ pub(crate) fn evaluate_chains<S: Scalar>(
     model: Model<S>,
     index: Option<usize>,
 ) -> Result<Vec<Chain<S>>, String> {
-    let t = table();
+    let t = crate::registry::symbol_table();
     let model = std::rc::Rc::new(model);
     let mut out = Vec::new();
     for (ci, chain) in chains.iter().enumerate() {
@@ -297,5 +307,9 @@ mod inject;
 pub mod prove;
 mod run;
 pub mod units;
+pub use crate::registry::sample::PrintSample;
 pub use inject::{injections, run_injection, Injection, Outcome, Typo};
-pub use run::{check_print, check_print_with, sample_check, PRINT_EXACT_POINTS, PRINT_FLOAT_CASES};
+pub use run::{
+    check_print, check_print_with, print_sample, sample_check, PRINT_EXACT_POINTS,
+    PRINT_FLOAT_CASES,
+};

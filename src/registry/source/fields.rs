@@ -2,8 +2,27 @@
 //! Fields are read from the markdown source (not the rendered text), so LaTeX and code spans
 //! arrive as written; several fields may share a paragraph, separated by ` · `.
 
-use super::{normalize_latex, CheckSpec, ErratumSpec, LawSpec};
+use super::{normalize_latex, CheckSpec, ErratumSpec, LawSpec, PointSpec, SymbolSpec};
 use crate::registry::Kind;
+
+/// Which list the next markdown list is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum ListNext {
+    /// Not a list of fields.
+    None,
+    /// The checks of `*Rust:*`.
+    Rust,
+    /// The symbols of `*Symbols:*`.
+    Symbols,
+}
+
+/// What a file declares for all its displays: points and symbols, and what was wrong with them.
+#[derive(Default)]
+pub(super) struct FileDecls {
+    pub points: Vec<PointSpec>,
+    pub symbols: Vec<SymbolSpec>,
+    pub errors: Vec<(usize, String)>,
+}
 
 /// What the field paragraphs of one section said, and what was wrong with them (line, reason).
 #[derive(Default)]
@@ -15,6 +34,7 @@ pub(super) struct Fields {
     pub checks: Vec<CheckSpec>,
     pub law: Option<(LawSpec, usize)>,
     pub erratum: Option<ErratumSpec>,
+    pub states: Option<(String, usize)>,
     pub errors: Vec<(usize, String)>,
 }
 
@@ -49,10 +69,15 @@ fn split_fields(raw: &str) -> Vec<(&str, &str)> {
         .collect()
 }
 
-/// Read a paragraph's fields into `f`; true when it is the `*Rust:*` paragraph (the list after
-/// it holds the checks).
-pub(super) fn read_paragraph(raw: &str, line: usize, f: &mut Fields) -> bool {
-    let mut rust = false;
+/// Read a paragraph's fields into `f` (the section's) and `file` (the file's); which list, if
+/// any, the paragraph announces.
+pub(super) fn read_paragraph(
+    raw: &str,
+    line: usize,
+    f: &mut Fields,
+    file: &mut FileDecls,
+) -> ListNext {
+    let mut next = ListNext::None;
     for (name, value) in split_fields(raw) {
         match name {
             "Kind" => read_kind(value, line, f),
@@ -63,12 +88,20 @@ pub(super) fn read_paragraph(raw: &str, line: usize, f: &mut Fields) -> bool {
                 Err(e) => f.errors.push((line, e)),
             },
             "Rust" => {
-                rust = true;
+                next = ListNext::Rust;
                 if !value.is_empty() {
                     read_check(value, line, f);
                 }
             }
+            "States" => f.states = Some((value.trim_end_matches('.').to_string(), line)),
             "Misprint" | "Corrected" | "Why" => read_erratum(name, value, line, f),
+            "Points" => read_points(value, line, file),
+            "Symbols" => {
+                next = ListNext::Symbols;
+                if !value.is_empty() {
+                    read_symbol(value, line, file);
+                }
+            }
             // Prose fields (`*Checked:*`, `*Figure:*`, ...) are for the reader.
             _ => {}
         }
@@ -79,7 +112,63 @@ pub(super) fn read_paragraph(raw: &str, line: usize, f: &mut Fields) -> bool {
                 .push((line, "a *Misprint:* needs its *Corrected:* form".into()));
         }
     }
-    rust
+    next
+}
+
+/// `Q = ladder:1/4; R = lab:1/2,3/2`.
+fn read_points(value: &str, line: usize, file: &mut FileDecls) {
+    for item in value.split(';').map(str::trim).filter(|i| !i.is_empty()) {
+        let parsed = item.split_once('=').and_then(|(name, point)| {
+            let (name, point) = (name.trim(), point.trim());
+            let ok = !name.is_empty() && name.chars().all(|c| c.is_ascii_alphanumeric());
+            ok.then_some((name, point))
+        });
+        let Some((name, point)) = parsed else {
+            file.errors.push((
+                line,
+                format!("*Points:* '{item}' is not NAME = ladder:FRACTION or NAME = lab:X,Y"),
+            ));
+            continue;
+        };
+        match super::point_id(point) {
+            Ok(id) => file.points.push(PointSpec {
+                name: name.to_string(),
+                point: id,
+                line,
+            }),
+            Err(e) => file.errors.push((line, format!("*Points:* {name}: {e}"))),
+        }
+    }
+}
+
+/// One item of a `*Symbols:*` list:
+/// `` - $L_Q$ = `relative_angular_momentum:Q.z` [M L^2 T^-1]: angular momentum about Q ``.
+pub(super) fn read_symbol(raw: &str, line: usize, file: &mut FileDecls) {
+    let shape = "a symbol reads - $LaTeX$ = `quantity` [dimension]: meaning";
+    let item = raw.trim_start();
+    let item = item
+        .strip_prefix(['-', '*', '+'])
+        .unwrap_or(item)
+        .trim_start();
+    let parsed = (|| {
+        let (latex, rest) = item.strip_prefix('$')?.split_once('$')?;
+        let rest = rest.trim_start().strip_prefix('=')?.trim_start();
+        let (quantity, rest) = rest.strip_prefix('`')?.split_once('`')?;
+        let (dimension, rest) = rest.trim_start().strip_prefix('[')?.split_once(']')?;
+        let meaning = rest.trim_start().strip_prefix(':')?.trim();
+        let ok = !latex.trim().is_empty() && !quantity.trim().is_empty();
+        ok.then(|| SymbolSpec {
+            latex: latex.trim().to_string(),
+            quantity: quantity.trim().to_string(),
+            dimension: dimension.trim().to_string(),
+            meaning: normalize_latex(meaning),
+            line,
+        })
+    })();
+    match parsed {
+        Some(sym) => file.symbols.push(sym),
+        None => file.errors.push((line, shape.into())),
+    }
 }
 
 fn read_kind(value: &str, line: usize, f: &mut Fields) {
@@ -247,14 +336,55 @@ mod tests {
     #[test]
     fn an_erratum_needs_math_and_its_correction() {
         let mut f = Fields::default();
-        read_paragraph("*Misprint:* $a = b$ · *Why:* because", 3, &mut f);
+        read_paragraph(
+            "*Misprint:* $a = b$ · *Why:* because",
+            3,
+            &mut f,
+            &mut FileDecls::default(),
+        );
         assert_eq!(
             f.erratum.as_ref().map(|e| e.printed.as_str()),
             Some("a = b")
         );
         assert!(f.errors.iter().any(|e| e.1.contains("*Corrected:*")));
         let mut g = Fields::default();
-        read_paragraph("*Misprint:* a = b · *Corrected:* $c$", 3, &mut g);
+        read_paragraph(
+            "*Misprint:* a = b · *Corrected:* $c$",
+            3,
+            &mut g,
+            &mut FileDecls::default(),
+        );
         assert!(g.errors.iter().any(|e| e.1.contains("between single `$`")));
+    }
+
+    #[test]
+    fn points_and_symbols_are_read_with_their_errors() {
+        let mut d = FileDecls::default();
+        read_points(
+            "Q = ladder:1/4; R = lab:1/2,3/2; S = ladder:5/4; T = moon",
+            4,
+            &mut d,
+        );
+        let got: Vec<(&str, &str)> = d
+            .points
+            .iter()
+            .map(|p| (p.name.as_str(), p.point.as_str()))
+            .collect();
+        assert_eq!(got, vec![("Q", "ladder:1/4"), ("R", "lab:1/2,3/2")]);
+        assert_eq!(d.errors.len(), 2, "{:?}", d.errors);
+        read_symbol(
+            "- $L_Q$ = `relative_angular_momentum:Q.z` [M L^2 T^-1]: about Q",
+            9,
+            &mut d,
+        );
+        read_symbol(
+            "- $L_Q$ = relative_angular_momentum:Q.z: no backticks",
+            10,
+            &mut d,
+        );
+        assert_eq!(d.symbols.len(), 1);
+        assert_eq!(d.symbols[0].quantity, "relative_angular_momentum:Q.z");
+        assert_eq!(d.symbols[0].dimension, "M L^2 T^-1");
+        assert_eq!(d.errors.last().map(|e| e.0), Some(10));
     }
 }

@@ -30,6 +30,18 @@
 //! * `*Misprint:*` is the printed form (or statement) that fails, `*Corrected:*` its correction;
 //!   the misprinted forms are those of the printed statement that the correction does not have.
 //! * `*Law:*` names the `=` that is the law of motion and says which law, in words.
+//! * `*States:*` (optional) names the states the print is evaluated at when no `*Rust:*` check
+//!   gives them: one of the names of [`super::fns::LADDER_SAMPLES`] or
+//!   [`super::fns::PARTICLE_SAMPLES`]; without it, the kind decides (on-shell: the motion;
+//!   general, notation: any particles; else: any motion of the ladder).
+//!
+//! A section needs no Rust: with no `*Rust:*` list its print alone is checked (every `=` on the
+//! independent models, the proof, the units, and for an on-shell display where it breaks off the
+//! motion). Anywhere in a file, two more fields declare what its displays may use:
+//! * `*Points:* Q = ladder:1/4; R = lab:1/2,3/2` names points of the ladder (the fraction of the
+//!   way from C to D) or of the lab (x, y in units of l), usable as `:Q` in quantities;
+//! * `*Symbols:*` followed by a list of `` $L_Q$ = `relative_angular_momentum:Q.z` [M L^2 T^-1]: meaning ``
+//!   adds symbols to the table of `symbols.toml` for the displays of that file.
 //!
 //! Every problem is a [`SourceError`], `file:line: reason`; nothing here panics on any input
 //! (a fuzz test edits the note's own sections at random).
@@ -37,9 +49,11 @@
 mod fields;
 mod note;
 mod parse;
+mod symbols;
 
 pub use note::{current, misprinted_forms, use_note, Note};
-pub use parse::parse_file;
+pub use parse::{parse_file, ParsedFile};
+pub use symbols::point_id;
 
 use super::Kind;
 
@@ -93,6 +107,32 @@ pub struct ErratumSpec {
     pub why: String,
 }
 
+/// A point named in a file: `Q = ladder:1/4`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PointSpec {
+    /// Its name, as quantities use it after `:`.
+    pub name: String,
+    /// What it is: `ladder:1/4` or `lab:1/2,3/2`.
+    pub point: String,
+    /// Its line.
+    pub line: usize,
+}
+
+/// A symbol added by a file: `` $L_Q$ = `relative_angular_momentum:Q.z` [M L^2 T^-1]: meaning ``.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SymbolSpec {
+    /// The symbol as printed.
+    pub latex: String,
+    /// The model quantity it denotes (points by name or by id).
+    pub quantity: String,
+    /// Its dimension.
+    pub dimension: String,
+    /// Its meaning.
+    pub meaning: String,
+    /// Its line.
+    pub line: usize,
+}
+
 /// One display's section, as written.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Section {
@@ -123,6 +163,8 @@ pub struct Section {
     /// For a display that begins with `=` (it continues the one before, as (57) continues
     /// (56)): the last form of the display before it, LaTeX.
     pub continues: Option<String>,
+    /// The states of `*States:*`, by name, and its line.
+    pub states: Option<(String, usize)>,
 }
 
 /// Collapse whitespace, so that line breaks in the markdown do not matter.

@@ -4,7 +4,8 @@
 //! first equation is asked for, and lives as long as the process: the equations borrow their
 //! titles, LaTeX and check names from it.
 
-use super::{parse_file, top_level_forms, Section, SourceError};
+use super::{parse_file, symbols, top_level_forms, Section, SourceError};
+use crate::print::symbols::Entry;
 use crate::registry::fns;
 use crate::registry::{Check, Equation, Erratum, Law, EXTENSION_BASE};
 use std::path::Path;
@@ -21,17 +22,27 @@ pub struct Note {
     pub sections: Vec<Section>,
     /// Every problem, `file:line: reason`; a section with a problem is not in `sections`.
     pub errors: Vec<SourceError>,
+    /// The symbol table: `symbols.toml`'s entries, then those the files declare.
+    pub symbols: Vec<Entry>,
+    /// The folder it was read from; `None` for the note built into the binary.
+    pub dir: Option<std::path::PathBuf>,
 }
 
 impl Note {
     /// Read markdown files given as (name, text), in the order given.
     pub fn parse<'a>(files: impl IntoIterator<Item = (&'a str, &'a str)>) -> Note {
-        let mut note = Note::default();
+        let mut note = Note {
+            symbols: crate::print::symbols::table().to_vec(),
+            ..Note::default()
+        };
         for (name, text) in files {
-            let (mut sections, errors) = parse_file(name, text);
-            link_continuations(&mut sections);
-            note.sections.extend(sections);
-            note.errors.extend(errors);
+            let mut f = parse_file(name, text);
+            link_continuations(&mut f.sections);
+            let numbers: Vec<u32> = f.sections.iter().map(|s| s.number).collect();
+            let extra = symbols::entries(name, &f.points, &f.symbols, &numbers, &mut f.errors);
+            note.symbols.extend(extra);
+            note.sections.extend(f.sections);
+            note.errors.extend(f.errors);
         }
         note.resolve();
         note
@@ -73,9 +84,9 @@ impl Note {
                 reason: "no *.md file in the folder".into(),
             });
         }
-        Ok(Note::parse(
-            texts.iter().map(|(n, t)| (n.as_str(), t.as_str())),
-        ))
+        let mut note = Note::parse(texts.iter().map(|(n, t)| (n.as_str(), t.as_str())));
+        note.dir = Some(dir.to_path_buf());
+        Ok(note)
     }
 
     /// Check what needs more than one section: numbers used once, and every check's function
@@ -101,6 +112,11 @@ impl Note {
             for c in &s.checks {
                 if let Err(reason) = fns::check_of(c.function.as_str(), &c.sample, "") {
                     bad.push(err(c.line, format!("{label}: {reason}")));
+                }
+            }
+            if let Some((name, line)) = &s.states {
+                if let Err(reason) = fns::print_states(name) {
+                    bad.push(err(*line, format!("{label}: {reason}")));
                 }
             }
             if let Some(e) = &s.erratum {
@@ -198,6 +214,10 @@ fn equation(s: &'static Section) -> Equation {
         }),
         latex: &s.latex,
         continues: s.continues.as_deref(),
+        states: s
+            .states
+            .as_ref()
+            .and_then(|(n, _)| fns::print_states(n).ok()),
         file: &s.file,
         line: s.line,
     }

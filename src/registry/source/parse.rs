@@ -2,8 +2,8 @@
 //! display math, paragraphs, list items) with their source ranges; [`super::fields`] reads the
 //! `*Field:*` paragraphs.
 
-use super::fields::{self, Fields};
-use super::{normalize_latex, Section, SourceError};
+use super::fields::{self, Fields, FileDecls, ListNext};
+use super::{normalize_latex, PointSpec, Section, SourceError, SymbolSpec};
 use crate::registry::EXTENSION_BASE;
 use pulldown_cmark::{Event, Options, Parser, Tag, TagEnd};
 
@@ -76,20 +76,35 @@ struct Open {
     section: String,
     latex: Option<(String, usize)>,
     fields: Fields,
-    /// The `*Rust:*` paragraph was the last block: the next list is its checks.
-    rust_list_next: bool,
 }
 
-/// Read every display section of one markdown file. Sections with a problem are left out and
-/// the problem reported; the rest are returned in file order.
-pub fn parse_file(file: &str, src: &str) -> (Vec<Section>, Vec<SourceError>) {
+/// What one file holds: its display sections, the points and symbols it declares, and every
+/// problem found.
+#[derive(Default)]
+pub struct ParsedFile {
+    /// The sections, in print order (those with a problem left out).
+    pub sections: Vec<Section>,
+    /// The points of its `*Points:*` lines.
+    pub points: Vec<PointSpec>,
+    /// The symbols of its `*Symbols:*` lists.
+    pub symbols: Vec<SymbolSpec>,
+    /// Every problem, `file:line: reason`.
+    pub errors: Vec<SourceError>,
+}
+
+/// Read every display section of one markdown file, and what the file declares. Sections with
+/// a problem are left out and the problem reported; the rest are returned in file order.
+pub fn parse_file(file: &str, src: &str) -> ParsedFile {
     let stem = std::path::Path::new(file)
         .file_stem()
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
-    let mut out = Vec::new();
-    let mut errors = Vec::new();
+    let mut out = ParsedFile::default();
+    let mut decls = FileDecls::default();
     let mut chapter = stem;
     let mut open: Option<Open> = None;
+    // Fields outside any display section go nowhere (only the file's own fields count there).
+    let mut outside = Fields::default();
+    let mut list = ListNext::None;
     let mut depth = 0usize;
     let opts = Options::ENABLE_MATH | Options::ENABLE_TABLES;
     for (ev, range) in Parser::new_ext(src, opts).into_offset_iter() {
@@ -97,9 +112,10 @@ pub fn parse_file(file: &str, src: &str) -> (Vec<Section>, Vec<SourceError>) {
         let raw = src.get(range.clone()).unwrap_or("");
         match &ev {
             Event::Start(Tag::Heading { level, .. }) if depth == 0 => {
+                list = ListNext::None;
                 let text = heading_text(raw);
                 if let Some((number, title)) = heading_label(text) {
-                    close(open.take(), file, &mut out, &mut errors);
+                    close(open.take(), file, &mut out);
                     open = Some(Open {
                         number,
                         line,
@@ -107,15 +123,12 @@ pub fn parse_file(file: &str, src: &str) -> (Vec<Section>, Vec<SourceError>) {
                         section: chapter.clone(),
                         latex: None,
                         fields: Fields::default(),
-                        rust_list_next: false,
                     });
                 } else if (*level as usize) <= 2 {
-                    close(open.take(), file, &mut out, &mut errors);
+                    close(open.take(), file, &mut out);
                     if let Some(label) = section_label(text) {
                         chapter = label.to_string();
                     }
-                } else if let Some(o) = open.as_mut() {
-                    o.rust_list_next = false;
                 }
             }
             Event::DisplayMath(m) => {
@@ -124,22 +137,17 @@ pub fn parse_file(file: &str, src: &str) -> (Vec<Section>, Vec<SourceError>) {
                 }
             }
             Event::Start(Tag::Paragraph) if depth == 0 => {
-                if let Some(o) = open.as_mut() {
-                    o.rust_list_next = fields::read_paragraph(raw, line, &mut o.fields);
-                }
+                let fields = open.as_mut().map_or(&mut outside, |o| &mut o.fields);
+                list = fields::read_paragraph(raw, line, fields, &mut decls);
             }
-            // The items of the list right after `*Rust:*` are the checks.
+            // The items of the list right after `*Rust:*` or `*Symbols:*`.
             Event::Start(Tag::List(_)) if depth == 0 => {}
-            Event::Start(Tag::Item) if depth == 1 => {
-                if let Some(o) = open.as_mut().filter(|o| o.rust_list_next) {
-                    fields::read_check(raw, line, &mut o.fields);
-                }
-            }
-            Event::Start(_) if depth == 0 => {
-                if let Some(o) = open.as_mut() {
-                    o.rust_list_next = false;
-                }
-            }
+            Event::Start(Tag::Item) if depth == 1 => match (list, open.as_mut()) {
+                (ListNext::Rust, Some(o)) => fields::read_check(raw, line, &mut o.fields),
+                (ListNext::Symbols, _) => fields::read_symbol(raw, line, &mut decls),
+                _ => {}
+            },
+            Event::Start(_) if depth == 0 => list = ListNext::None,
             _ => {}
         }
         match ev {
@@ -147,21 +155,28 @@ pub fn parse_file(file: &str, src: &str) -> (Vec<Section>, Vec<SourceError>) {
             Event::End(t) => {
                 depth = depth.saturating_sub(1);
                 if depth == 0 && matches!(t, TagEnd::List(_)) {
-                    if let Some(o) = open.as_mut() {
-                        o.rust_list_next = false;
-                    }
+                    list = ListNext::None;
                 }
             }
             _ => {}
         }
     }
-    close(open.take(), file, &mut out, &mut errors);
-    (out, errors)
+    close(open.take(), file, &mut out);
+    out.points = decls.points;
+    out.symbols = decls.symbols;
+    out.errors
+        .extend(decls.errors.into_iter().map(|(line, reason)| SourceError {
+            file: file.to_string(),
+            line,
+            reason,
+        }));
+    out
 }
 
 /// Finish a section: check that it has what a display needs.
-fn close(o: Option<Open>, file: &str, out: &mut Vec<Section>, errors: &mut Vec<SourceError>) {
+fn close(o: Option<Open>, file: &str, parsed: &mut ParsedFile) {
     let Some(o) = o else { return };
+    let (out, errors) = (&mut parsed.sections, &mut parsed.errors);
     let err = |line: usize, reason: String| SourceError {
         file: file.to_string(),
         line,
@@ -234,6 +249,7 @@ fn close(o: Option<Open>, file: &str, out: &mut Vec<Section>, errors: &mut Vec<S
         law: o.fields.law.map(|l| l.0),
         erratum: o.fields.erratum,
         continues: None,
+        states: o.fields.states,
     });
 }
 
@@ -270,7 +286,8 @@ mod tests {
     #[test]
     fn a_section_lacking_display_or_kind_is_an_error_at_its_line() {
         let src = "# Sec. 9.1 — Test\n\n### (1) No display\n\ntext\n\n### (2) No kind\n\n$$\na = b\n$$\n\n### (3) Law too far\n\n$$\na = b\n$$\n\n*Kind:* kinematic\n\n*Law:* the 2nd `=` is the law of motion: x\n\n### (4) Fine\n\n$$\na\n= b\n$$\n\n*Kind:* on-shell\n\n*Law:* the 1st `=` is the law of motion: the law. Every other `=` holds.\n";
-        let (ok, errs) = parse_file("t.md", src);
+        let parsed = parse_file("t.md", src);
+        let (ok, errs) = (parsed.sections, parsed.errors);
         let msgs: Vec<String> = errs.iter().map(ToString::to_string).collect();
         assert_eq!(
             msgs,
