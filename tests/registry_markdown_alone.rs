@@ -161,7 +161,11 @@ fn a_wrong_term_fails_with_exit_1_and_the_reason() {
     let out = ladder(&["verify", "--equations", d, "--only", "91", "--json"]);
     assert_eq!(out.status.code(), Some(1));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("failed: (91)"), "{err}");
+    assert!(err.contains("failed: (91) ("), "{err}");
+    assert!(
+        err.contains("91-quarter-point.md:14)"),
+        "the verdict's file:line: {err}"
+    );
     let v: Value = serde_json::from_slice(&out.stdout).expect("JSON");
     let r = row(&v, "(91)");
     assert_eq!(r["status"], "failed");
@@ -181,4 +185,51 @@ fn a_number_the_note_does_not_have_is_refused_with_its_displays() {
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("'91' is not a display of the note"), "{err}");
+}
+
+/// A student's homework, in a folder of its own outside the crate: one display right, one with
+/// a wrong coefficient (the equation of motion (5) has 3g/4l, not 3g/2l).
+const HOMEWORK: &str = r#"# Sec. 2.1 — Homework: the ladder by energy
+
+### (1) Kinetic energy
+
+$$
+T = \frac{m v_{\text{cm}}^2}{2} + \frac{I_{\text{cm}} \dot{\theta}^2}{2} = \frac{2m l^2 \dot{\theta}^2}{3}
+$$
+
+*Kind:* kinematic
+
+### (2) Equation of motion
+
+$$
+\ddot{\theta} = \frac{3g}{2l} \sin \theta
+$$
+
+*Kind:* on-shell
+"#;
+
+#[test]
+fn a_users_folder_outside_the_crate_gets_a_verdict_per_display_with_file_and_line() {
+    let dir = std::env::temp_dir().join(format!("ladder-homework-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    std::fs::write(dir.join("homework.md"), HOMEWORK).expect("write");
+    let out = Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .current_dir(&dir)
+        .args(["verify", "--equations", ".", "--json"])
+        .output()
+        .expect("ladder runs");
+    assert_eq!(out.status.code(), Some(1));
+    let v: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    assert_eq!(v["equations"].as_array().map(Vec::len), Some(2));
+    let (one, two) = (row(&v, "(1)"), row(&v, "(2)"));
+    assert_eq!(
+        (&one["status"], &two["status"]),
+        (&"verified".into(), &"failed".into())
+    );
+    assert_eq!(one["doc"], "./homework.md:3");
+    assert_eq!(two["doc"], "./homework.md:11");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("failed: (2) (./homework.md:11)"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -167,8 +167,9 @@ pub fn verify(
         line(
             &mut text,
             format!(
-                "docs: {} equations found in equations/*.md, {} example rows run, {} problems",
+                "docs: {} equations found in {}/*.md, {} example rows run, {} problems",
                 docs.equations_found,
+                crate::docs::note_dir().display(),
                 docs.examples_run,
                 docs.problems.len()
             ),
@@ -198,7 +199,10 @@ fn failure_reasons(
     let failed = |rs: &[EquationResult]| -> Vec<String> {
         rs.iter()
             .filter(|r| r.status == crate::verify::Status::Failed)
-            .map(|r| r.label.clone())
+            .map(|r| match &r.doc {
+                Some(at) => format!("{} ({at})", r.label),
+                None => r.label.clone(),
+            })
             .collect()
     };
     let mut out = Vec::new();

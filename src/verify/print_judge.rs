@@ -54,7 +54,8 @@ fn print_alone(r: &mut EquationResult, e: &Equation, p: &PrintReport, cfg: &Conf
             "print: the law is marked at `=` no. {}, but off the motion the display breaks at {found:?}",
             law.step
         )),
-        (None, [step]) => {
+        // A display that fails on the motion has no law step to find.
+        (None, [step]) if p.problems.is_empty() => {
             r.law_step = Some(*step);
             r.law = Some(LAW_FOUND);
         }

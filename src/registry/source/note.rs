@@ -114,6 +114,20 @@ impl Note {
                     bad.push(err(c.line, format!("{label}: {reason}")));
                 }
             }
+            let src = match &s.continues {
+                Some(prefix) => format!("{prefix} {}", s.latex),
+                None => s.latex.clone(),
+            };
+            // The floor phase's prints are checked by their Rust functions only (see
+            // `verify::judge_with_print`); every other print must be readable.
+            let print_checked = s.number < EXTENSION_BASE || s.checks.is_empty();
+            let parsed = crate::print::parser::parse_display(&src);
+            if let (true, Err(reason)) = (print_checked, parsed) {
+                bad.push(err(
+                    s.latex_line,
+                    format!("{label}: the display cannot be read as LaTeX of the note: {reason}"),
+                ));
+            }
             if let Some((name, line)) = &s.states {
                 if let Err(reason) = fns::print_states(name) {
                     bad.push(err(*line, format!("{label}: {reason}")));
