@@ -17,7 +17,7 @@ use std::process::{Command, Output};
 
 /// Display (91): the torque analysis about Q, a quarter of the way from C to D, in a chapter
 /// of its own that declares the point and its symbols.
-pub const QUARTER_POINT: &str = r#"# Sec. 2.8 — Torque analysis about a quarter point Q, eq. (91)
+const QUARTER_POINT: &str = r#"# Sec. 2.8 — Torque analysis about a quarter point Q, eq. (91)
 
 Q is the point of the ladder a quarter of the way from C to D: at distance l/2 from the centre
 of mass, so I_Q = I_cm + m(l/2)² = 7ml²/12, and the ladder turns rigidly about it.
@@ -43,7 +43,7 @@ at C arm l cos θ/2; the coordinate force −m a_Q at the centre of mass adds it
 "#;
 
 /// A fresh copy of the crate's `equations/` (with its figures) under the system's temp dir.
-pub fn copy_of_equations(name: &str) -> PathBuf {
+fn copy_of_equations(name: &str) -> PathBuf {
     fn copy(from: &Path, to: &Path) {
         std::fs::create_dir_all(to).expect("temp dir");
         for e in std::fs::read_dir(from).expect("readable").flatten() {

@@ -6,6 +6,21 @@ use serde_json::Value;
 use std::collections::BTreeMap;
 use std::process::Command;
 
+/// The lines of a markdown text outside its fenced code blocks (EXTENDING.md shows sections as
+/// examples inside them).
+fn outside_code(text: &str) -> Vec<&str> {
+    let mut fenced = false;
+    text.lines()
+        .filter(|l| {
+            if l.trim_start().starts_with("```") {
+                fenced = !fenced;
+                return false;
+            }
+            !fenced
+        })
+        .collect()
+}
+
 /// Every display heading `### (N) Title` or `### (Pk) Title` of the book, by label: a line scan
 /// of the files, not the crate's parser.
 fn headings() -> BTreeMap<String, String> {
@@ -16,7 +31,7 @@ fn headings() -> BTreeMap<String, String> {
         if p.extension().is_none_or(|x| x != "md") {
             continue;
         }
-        for line in std::fs::read_to_string(&p).expect("readable").lines() {
+        for line in outside_code(&std::fs::read_to_string(&p).expect("readable")) {
             let Some(rest) = line.strip_prefix("### (") else {
                 continue;
             };
@@ -38,7 +53,7 @@ fn laws() -> BTreeMap<String, String> {
     for f in std::fs::read_dir(&dir).expect("equations/").flatten() {
         let text = std::fs::read_to_string(f.path()).unwrap_or_default();
         let mut label = None;
-        for line in text.lines() {
+        for line in outside_code(&text) {
             if let Some(rest) = line.strip_prefix("### (") {
                 label = rest.split_once(')').map(|(l, _)| format!("({l})"));
             }
