@@ -46,6 +46,7 @@ pub mod clash;
 pub mod eval;
 pub mod lexer;
 pub mod parser;
+pub mod point;
 pub mod quantity;
 pub mod render;
 pub mod symbols;

@@ -304,11 +304,13 @@ pub(crate) fn form_text<'a>(chains: &'a [Vec<Form>], label: &str) -> &'a str {
 }
 
 mod inject;
+mod motion;
 pub mod prove;
 mod run;
 pub mod units;
 pub use crate::registry::sample::PrintSample;
 pub use inject::{injections, run_injection, Injection, Outcome, Typo};
+pub use motion::OFF_MOTION_POINTS;
 pub use run::{
     check_print, check_print_with, print_sample, sample_check, PRINT_EXACT_POINTS,
     PRINT_FLOAT_CASES,

@@ -13,7 +13,7 @@ const NOTE_POINTS: [&str; 9] = ["A", "B", "C", "D", "E", "O", "P", "cm", "Cfixed
 /// units of l), or why it is neither.
 pub fn point_id(text: &str) -> Result<String, String> {
     let t = text.trim();
-    match crate::print::quantity::parse_point(t) {
+    match crate::print::point::parse_point(t) {
         Some(_) => Ok(t.to_string()),
         None => Err(format!(
             "'{t}' is not ladder:FRACTION (between 0 = C and 1 = D) or lab:X,Y (in units of l)"
