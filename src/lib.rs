@@ -7,8 +7,9 @@
 //! * [`ladder`]: the note's ladder: geometry, energy, forces, torque analyses about A-E and any
 //!   point, Jensen's methods; plus the three-particle model used as the independent reference.
 //! * [`milne`]: Appendix B, Milne's names for ours.
-//! * [`registry`]: one entry per equation (1)-(90) with its checks; [`verify`] runs them and
-//!   lists the errata; [`docs`] holds the book `equations/*.md` against the registry.
+//! * [`registry`]: one entry per display of the note, built from its section of the markdown
+//!   `equations/*.md` (embedded in the binary), with its checks; [`verify`] runs them and lists
+//!   the errata; [`docs`] holds the book's files, examples and figures against the code.
 //! * [`method`]: the trait a new derivation of the equation of motion implements to be checked.
 //! * [`sim`], [`report`]: the simulator (scenes, models, integrators, exact reference) and its
 //!   reports (work-precision, plots).

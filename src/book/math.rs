@@ -108,7 +108,7 @@ mod tests {
 
     #[test]
     fn every_display_of_the_note_renders() {
-        for n in 1..=90 {
+        for n in crate::registry::equations().iter().map(|e| e.number) {
             let m = mathml(crate::registry::printed_latex(n), true)
                 .unwrap_or_else(|e| panic!("({n}): {e}"));
             assert!(

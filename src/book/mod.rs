@@ -33,7 +33,7 @@ use std::process::ExitCode;
 
 /// Everything the book shows that comes from running the checks.
 pub struct BookData {
-    /// The 90 displays of the note, judged.
+    /// The displays of the note, judged.
     pub results: Vec<EquationResult>,
     /// The extension beyond the note, (P1)-(P5).
     pub extensions: Vec<EquationResult>,
@@ -47,6 +47,8 @@ pub struct BookData {
     pub docs_problems: Vec<String>,
     /// The summary line of `ladder verify`.
     pub summary: String,
+    /// The folder of markdown the book is made from (`equations/`, or `--equations DIR`).
+    pub dir: std::path::PathBuf,
 }
 
 impl BookData {
@@ -54,7 +56,8 @@ impl BookData {
     pub fn gather(cfg: &Config) -> BookData {
         let t = std::time::Instant::now();
         let results = crate::verify::verify_all(cfg);
-        let docs = crate::docs::check_book(&crate::docs::default_dir());
+        let dir = crate::docs::note_dir();
+        let docs = crate::docs::check_book(&dir);
         let summary =
             crate::verify::summary::summary_line(&results, cfg, t.elapsed().as_secs_f64());
         BookData {
@@ -65,6 +68,7 @@ impl BookData {
             docs_problems: docs.problems,
             summary,
             results,
+            dir,
         }
     }
 
@@ -72,8 +76,7 @@ impl BookData {
     /// every method passed and the markdown matches the registry.
     pub fn all_good(&self) -> bool {
         let ok = |r: &EquationResult| r.status != crate::verify::Status::Failed;
-        self.results.len() == 90
-            && self.results.iter().all(ok)
+        self.results.iter().all(ok)
             && self.extensions.iter().all(ok)
             && self.methods.iter().all(|m| m.passed)
             && self.docs_problems.is_empty()
@@ -92,7 +95,8 @@ pub struct Built {
     pub problems: Vec<String>,
 }
 
-/// Make the book from the markdown under `root/equations` and the check results.
+/// Make the book from the markdown of `data.dir` (source pages from `root`) and the check
+/// results.
 pub fn build(root: &Path, data: &BookData) -> Built {
     site::build(root, data)
 }
@@ -129,6 +133,21 @@ pub fn command(out: &Path, cfg: &Config) -> ExitCode {
     if built.problems.is_empty() && data.all_good() {
         ExitCode::SUCCESS
     } else {
+        let failed: Vec<&str> = data
+            .results
+            .iter()
+            .chain(&data.extensions)
+            .filter(|r| r.status == crate::verify::Status::Failed)
+            .map(|r| r.label.as_str())
+            .collect();
+        eprintln!(
+            "ladder book: written, exit 1: {} failed displays{}; {} problems of the book, {} of its files; {} methods failed",
+            failed.len(),
+            if failed.is_empty() { String::new() } else { format!(" ({})", failed.join(", ")) },
+            built.problems.len(),
+            data.docs_problems.len(),
+            data.methods.iter().filter(|m| !m.passed).count()
+        );
         ExitCode::from(1)
     }
 }

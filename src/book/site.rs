@@ -112,7 +112,7 @@ fn resolve(
 
 /// Make every file of the book.
 pub fn build(root: &Path, data: &BookData) -> Built {
-    let dir = root.join("equations");
+    let dir = data.dir.clone();
     let mut problems = Vec::new();
     let readme = std::fs::read_to_string(dir.join("README.md")).unwrap_or_else(|e| {
         problems.push(format!("equations/README.md: cannot read: {e}"));

@@ -117,6 +117,14 @@ pub fn errata_command(json_out: bool, cfg: &Config, columns: usize) -> ExitCode 
     if all_good {
         ExitCode::SUCCESS
     } else {
+        let claims = prose
+            .iter()
+            .filter(|c| !(c.holds && c.printed_fails != Some(false)))
+            .count();
+        let units = list.iter().filter(|r| !r.units.holds()).count();
+        eprintln!(
+            "ladder errata: exit 1: {claims} prose claims do not hold as recorded, {units} errata fail their units witness"
+        );
         ExitCode::from(1)
     }
 }

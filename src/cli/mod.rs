@@ -22,13 +22,18 @@ use std::process::ExitCode;
     about = "The sliding ladder: the note's equations checked, the fall simulated"
 )]
 struct Cli {
+    /// Read the displays from this folder of markdown instead of the note built in: every
+    /// `*.md` file, each display a section `### (N) Title`, its LaTeX between `$$` lines and a
+    /// line `*Kind:* …` (see equations/README.md); for verify, show, errata and book.
+    #[arg(long, global = true, value_name = "DIR")]
+    equations: Option<std::path::PathBuf>,
     #[command(subcommand)]
     command: Option<Command>,
 }
 
 #[derive(Subcommand)]
 enum Command {
-    /// Check every numbered equation (1)-(90): one row per equation.
+    /// Check every numbered display of the note: one row per display.
     Verify(verify::VerifyArgs),
     /// One display in depth: print, symbols, every form's value at a state, its checks.
     Show(show::ShowArgs),
@@ -58,6 +63,14 @@ pub fn run() -> ExitCode {
             return ExitCode::from(code);
         }
     };
+    if let Some(dir) = &cli.equations {
+        if let Err(code) = use_folder(dir) {
+            return code;
+        }
+    }
+    if let Some(code) = note_unreadable() {
+        return code;
+    }
     match cli.command {
         None => {
             let verified = verify::verify(
@@ -84,4 +97,32 @@ pub fn run() -> ExitCode {
         Some(Command::Show(a)) => show::run(a),
         Some(Command::Book(a)) => book::run(a),
     }
+}
+
+/// The note in use could not be read in full: every problem on stderr as `file:line: reason`,
+/// exit 2. (The embedded note reads cleanly, a test shows; this catches a binary built from an
+/// edited `equations/` whose section is malformed.)
+fn note_unreadable() -> Option<ExitCode> {
+    let errors = &crate::registry::source::current().errors;
+    if errors.is_empty() {
+        return None;
+    }
+    for e in errors {
+        eprintln!("ladder: {e}");
+    }
+    Some(ExitCode::from(2))
+}
+
+/// Read the displays from `dir` for the rest of the run; a folder that cannot be read is one
+/// line on stderr and exit 2 (a malformed section is reported by [`note_unreadable`]).
+fn use_folder(dir: &std::path::Path) -> Result<(), ExitCode> {
+    let note = crate::registry::source::Note::from_dir(dir).map_err(|e| {
+        eprintln!("ladder: {e}");
+        ExitCode::from(2)
+    })?;
+    crate::registry::source::use_note(note).map_err(|e| {
+        eprintln!("ladder: {e}");
+        ExitCode::from(2)
+    })?;
+    Ok(())
 }

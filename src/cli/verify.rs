@@ -98,7 +98,7 @@ pub fn verify(
             }
         }
     };
-    let docs = crate::docs::check_book(&crate::docs::default_dir());
+    let docs = crate::docs::check_book(&crate::docs::note_dir());
     let methods = crate::verify::check_methods(cfg);
     let extensions = crate::verify::verify_extensions(cfg);
     let seconds = t.elapsed().as_secs_f64();
@@ -167,8 +167,9 @@ pub fn verify(
         line(
             &mut text,
             format!(
-                "docs: {} equations found in equations/*.md, {} example rows run, {} problems",
+                "docs: {} equations found in {}/*.md, {} example rows run, {} problems",
                 docs.equations_found,
+                crate::docs::note_dir().display(),
                 docs.examples_run,
                 docs.problems.len()
             ),
@@ -179,12 +180,51 @@ pub fn verify(
         line(&mut text, "details of one display: ladder show N (e.g. ladder show 25 --at \"m=2, l=1.5, theta=40deg\")".into());
         print!("{text}");
     }
-    let complete = only.is_some() || results.len() == 90;
-    if f == 0 && docs.problems.is_empty() && complete && methods.iter().all(|m| m.passed) {
+    let reasons = failure_reasons(&results, &extensions, docs.problems.len(), &methods);
+    if reasons.is_empty() {
         ExitCode::SUCCESS
     } else {
+        eprintln!("ladder verify: exit 1: {}", reasons.join("; "));
         ExitCode::from(1)
     }
+}
+
+/// Why `ladder verify` exits 1, one phrase per reason (empty: it exits 0).
+fn failure_reasons(
+    results: &[EquationResult],
+    extensions: &[EquationResult],
+    doc_problems: usize,
+    methods: &[crate::verify::MethodResult],
+) -> Vec<String> {
+    let failed = |rs: &[EquationResult]| -> Vec<String> {
+        rs.iter()
+            .filter(|r| r.status == crate::verify::Status::Failed)
+            .map(|r| match &r.doc {
+                Some(at) => format!("{} ({at})", r.label),
+                None => r.label.clone(),
+            })
+            .collect()
+    };
+    let mut out = Vec::new();
+    let (note, ext) = (failed(results), failed(extensions));
+    if !note.is_empty() {
+        out.push(format!("failed: {}", note.join(", ")));
+    }
+    if !ext.is_empty() {
+        out.push(format!("failed beyond the note: {}", ext.join(", ")));
+    }
+    if doc_problems > 0 {
+        out.push(format!("{doc_problems} problems in the book's files"));
+    }
+    let bad: Vec<&str> = methods
+        .iter()
+        .filter(|m| !m.passed)
+        .map(|m| m.name)
+        .collect();
+    if !bad.is_empty() {
+        out.push(format!("methods failed: {}", bad.join(", ")));
+    }
+    out
 }
 
 /// The largest Schwartz-Zippel bound of the run as a power of ten (rounded up, as the summary

@@ -1,26 +1,23 @@
-//! Doc-as-test: the book in `equations/*.md` is held against the registry.
+//! Doc-as-test: the book in `equations/*.md` is the note the registry is built from, and the
+//! figures and examples it states are what the code computes.
 //!
-//! Every markdown file is parsed with pulldown-cmark (math enabled). A heading that starts with
-//! `(N)` opens the section of equation N; in it the harness requires
-//!
-//! * the first display-math block to equal the registry's printed LaTeX (whitespace aside),
-//! * every function named in a link's inline code to be one of the registry's functions for N,
-//!   and at least one such link,
-//! * a line `*Kind:* <kind>` naming the registry's kind,
-//!
-//! and across all files every number 1..=90 exactly once. A table whose first header cell is
-//! an inline-code name of an example function ([`examples`]) is executable: each row gives the
-//! inputs, the expected value and the tolerance, and is run. Every problem is reported as
-//! `file:line: message`; nothing panics on malformed input.
+//! The registry is derived from the markdown ([`crate::registry::source`]), so the book and the
+//! registry cannot disagree about a display; what can go wrong is the folder itself (a section
+//! the parser cannot read: `file:line: reason`), a binary built from another version of it (a
+//! section that differs from the note in use is reported, with its line: rebuild), and the prose
+//! around the displays. A table whose first header cell is an inline-code name of an example
+//! function ([`examples`]) is executable: each row gives the inputs, the expected value and the
+//! tolerance, and is run. A worked example ([`worked`]) must be what the code generates now.
+//! Every problem is reported as `file:line: message`; nothing panics on malformed input.
 
 pub mod examples;
 pub mod facts;
 pub mod pages;
 pub mod worked;
 
-use crate::registry::{equations, extensions};
+use crate::registry::source::{Note, Section};
+use crate::registry::{label_of, EXTENSION_BASE};
 use pulldown_cmark::{Event, Options, Parser, Tag, TagEnd};
-use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// The result of checking the book.
@@ -28,7 +25,7 @@ use std::path::{Path, PathBuf};
 pub struct BookReport {
     /// Every problem found, as `file:line: message`.
     pub problems: Vec<String>,
-    /// Number of distinct equations found.
+    /// Number of the note's displays found (extensions (Pk) left out).
     pub equations_found: usize,
     /// Example table rows run.
     pub examples_run: usize,
@@ -44,161 +41,126 @@ pub fn default_dir() -> PathBuf {
     }
 }
 
-/// Collapse whitespace so that line breaks in the markdown do not matter.
-pub fn normalize_latex(s: &str) -> String {
-    s.split_whitespace().collect::<Vec<_>>().join(" ")
+/// The folder of the note in use: `ladder --equations DIR`'s, else this crate's `equations/`.
+pub fn note_dir() -> PathBuf {
+    crate::registry::source::current()
+        .dir
+        .clone()
+        .unwrap_or_else(default_dir)
 }
+
+pub use crate::registry::source::normalize_latex;
 
 fn line_of(src: &str, offset: usize) -> usize {
     src[..offset.min(src.len())].matches('\n').count() + 1
 }
 
-/// Check every `*.md` file in `dir` (sorted by name).
+/// Check the book in `dir` against the note in use ([`crate::registry::source::current`]).
 pub fn check_book(dir: &Path) -> BookReport {
+    check_book_against(dir, crate::registry::source::current())
+}
+
+/// Check the book in `dir`: every section readable, each the same as in `built` (the note the
+/// registry was built from), every example and worked example as the code computes it.
+pub fn check_book_against(dir: &Path, built: &Note) -> BookReport {
     let mut rep = BookReport::default();
-    let mut files: Vec<PathBuf> = match std::fs::read_dir(dir) {
-        Ok(rd) => rd
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.extension().is_some_and(|x| x == "md"))
-            .collect(),
+    let note = match Note::from_dir(dir) {
+        Ok(n) => n,
         Err(e) => {
-            rep.problems
-                .push(format!("{}: cannot read the directory: {e}", dir.display()));
+            rep.problems.push(e.to_string());
             return rep;
         }
     };
+    rep.problems
+        .extend(note.errors.iter().map(ToString::to_string));
+    in_step(&note, built, &mut rep.problems);
+    rep.equations_found = note
+        .sections
+        .iter()
+        .filter(|s| s.number < EXTENSION_BASE)
+        .count();
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map(|rd| rd.flatten().map(|e| e.path()).collect())
+        .unwrap_or_default();
+    files.retain(|p| p.extension().is_some_and(|x| x == "md"));
     files.sort();
-    let mut seen: BTreeMap<u32, String> = BTreeMap::new();
     for f in &files {
-        match std::fs::read_to_string(f) {
-            Ok(src) => check_file(&f.display().to_string(), &src, &mut seen, &mut rep),
-            Err(e) => rep
-                .problems
-                .push(format!("{}:1: cannot read: {e}", f.display())),
-        }
-    }
-    for n in 1..=90 {
-        if !seen.contains_key(&n) {
-            rep.problems.push(format!(
-                "{}: equation ({n}) is not documented in any file",
-                dir.display()
-            ));
-        }
-    }
-    for e in extensions() {
-        if !seen.contains_key(&e.number) {
-            rep.problems.push(format!(
-                "{}: extension {} is not documented in any file",
-                dir.display(),
-                e.label()
-            ));
+        if let Ok(src) = std::fs::read_to_string(f) {
+            check_file(&f.display().to_string(), &src, &mut rep);
         }
     }
     facts::check_facts(dir, &facts::facts(), &mut rep.problems);
-    rep.equations_found = seen.keys().filter(|&&n| n <= 90).count();
     rep
 }
 
-/// What one equation's section contained.
-#[derive(Default)]
-struct Section {
-    number: u32,
-    line: usize,
-    start: usize,
-    math: Option<(String, usize)>,
-    functions: Vec<(String, usize)>,
+/// What of a section the registry uses, for comparing two versions of it (not its place).
+fn content(s: &Section) -> impl PartialEq + '_ {
+    (
+        (&s.title, &s.section, &s.latex, s.kind, &s.functions),
+        (&s.checks, &s.law, &s.erratum, &s.continues),
+    )
 }
 
-/// Check one markdown source; `name` is used in messages.
-pub fn check_file(name: &str, src: &str, seen: &mut BTreeMap<u32, String>, rep: &mut BookReport) {
-    let registry: Vec<_> = equations().into_iter().chain(extensions()).collect();
-    let mut sections: Vec<Section> = Vec::new();
-    let mut heading: Option<(String, usize)> = None;
-    let (mut in_link, mut in_table, mut in_header) = (false, false, false);
+/// The sections of the folder against those of the note the registry was built from: a
+/// difference means the binary was built from another version of the markdown.
+fn in_step(folder: &Note, built: &Note, problems: &mut Vec<String>) {
+    let built_from = "the note this binary was built from";
+    let rebuild = "(rebuild: cargo build)";
+    for s in &folder.sections {
+        let at = format!("{}:{}", s.file, s.line);
+        let label = label_of(s.number);
+        match built.section(s.number) {
+            None => problems.push(format!("{at}: {label} is not in {built_from} {rebuild}")),
+            Some(b) if content(b) != content(s) => {
+                problems.push(format!("{at}: {label} differs from {built_from} {rebuild}"))
+            }
+            Some(_) => {}
+        }
+    }
+    for b in &built.sections {
+        let label = label_of(b.number);
+        let gone = folder.section(b.number).is_none();
+        let broken = folder.errors.iter().any(|e| e.reason.starts_with(&label));
+        if gone && !broken {
+            problems.push(format!(
+                "{}:{}: {label} of {built_from} is not in the folder {rebuild}",
+                b.file, b.line
+            ));
+        }
+    }
+}
+
+/// Run the example tables and worked examples of one markdown source; `name` is used in
+/// messages.
+pub fn check_file(name: &str, src: &str, rep: &mut BookReport) {
+    let mut in_table = false;
     let mut table: Vec<Vec<String>> = Vec::new();
     let mut table_line = 0;
     let mut cell = String::new();
     for (ev, range) in
         Parser::new_ext(src, Options::ENABLE_MATH | Options::ENABLE_TABLES).into_offset_iter()
     {
-        let line = line_of(src, range.start);
         match ev {
-            Event::Start(Tag::Heading { .. }) => heading = Some((String::new(), line)),
-            Event::End(TagEnd::Heading(_)) => {
-                if let Some((text, hl)) = heading.take() {
-                    if let Some(n) = heading_number(&text) {
-                        let here = format!("{name}:{hl}");
-                        if let Some(first) = seen.get(&n) {
-                            rep.problems.push(format!(
-                                "{here}: equation ({n}) documented twice (first at {first})"
-                            ));
-                        } else if !(1..=90).contains(&n) && !registry.iter().any(|e| e.number == n)
-                        {
-                            rep.problems.push(format!(
-                                "{here}: {text} is not an equation of the note (1..=90) or a registered extension"
-                            ));
-                        } else {
-                            seen.insert(n, here);
-                        }
-                        sections.push(Section {
-                            number: n,
-                            line: hl,
-                            start: range.start,
-                            ..Default::default()
-                        });
-                    }
-                }
-            }
-            Event::Text(t) | Event::Code(t) if heading.is_some() => {
-                if let Some((h, _)) = heading.as_mut() {
-                    h.push_str(&t)
-                }
-            }
-            Event::DisplayMath(m) => {
-                if let Some(s) = sections.last_mut() {
-                    if s.math.is_none() {
-                        s.math = Some((m.to_string(), line));
-                    }
-                }
-            }
-            Event::Start(Tag::Link { .. }) => in_link = true,
-            Event::End(TagEnd::Link) => in_link = false,
             Event::Start(Tag::Table(_)) => {
                 in_table = true;
                 table.clear();
-                table_line = line;
+                table_line = line_of(src, range.start);
             }
             Event::End(TagEnd::Table) => {
                 in_table = false;
                 rep.examples_run +=
                     examples::run_table(&format!("{name}:{table_line}"), &table, &mut rep.problems);
             }
-            Event::Start(Tag::TableHead) => {
-                in_header = true;
-                table.push(Vec::new());
-            }
-            Event::End(TagEnd::TableHead) => in_header = false,
-            Event::Start(Tag::TableRow) => table.push(Vec::new()),
+            Event::Start(Tag::TableHead) | Event::Start(Tag::TableRow) => table.push(Vec::new()),
             Event::Start(Tag::TableCell) => cell.clear(),
             Event::End(TagEnd::TableCell) => {
                 if let Some(row) = table.last_mut() {
                     row.push(cell.trim().to_string());
                 }
             }
-            Event::Code(c) => {
-                if in_table {
-                    cell.push_str(&c);
-                } else if in_link {
-                    if let Some(s) = sections.last_mut() {
-                        s.functions.push((c.to_string(), line));
-                    }
-                }
-            }
-            Event::Text(t) if in_table => cell.push_str(&t),
-            Event::InlineMath(t) if in_table => cell.push_str(&t),
+            Event::Code(t) | Event::Text(t) | Event::InlineMath(t) if in_table => cell.push_str(&t),
             _ => {}
         }
-        let _ = in_header;
     }
     for (number, line, text) in worked::blocks(src) {
         match worked::worked_example(number) {
@@ -211,100 +173,6 @@ pub fn check_file(name: &str, src: &str, seen: &mut BTreeMap<u32, String>, rep: 
         }
         rep.examples_run += 1;
     }
-    for (k, s) in sections.iter().enumerate() {
-        let end = sections.get(k + 1).map_or(src.len(), |n| n.start);
-        check_section(name, &src[s.start..end], s, &registry, rep);
-    }
-}
-
-/// The number in a heading "(12) ..." (12), or "(P3) ..." for an extension (1003).
-fn heading_number(text: &str) -> Option<u32> {
-    let t = text.trim_start();
-    let rest = t.strip_prefix('(')?;
-    let close = rest.find(')')?;
-    let inner = rest[..close].trim();
-    match inner.strip_prefix('P') {
-        Some(k) => k
-            .parse::<u32>()
-            .ok()
-            .map(|k| crate::registry::EXTENSION_BASE + k),
-        None => inner.parse().ok(),
-    }
-}
-
-fn check_section(
-    name: &str,
-    body: &str,
-    s: &Section,
-    registry: &[crate::registry::Equation],
-    rep: &mut BookReport,
-) {
-    let at = |line: usize| format!("{name}:{line}");
-    let Some(entry) = registry.iter().find(|e| e.number == s.number) else {
-        rep.problems.push(format!(
-            "{}: equation ({}) has no registry entry",
-            at(s.line),
-            s.number
-        ));
-        return;
-    };
-    match &s.math {
-        None => rep.problems.push(format!(
-            "{}: equation ({}) has no display math block",
-            at(s.line),
-            s.number
-        )),
-        Some((m, line)) => {
-            if normalize_latex(m) != normalize_latex(entry.latex()) {
-                rep.problems.push(format!(
-                    "{}: the LaTeX of ({}) differs from the registry's printed form",
-                    at(*line),
-                    s.number
-                ));
-            }
-        }
-    }
-    if s.functions.is_empty() {
-        rep.problems.push(format!(
-            "{}: equation ({}) links to no function",
-            at(s.line),
-            s.number
-        ));
-    }
-    for (f, line) in &s.functions {
-        if !entry.functions.contains(&f.as_str()) {
-            rep.problems.push(format!(
-                "{}: `{f}` is not a registry function of ({})",
-                at(*line),
-                s.number
-            ));
-        }
-    }
-    check_law_line(&at(s.line), body, entry, rep);
-    let kind = body
-        .lines()
-        .find_map(|l| l.split("Kind:*").nth(1).or_else(|| l.split("Kind:").nth(1)));
-    match kind.map(|k| {
-        k.trim()
-            .trim_start_matches('*')
-            .split_whitespace()
-            .next()
-            .unwrap_or("")
-            .trim_end_matches(['.', ',', '·'])
-    }) {
-        Some(k) if k == entry.kind.name() => {}
-        Some(k) => rep.problems.push(format!(
-            "{}: ({}) says kind '{k}', the registry says '{}'",
-            at(s.line),
-            s.number,
-            entry.kind.name()
-        )),
-        None => rep.problems.push(format!(
-            "{}: ({}) does not state its kind (*Kind:* ...)",
-            at(s.line),
-            s.number
-        )),
-    }
 }
 
 /// "1st", "2nd", "3rd", "4th", ...
@@ -316,34 +184,4 @@ pub fn ordinal(n: u32) -> String {
         _ => "th",
     };
     format!("{n}{suffix}")
-}
-
-/// The line that marks the law of motion in a section: `*Law:* the 2nd `=` ...`.
-pub fn law_line(step: u32) -> String {
-    format!("*Law:* the {} `=`", ordinal(step))
-}
-
-/// A display whose registry entry marks a law step must say so in a `*Law:*` line naming the
-/// same `=`; a display without one must not claim a law step.
-fn check_law_line(at: &str, body: &str, entry: &crate::registry::Equation, rep: &mut BookReport) {
-    let stated = body.lines().find(|l| l.starts_with("*Law:*"));
-    match (entry.law, stated) {
-        (Some(law), Some(line)) if line.starts_with(&law_line(law.step)) => {}
-        (Some(law), Some(line)) => rep.problems.push(format!(
-            "{at}: ({}) marks the law as \"{}\", the registry at the {} `=`",
-            entry.number,
-            line.chars().take(40).collect::<String>(),
-            ordinal(law.step)
-        )),
-        (Some(law), None) => rep.problems.push(format!(
-            "{at}: ({}) does not say which `=` is the law of motion (expected a line \"{} ...\")",
-            entry.number,
-            law_line(law.step)
-        )),
-        (None, Some(_)) => rep.problems.push(format!(
-            "{at}: ({}) has a *Law:* line but the registry marks no law step",
-            entry.number
-        )),
-        (None, None) => {}
-    }
 }

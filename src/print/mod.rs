@@ -1,6 +1,6 @@
 //! The note's printed LaTeX as the thing checked (issue 9).
 //!
-//! Each display of the note (the registry's verbatim copy, `src/registry/latex.rs`) is parsed
+//! Each display of the note (as its section in `equations/*.md` prints it) is parsed
 //! into an expression tree ([`ast`]), its symbols are mapped to quantities of the independent
 //! models by one data file, `src/print/symbols.toml` ([`symbols`], [`quantity`]), and every form
 //! is evaluated in any [`crate::scalar::Scalar`] ([`eval`]): f64 with running error bounds, exact
@@ -37,15 +37,16 @@
 //! interpretation pass this parser is; the grammar above is small enough to own.
 //!
 //! # Garble repairs
-//! None are needed for the current copy: every display of `latex.rs` parses as extracted. The
-//! one structural fix is a continuation, not a garble: (57) begins with `=`, continuing (56)'s
-//! chain from its last form τ_P (`CONTINUATIONS` in `registry::print_check`). Misprints are never
-//! repaired here: they are recorded as errata and must fail (`MISPRINTS`).
+//! None are needed: every display of the markdown parses as printed. The one structural fix is a
+//! continuation, not a garble: (57) begins with `=`, continuing (56)'s chain from its last form
+//! τ_P (`registry::print_check::continuation`, found from the markdown). Misprints are never
+//! repaired here: they are recorded as errata and must fail (`registry::print_check::misprints`).
 pub mod ast;
 pub mod clash;
 pub mod eval;
 pub mod lexer;
 pub mod parser;
+pub mod point;
 pub mod quantity;
 pub mod render;
 pub mod symbols;

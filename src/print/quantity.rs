@@ -3,9 +3,13 @@
 //! moving point P ([`crate::system`]). Velocities and accelerations come from automatic
 //! differentiation along the motion; contact forces are those the motion requires.
 //!
-//! A quantity id is a name, optionally `:point` (A-E, cm for the ladder) and `.x`/`.y`/`.z` for a
-//! component: `L_abs:A.z` is the z component of the angular momentum about A.
+//! A quantity id is a name, optionally `:point` and `.x`/`.y`/`.z` for a component:
+//! `angular_momentum:A.z` is the z component of the angular momentum about A. A point is one of
+//! the note's (A-E, cm, O; P of a particle sample), a point of the ladder by the fraction of the
+//! way from C to D (`ladder:1/4`), or a point fixed in the lab in units of l (`lab:1/2,3/2`)
+//! ([`super::point::parse_point`]).
 
+use super::point::parse_point;
 use crate::ladder::analysis::{Reference, ReferencePoint};
 use crate::ladder::geometry::corner_position;
 use crate::ladder::geometry::Corner;
@@ -240,6 +244,10 @@ fn whole<S: Scalar>(id: &str, index: Option<usize>, model: &Model<S>) -> Result<
             (_, Some("cm")) => Ok(sys.cm_point()),
             // The lab point where C is at this instant (at rest).
             (Model::Ladder { c_now, .. }, Some("Cfixed")) => Ok(Point::fixed(c_now.clone())),
+            (Model::Ladder { ladder, state, .. }, Some(k)) if parse_point(k).is_some() => {
+                let r = parse_point(k).ok_or_else(|| format!("no point {k}"))?;
+                Ok(r.motion(ladder, state))
+            }
             (
                 Model::Ladder {
                     ladder,

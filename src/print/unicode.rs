@@ -3,7 +3,7 @@
 //!
 //! Written by hand: the crates that render LaTeX produce MathML or images, and the Unicode
 //! converters (unicodeit and the like) are Python; the note uses a small fixed vocabulary (the
-//! commands counted in `src/registry/latex.rs`), each mapped here. Accents become combining
+//! commands of the displays in `equations/*.md`), each mapped here. Accents become combining
 //! characters (θ̇, θ̈, ẑ, r̄), `^2` a superscript, `_i` a subscript where Unicode has one (else
 //! `_cm`, as the registry's labels write it), `\frac{a}{b}` `a/b` with parentheses only around
 //! a compound part, and layout (`aligned`, `&`, `\\`, `\quad`, `\left`, `\Big`) is dropped.

@@ -137,7 +137,8 @@ pub fn float_residual(values: &[Chain<f64>], bounds: &[Chain<Bound>]) -> (f64, &
     worst
 }
 
-fn residual_degree(chains: &[Chain<Degree>]) -> u32 {
+/// The largest degree of a residual of the chains, evaluated in [`Degree`] (Schwartz-Zippel).
+pub(crate) fn residual_degree(chains: &[Chain<Degree>]) -> u32 {
     let mut d = 0;
     for c in chains {
         for s in c {

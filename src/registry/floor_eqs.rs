@@ -1,32 +1,14 @@
 //! Registry entries for the extension beyond the note: the ladder on the floor alone after it
-//! leaves the wall, (P1)-(P5) of `equations/phase2.md`. Checked like the note's own: against the
+//! leaves the wall, (P1)-(P5) of `equations/phase2.md`, whose sections name the chain functions below. Checked like the note's own: against the
 //! free three-particle model, with Lagrange's equations by automatic differentiation.
 
-use super::sample::LadderSample;
-use super::{printed, reference, Chain, Check, Equation, Eval, Kind, EXTENSION_BASE};
-use crate::floor_fns;
+use super::{printed, reference, Chain};
 use crate::ladder::energy::potential_energy;
 use crate::ladder::floor_phase::*;
 use crate::ladder::{solve_for_accel, Ladder, State};
 use crate::scalar::Scalar;
 
 type Chains<S> = Vec<Chain<S>>;
-
-/// The LaTeX of (P1)-(P5), as displayed in `equations/phase2.md`.
-pub fn latex(k: u32) -> &'static str {
-    match k {
-        1 => {
-            r"T = \tfrac12 m \dot X^2 + \tfrac12 m l^2 \left(\sin^2\theta + \tfrac13\right)\dot\theta^2, \qquad V = m g l \cos\theta"
-        }
-        2 => r"\ddot X = 0, \qquad p_x = m \dot X = \text{const}",
-        3 => {
-            r"\left(\sin^2\theta + \tfrac13\right)\ddot\theta + \sin\theta\cos\theta\,\dot\theta^2 = \frac{g}{l}\sin\theta"
-        }
-        4 => r"F_f = m\left(g - l\sin\theta\,\ddot\theta - l\cos\theta\,\dot\theta^2\right)",
-        5 => r"x_C = X - l\sin\theta",
-        _ => "",
-    }
-}
 
 fn p1<S: Scalar>(l: &Ladder<S>, s: &State<S>, x: &Slide<S>) -> Chains<S> {
     let sys = as_system(l, s, x);
@@ -123,94 +105,13 @@ fn p5<S: Scalar>(l: &Ladder<S>, s: &State<S>, x: &Slide<S>) -> Chains<S> {
     ]]
 }
 
-fn check(name: &'static str, sort: LadderSample, f: super::FloorFns) -> Check {
-    Check {
-        name,
-        eval: Eval::Floor(sort, f),
-    }
-}
-
-/// The entries (P1)-(P5), numbered 1001-1005.
-pub(super) fn equations() -> Vec<Equation> {
-    use Kind::*;
-    let e = |k: u32, title, kind, functions, checks| {
-        super::eq(EXTENSION_BASE + k, "ext.", title, kind, functions, checks)
-    };
-    vec![
-        e(
-            1,
-            "Floor phase: energies",
-            Kinematic,
-            &[
-                "ladder::floor_phase::kinetic_energy",
-                "ladder::energy::potential_energy",
-            ],
-            vec![check(
-                "against the free particle model",
-                LadderSample::Kinematic,
-                floor_fns!(p1),
-            )],
-        ),
-        e(
-            2,
-            "Floor phase: the centre keeps its horizontal velocity",
-            OnShell,
-            &["ladder::floor_phase::centre_acceleration"],
-            vec![
-                check(
-                    "Lagrange's X equation (AD) and Newton for the particles",
-                    LadderSample::OnShell,
-                    floor_fns!(p2),
-                ),
-                check(
-                    "Lagrange's X equation is m Ẍ at any state",
-                    LadderSample::Kinematic,
-                    floor_fns!(p2_kinematic),
-                ),
-            ],
-        ),
-        e(
-            3,
-            "Floor phase: equation of motion",
-            OnShell,
-            &[
-                "ladder::floor_phase::angular_acceleration",
-                "ladder::floor_phase::lagrange_residuals",
-            ],
-            vec![
-                check(
-                    "printed form and Lagrange's θ equation (AD)",
-                    LadderSample::OnShell,
-                    floor_fns!(p3),
-                ),
-                check(
-                    "θ̈ solved from Lagrange (AD)",
-                    LadderSample::Kinematic,
-                    floor_fns!(p3_solved),
-                ),
-            ],
-        ),
-        e(
-            4,
-            "Floor phase: floor force",
-            Newton,
-            &["ladder::floor_phase::floor_force"],
-            vec![check(
-                "against Newton for the particles",
-                LadderSample::Kinematic,
-                floor_fns!(p4),
-            )],
-        ),
-        e(
-            5,
-            "Floor phase: where the top is",
-            Definition,
-            &["ladder::floor_phase::top_abscissa"],
-            vec![check(
-                "against the particle model",
-                LadderSample::Kinematic,
-                floor_fns!(p5),
-            )],
-        ),
-    ]
-}
+/// The chain functions of this module, by the names the sections' `*Rust:*` lists use.
+pub(super) const FNS: &[(&str, crate::registry::Fns)] = &[
+    crate::named_fns!(Floor, p1),
+    crate::named_fns!(Floor, p2),
+    crate::named_fns!(Floor, p2_kinematic),
+    crate::named_fns!(Floor, p3),
+    crate::named_fns!(Floor, p3_solved),
+    crate::named_fns!(Floor, p4),
+    crate::named_fns!(Floor, p5),
+];

@@ -1,28 +1,30 @@
-//! The registry: one entry per numbered equation (1)-(90) of the note.
+//! The registry: one entry per numbered display of the note, derived from its markdown.
 //!
-//! An entry names the equation (number, section, title, kind, printed LaTeX), the functions that
-//! encode it, and its checks. A check is a generic function that evaluates the printed forms of
-//! the display, side by side with independent references, as *chains* of values that must all be
-//! equal; it is instantiated for every scalar type by the `ladder_fns!` and `particle_fns!`
-//! macros, so the same code runs in f64, with running error bounds, in exact rationals and in
-//! degree-counting mode. [`check`] runs the checks; [`sample`] draws the states.
+//! Each display's section in `equations/*.md` is its one home ([`source`]): number, title,
+//! section, kind, the LaTeX as printed, the law step, an erratum, and the checks by name. An
+//! entry here is built from that section; only the checks' chain functions are Rust ([`fns`]).
+//! A chain function evaluates the printed forms of the display, side by side with independent
+//! references, as *chains* of values that must all be equal; it is instantiated for every scalar
+//! type by the `ladder_fns!` and `particle_fns!` macros, so the same code runs in f64, with
+//! running error bounds, in exact rationals and in degree-counting mode. [`check`] runs the
+//! checks; [`sample`] draws the states.
 
 pub mod check;
 mod exact_point;
 mod floor_eqs;
+pub mod fns;
 mod general_eqs;
 mod jensen_eqs;
 mod ladder_eqs;
-mod latex;
 pub mod law;
 mod milne_eqs;
 pub mod print_check;
 pub mod prove;
 pub mod sample;
 pub mod side;
+pub mod source;
 pub mod units;
 
-pub use latex::printed_latex;
 pub use law::Law;
 pub use sample::{LadderSample, ParticleSample};
 pub use side::{corrected, misprint, printed, reference, vector_chains, Chain, Role, Side};
@@ -56,6 +58,21 @@ pub enum Kind {
 }
 
 impl Kind {
+    /// Every kind, in the order of the docs.
+    pub const ALL: [Kind; 6] = [
+        Kind::Definition,
+        Kind::Kinematic,
+        Kind::Newton,
+        Kind::OnShell,
+        Kind::General,
+        Kind::Notation,
+    ];
+
+    /// The kind a `*Kind:*` line names, by its kebab-case name.
+    pub fn from_name(name: &str) -> Option<Kind> {
+        Kind::ALL.into_iter().find(|k| k.name() == name)
+    }
+
     /// The kebab-case name used in the docs and the JSON.
     pub fn name(self) -> &'static str {
         match self {
@@ -160,6 +177,40 @@ macro_rules! particle_fns {
     };
 }
 
+/// One chain function in every scalar type, by the model it evaluates on.
+#[derive(Clone, Copy)]
+pub enum Fns {
+    /// On the ladder of the note (both contacts hold).
+    Ladder(LadderFns),
+    /// On a system of particles and a moving point P.
+    Particles(ParticleFns),
+    /// On the ladder off the wall (the floor phase).
+    Floor(FloorFns),
+}
+
+/// The table entry of a chain function: `named_fns!(Ladder, eq25)` is `("eq25", Fns::Ladder(..))`.
+#[macro_export]
+macro_rules! named_fns {
+    (Ladder, $f:ident) => {
+        (
+            stringify!($f),
+            $crate::registry::Fns::Ladder($crate::ladder_fns!($f)),
+        )
+    };
+    (Particles, $f:ident) => {
+        (
+            stringify!($f),
+            $crate::registry::Fns::Particles($crate::particle_fns!($f)),
+        )
+    };
+    (Floor, $f:ident) => {
+        (
+            stringify!($f),
+            $crate::registry::Fns::Floor($crate::floor_fns!($f)),
+        )
+    };
+}
+
 /// How one check evaluates.
 #[derive(Clone, Copy)]
 pub enum Eval {
@@ -191,20 +242,20 @@ pub struct Erratum {
     pub why: &'static str,
 }
 
-/// One numbered equation of the note.
+/// One numbered display, built from its section of the markdown ([`source`]).
 #[derive(Clone)]
 pub struct Equation {
-    /// Its number, 1..=90.
+    /// Its number: N for (N), [`EXTENSION_BASE`] + k for (Pk).
     pub number: u32,
     /// The section of the note ("2.1", "A.1", "B.7", ...).
     pub section: &'static str,
-    /// A one-line title.
+    /// Its title, the heading of its section.
     pub title: &'static str,
     /// Its kind.
     pub kind: Kind,
-    /// The Rust functions that encode it (paths below the crate root).
-    pub functions: &'static [&'static str],
-    /// Its checks.
+    /// The physics functions that encode it (paths below the crate root), from `*Code:*`.
+    pub functions: &'static [String],
+    /// Its checks, from `*Rust:*`.
     pub checks: Vec<Check>,
     /// Present when the printed form is wrong.
     pub erratum: Option<Erratum>,
@@ -212,54 +263,60 @@ pub struct Equation {
     /// `None` when no `=` is (a definition, kinematics, Newton's law solved for a force) or the
     /// law sits inside a general identity of particles, whose model has F_i = m_i a_i built in.
     pub law: Option<Law>,
+    /// The display's LaTeX as printed, whitespace collapsed.
+    pub latex: &'static str,
+    /// For a display that begins with `=`, the last form of the display it continues.
+    pub continues: Option<&'static str>,
+    /// The states of its `*States:*` line, for a print checked alone.
+    pub states: Option<sample::PrintSample>,
+    /// The markdown file of its section.
+    pub file: &'static str,
+    /// The line of its heading.
+    pub line: usize,
 }
 
 /// Numbers of the extension equations (beyond the note) start here: (P1) is 1001.
 pub const EXTENSION_BASE: u32 = 1000;
 
+/// How display `number` is cited: "(12)", or "(P3)" for an extension.
+pub fn label_of(number: u32) -> String {
+    if number > EXTENSION_BASE {
+        format!("(P{})", number - EXTENSION_BASE)
+    } else {
+        format!("({number})")
+    }
+}
+
 impl Equation {
-    /// The printed LaTeX, as in the note (for an extension, as in `equations/phase2.md`).
+    /// The printed LaTeX, as in the note (for an extension, as in its markdown).
     pub fn latex(&self) -> &'static str {
-        if self.number > EXTENSION_BASE {
-            floor_eqs::latex(self.number - EXTENSION_BASE)
-        } else {
-            printed_latex(self.number)
-        }
+        self.latex
     }
     /// How the equation is cited: "(12)", or "(P3)" for an extension.
     pub fn label(&self) -> String {
-        if self.number > EXTENSION_BASE {
-            format!("(P{})", self.number - EXTENSION_BASE)
-        } else {
-            format!("({})", self.number)
-        }
+        label_of(self.number)
     }
+    /// Where its section starts: `equations/05-point-d.md:47`.
+    pub fn place(&self) -> String {
+        format!("{}:{}", self.file, self.line)
+    }
+}
+
+/// The printed LaTeX of display `n` of the note in use, or "" when it has none.
+pub fn printed_latex(n: u32) -> &'static str {
+    source::current()
+        .section(n)
+        .map_or("", |s| s.latex.as_str())
+}
+
+/// The symbol table of the note in use: `symbols.toml`'s entries and those its files declare.
+pub fn symbol_table() -> &'static [crate::print::symbols::Entry] {
+    &source::current().symbols
 }
 
 /// The equations of the extension beyond the note: the floor phase, (P1)-(P5).
 pub fn extensions() -> Vec<Equation> {
-    floor_eqs::equations()
-}
-
-/// Shorthand used by the equation tables.
-pub(crate) fn eq(
-    number: u32,
-    section: &'static str,
-    title: &'static str,
-    kind: Kind,
-    functions: &'static [&'static str],
-    checks: Vec<Check>,
-) -> Equation {
-    Equation {
-        number,
-        section,
-        title,
-        kind,
-        functions,
-        checks,
-        erratum: None,
-        law: None,
-    }
+    source::current().extensions()
 }
 
 /// A ladder check.
@@ -270,23 +327,7 @@ pub(crate) fn on_ladder(name: &'static str, sample: LadderSample, f: LadderFns) 
     }
 }
 
-/// A particle-system check.
-pub(crate) fn on_particles(name: &'static str, sample: ParticleSample, f: ParticleFns) -> Check {
-    Check {
-        name,
-        eval: Eval::Particles(sample, f),
-    }
-}
-
-/// Every equation of the note, in order.
+/// Every display of the note in use, in order of number.
 pub fn equations() -> Vec<Equation> {
-    let mut all = ladder_eqs::equations();
-    all.extend(general_eqs::equations());
-    all.extend(jensen_eqs::equations());
-    all.extend(milne_eqs::equations());
-    all.sort_by_key(|e| e.number);
-    for e in &mut all {
-        e.law = law::law_of(e.number);
-    }
-    all
+    source::current().equations()
 }

@@ -54,6 +54,15 @@ pub enum ParticleSample {
     PlanarRigid,
 }
 
+/// The states a display's print is evaluated at.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PrintSample {
+    /// Ladder states of this sort.
+    Ladder(LadderSample),
+    /// Particle systems of this sort.
+    Particles(ParticleSample),
+}
+
 /// A float ladder sample: as f64 and with error bounds.
 pub type FloatLadder = ((Ladder<f64>, State<f64>), (Ladder<Bound>, State<Bound>));
 /// A float particle sample: as f64 and with error bounds.

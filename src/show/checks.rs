@@ -224,7 +224,7 @@ pub fn encodings(e: &Equation) -> Vec<Vec<String>> {
                 number: e.number,
                 milne: f.milne,
                 index: None,
-                table: crate::print::symbols::table(),
+                table: crate::registry::symbol_table(),
             };
             evaluate(&f.expr, &ctx).ok().map(|v| v.components())
         })

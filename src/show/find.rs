@@ -4,7 +4,8 @@
 
 use crate::print::ast::Expr;
 use crate::print::parser::{canonical, parse_display};
-use crate::print::symbols::{lookup, table};
+use crate::print::symbols::lookup;
+use crate::registry::symbol_table as table;
 use crate::registry::{equations, Equation};
 use serde::Serialize;
 
@@ -17,8 +18,33 @@ pub enum Query {
     Words(String),
 }
 
-/// Read a query; a number outside 1-90 is an error.
+/// Read a query; a number that is not a display of the note in use is an error.
 pub fn parse_query(q: &str) -> Result<Query, String> {
+    let known: Vec<u32> = equations().iter().map(|e| e.number).collect();
+    parse_query_in(q, &known)
+}
+
+/// The numbers `known`, consecutive runs joined: `1-90, 92`.
+fn runs(known: &[u32]) -> String {
+    let mut out: Vec<String> = Vec::new();
+    let mut k = 0;
+    while k < known.len() {
+        let mut j = k;
+        while j + 1 < known.len() && known[j + 1] == known[j] + 1 {
+            j += 1;
+        }
+        out.push(if j == k {
+            known[k].to_string()
+        } else {
+            format!("{}-{}", known[k], known[j])
+        });
+        k = j + 1;
+    }
+    out.join(", ")
+}
+
+/// [`parse_query`] against the given display numbers (sorted).
+pub fn parse_query_in(q: &str, known: &[u32]) -> Result<Query, String> {
     let t = q.trim();
     let numeric = !t.is_empty() && t.chars().all(|c| c.is_ascii_digit() || " (),-".contains(c));
     if !numeric {
@@ -29,8 +55,11 @@ pub fn parse_query(q: &str) -> Result<Query, String> {
         let num = |s: &str| -> Result<u32, String> {
             let s = s.trim().trim_start_matches('(').trim_end_matches(')');
             match s.parse::<u32>() {
-                Ok(n) if (1..=90).contains(&n) => Ok(n),
-                _ => Err(format!("show: '{s}' is not a display of the note (1-90)")),
+                Ok(n) if known.contains(&n) => Ok(n),
+                _ => Err(format!(
+                    "show: '{s}' is not a display of the note (its displays: {})",
+                    runs(known)
+                )),
             }
         };
         match part.split_once('-') {
@@ -39,7 +68,7 @@ pub fn parse_query(q: &str) -> Result<Query, String> {
                 if a > b {
                     return Err(format!("show: the range {a}-{b} is empty"));
                 }
-                out.extend(a..=b);
+                out.extend(known.iter().filter(|n| (a..=b).contains(n)));
             }
             None => out.push(num(part)?),
         }
@@ -190,8 +219,17 @@ mod tests {
             parse_query("23-25, 28").unwrap(),
             Query::Numbers(vec![23, 24, 25, 28])
         );
+        assert!(parse_query("0").is_err() && parse_query("5-3").is_err());
+        // Only displays of the note in use: a folder with (1)-(3) and (7).
+        let known = [1, 2, 3, 7];
+        assert_eq!(
+            parse_query_in("2-7", &known).unwrap(),
+            Query::Numbers(vec![2, 3, 7])
+        );
+        let e = parse_query_in("5", &known).unwrap_err();
         assert!(
-            parse_query("91").is_err() && parse_query("0").is_err() && parse_query("5-3").is_err()
+            e.contains("'5' is not a display") && e.ends_with("1-3, 7)"),
+            "{e}"
         );
         assert_eq!(
             parse_query("about D").unwrap(),

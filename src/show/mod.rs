@@ -53,7 +53,7 @@ pub struct SymbolInfo {
 /// One display, shown.
 #[derive(Clone, Debug, Serialize)]
 pub struct Shown {
-    /// Number, 1-90.
+    /// Its number.
     pub number: u32,
     /// "(25)".
     pub label: String,
@@ -112,7 +112,8 @@ pub struct Shown {
 /// The symbols of a display with their table entries (a dotted symbol without an entry of its
 /// own is the time derivative of the undotted one).
 pub fn symbol_infos(e: &Equation) -> Vec<SymbolInfo> {
-    use crate::print::symbols::{lookup, table};
+    use crate::print::symbols::lookup;
+    use crate::registry::symbol_table as table;
     use crate::scalar::Dimension;
     let mut out: Vec<SymbolInfo> = Vec::new();
     for (k, milne) in find::symbols_of(e) {
@@ -370,12 +371,15 @@ pub fn command(
             print!("{}", text::render(s));
         }
     }
-    if shown
+    let failed: Vec<String> = shown
         .iter()
-        .all(|s| s.problems.is_empty() && s.status != Some(Status::Failed))
-    {
+        .filter(|s| !s.problems.is_empty() || s.status == Some(Status::Failed))
+        .map(|s| format!("({})", s.number))
+        .collect();
+    if failed.is_empty() {
         ExitCode::SUCCESS
     } else {
+        eprintln!("ladder show: exit 1: failed: {}", failed.join(", "));
         ExitCode::from(1)
     }
 }

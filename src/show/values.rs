@@ -15,11 +15,11 @@ use crate::ladder::particles::as_system;
 use crate::ladder::{Ladder, State};
 use crate::print::eval::{evaluate, Ctx};
 use crate::print::quantity::{Model, Value};
-use crate::print::symbols::table;
 use crate::registry::check::{exact_residual, float_residual, TOLERANCE_FACTOR};
 use crate::registry::print_check::units::print_form_units;
-use crate::registry::print_check::{print_chains, sample_check, Form};
-use crate::registry::{Equation, Eval, ParticleSample, Role, Side};
+use crate::registry::print_check::{print_chains, print_sample, Form, PrintSample};
+use crate::registry::symbol_table as table;
+use crate::registry::{Equation, ParticleSample, Role, Side};
 use crate::scalar::{Bound, Rational, Scalar};
 use crate::system::{Point as PPoint, Spin, System};
 use serde::Serialize;
@@ -151,20 +151,20 @@ fn ladder_particles<S: Scalar>(
 
 /// The model a display's forms resolve in, at a ladder state.
 fn model<S: Scalar>(e: &Equation, l: &Ladder<S>, s: &State<S>) -> Result<Model<S>, String> {
-    match sample_check(e).map(|c| c.eval) {
-        Some(Eval::Ladder(..)) => Ok(Model::ladder(l.clone(), s.clone())),
-        Some(Eval::Particles(sort, _)) => {
+    match print_sample(e) {
+        Some(PrintSample::Ladder(..)) => Ok(Model::ladder(l.clone(), s.clone())),
+        Some(PrintSample::Particles(sort)) => {
             let (sys, p) = ladder_particles(sort, l, s);
             Ok(Model::particles(sys, p))
         }
-        _ => Err("no model for this display".into()),
+        None => Err("no model for this display".into()),
     }
 }
 
 /// The place a display is evaluated at (`None` for a display of the ladder itself).
 pub fn place_of(e: &Equation) -> Option<Place> {
-    match sample_check(e).map(|c| c.eval) {
-        Some(Eval::Particles(sort, _)) => Some(place(sort)),
+    match print_sample(e) {
+        Some(PrintSample::Particles(sort)) => Some(place(sort)),
         _ => None,
     }
 }
@@ -249,7 +249,7 @@ pub fn form_values_of(e: &Equation, latex: &str, point: &Point) -> Result<Vec<Fo
             .position(|f| f.role != Role::Misprint)
             .unwrap_or(0);
         for (k, f) in chain.iter().enumerate() {
-            let role = if e.number == 57 && ci == 0 && k == 0 {
+            let role = if e.continues.is_some() && ci == 0 && k == 0 {
                 "continued"
             } else if f.text == "evaluation condition" {
                 "condition"

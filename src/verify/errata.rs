@@ -23,7 +23,7 @@ pub struct ErratumReport {
     /// Which form of the display is misprinted, counted from 1 in print order (as `ladder show`
     /// numbers them), and its LaTeX as printed.
     pub misprinted_form: Option<usize>,
-    /// The misprinted form's LaTeX ([`crate::registry::print_check::MISPRINTS`]).
+    /// The misprinted form's LaTeX ([`crate::registry::print_check::misprints`]).
     pub misprinted_form_latex: Option<&'static str>,
     /// What the residuals are measured against: the first side of the chain that holds the
     /// misprint (a printed form or an independent reference), by its label.
@@ -123,8 +123,8 @@ fn residuals(chains: &[Chain<Rational>]) -> Option<Residuals> {
 /// display `number`, with the misprint's LaTeX.
 pub fn misprinted_form(number: u32, latex: &str) -> Option<(usize, &'static str)> {
     use crate::print::parser::{canonical, parse_display};
-    let (_, wrong) = crate::registry::print_check::MISPRINTS
-        .iter()
+    let (_, wrong) = crate::registry::print_check::misprints()
+        .into_iter()
         .find(|m| m.0 == number)?;
     let want = canonical(wrong).ok()?;
     let display = parse_display(latex).ok()?;

@@ -35,7 +35,9 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
     let units_found = equation_units(e);
     problems.extend(units_found.problems.iter().map(|p| format!("units: {p}")));
     let (units, units_detail) = units_found.verdict();
-    if let Some(law) = e.law {
+    // A display with no Rust check is judged off the motion from its print
+    // ([`super::print_judge`]).
+    if let Some(law) = e.law.filter(|_| !e.checks.is_empty()) {
         // Every on-shell check of the display must break off the motion at the marked `=` only.
         let found: Vec<_> = reports
             .iter()

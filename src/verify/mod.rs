@@ -201,11 +201,9 @@ fn verify_list(eqs: Vec<Equation>, cfg: &Config) -> Vec<EquationResult> {
         r
     });
     results.sort_by_key(|r| r.number);
-    let pages = crate::docs::pages::headings(&crate::docs::default_dir());
-    for r in &mut results {
-        r.doc = pages
-            .get(&r.label)
-            .map(|p| format!("{}:{}", p.file, p.line));
+    for (r, e) in results.iter_mut().zip(&eqs) {
+        debug_assert_eq!(r.number, e.number);
+        r.doc = Some(e.place());
     }
     results
 }

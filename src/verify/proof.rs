@@ -27,7 +27,8 @@ pub struct ProofVerdict {
 /// Prove every check of an equation, and its print.
 pub fn prove_equation(e: &Equation) -> (ProofVerdict, Vec<CheckProof>) {
     let proofs: Vec<CheckProof> = e.checks.iter().map(prove_check).collect();
-    let print = (e.number <= EXTENSION_BASE).then(|| prove_print(e, e.latex()));
+    let print =
+        (e.number <= EXTENSION_BASE || e.checks.is_empty()).then(|| prove_print(e, e.latex()));
     (with_print(verdict(e, &proofs), print), proofs)
 }
 

@@ -7,6 +7,7 @@
 
 #[path = "../common/mod.rs"]
 mod common;
+mod extending;
 mod ladder;
 mod method;
 mod print;

@@ -1,7 +1,6 @@
 //! Checks of eqs. (36)-(42), (56)-(58): reference points.
 
-use crate::registry::sample::ParticleSample::{self};
-use crate::registry::{on_particles, printed, reference, vector_chains, Chain, Check};
+use crate::registry::{printed, reference, vector_chains, Chain};
 use crate::scalar::Scalar;
 use crate::system::{rate_vec, Particle, Point, System};
 use crate::vector::Vec3;
@@ -216,12 +215,4 @@ pub(super) fn eq58<S: Scalar>(sys: &System<S>, p: &Point<S>) -> Chains<S> {
         ),
         printed("τ_cm", sys.torque_about(&x_cm)),
     ])
-}
-
-pub(super) fn gen(
-    name: &'static str,
-    sample: ParticleSample,
-    f: crate::registry::ParticleFns,
-) -> Check {
-    on_particles(name, sample, f)
 }

@@ -9,8 +9,10 @@ mod momentum;
 mod moving;
 mod rates;
 
-use super::sample::ParticleSample;
-use super::{on_particles, Check, Equation};
+pub(super) use momentum::FNS as MOMENTUM_FNS;
+pub(super) use moving::FNS as MOVING_FNS;
+pub(super) use rates::FNS as RATES_FNS;
+
 use crate::scalar::Scalar;
 use crate::system::{rate_vec, Point, System};
 use crate::vector::Vec3;
@@ -27,17 +29,4 @@ pub(super) fn d_dt<S: Scalar>(
 /// The zero vector, the conclusion of (70), (71).
 pub(super) fn zero<S: Scalar>() -> Vec3<S> {
     Vec3::zero()
-}
-
-/// A check on particle systems of the given sort.
-fn check(name: &'static str, sample: ParticleSample, f: crate::registry::ParticleFns) -> Check {
-    on_particles(name, sample, f)
-}
-
-/// The entries for Appendix B.
-pub(super) fn equations() -> Vec<Equation> {
-    let mut all = momentum::equations();
-    all.extend(moving::equations());
-    all.extend(rates::equations());
-    all
 }

@@ -5,13 +5,9 @@
 //! computed by [`crate::milne`] from his own definitions, and every d/dt is a rate along the
 //! motion by automatic differentiation.
 
-use super::check;
 use super::{d_dt, zero};
 use crate::milne;
-use crate::particle_fns;
-use crate::registry::sample::ParticleSample::*;
 use crate::registry::{corrected, misprint, printed, reference, vector_chains, Chain};
-use crate::registry::{eq, Equation, Erratum, Kind};
 use crate::scalar::Scalar;
 use crate::system::{rate_vec, Point, System};
 use crate::vector::sum;
@@ -188,201 +184,19 @@ pub(super) fn eq74<S: Scalar>(sys: &System<S>, _: &Point<S>) -> Vec<Chain<S>> {
     ])
 }
 
-/// The printed and corrected forms of (68).
-const ERRATUM_68: Erratum = Erratum {
-    printed: r"\mathbf{\Gamma}(O) = \sum \mathbf{r} \wedge \ddot{\mathbf{r}}",
-    corrected: r"\mathbf{\Gamma}(O) = \sum \mathbf{r} \wedge m \ddot{\mathbf{r}} = \sum \mathbf{r} \wedge \mathbf{P}",
-    why: "the mass is missing: Σ r ∧ r̈ is not a moment of force and differs from τ = Σ x_i × F_i unless every m_i = 1; Milne's Γ(O) is the moment Σ r ∧ P of his forces P = m r̈. The printed symbol is r̈, not a garbled P, so what was lost is the m (the (67) line keeps it in Σ m r̈); the correction restores it",
-};
-
-/// The entries of secs. B.1-B.4, eqs. (64)-(74).
-pub(super) fn equations() -> Vec<Equation> {
-    let mut e68 = eq(
-        68,
-        "B.2",
-        "Torque about the origin; Milne's Γ(O)",
-        Kind::Notation,
-        &[
-            "system::System::torque",
-            "milne::gamma",
-            "milne::gamma_as_printed",
-            "milne::gamma_corrected",
-        ],
-        vec![check(
-            "τ against Milne's Σ r ∧ m r̈ and Σ r ∧ P; printed Σ r ∧ r̈ fails",
-            General,
-            particle_fns!(eq68),
-        )],
-    );
-    e68.erratum = Some(ERRATUM_68);
-    vec![
-        eq(
-            64,
-            "B.1",
-            "Total mass; Milne's Σ m",
-            Kind::Notation,
-            &["system::System::total_mass", "milne::big_m"],
-            vec![check("m against Milne's Σ m", General, particle_fns!(eq64))],
-        ),
-        eq(
-            65,
-            "B.1",
-            "Total momentum P; Milne's L",
-            Kind::General,
-            &["system::System::momentum", "milne::l", "milne::r_dot"],
-            vec![check(
-                "P by AD, Σ m_i v_i and Milne's Σ m ṙ against d/dt Σ m_i x_i",
-                General,
-                particle_fns!(eq65),
-            )],
-        ),
-        eq(
-            66,
-            "B.1",
-            "Angular momentum about the origin; Milne's H(O)",
-            Kind::Notation,
-            &["system::System::angular_momentum", "milne::h_of_o"],
-            vec![check(
-                "L against Milne's Σ r ∧ m ṙ",
-                General,
-                particle_fns!(eq66),
-            )],
-        ),
-        eq(
-            67,
-            "B.2",
-            "Total force; Milne's R",
-            Kind::General,
-            &[
-                "system::System::total_force",
-                "system::System::momentum",
-                "system::System::cm_acceleration",
-                "milne::big_r",
-                "milne::l",
-                "milne::sum_m_r_ddot",
-            ],
-            vec![check(
-                "F, dP/dt (AD), Σ m_i ẍ_i (AD²), m a_cm and Milne's forms",
-                General,
-                particle_fns!(eq67),
-            )],
-        ),
-        e68,
-        eq(
-            69,
-            "B.2",
-            "Torque equation about the origin; Milne's dH(O)/dt = Γ(O)",
-            Kind::General,
-            &[
-                "system::System::angular_momentum",
-                "system::System::torque",
-                "milne::h_of_o",
-                "milne::gamma",
-            ],
-            vec![check(
-                "dL/dt and dH(O)/dt by AD against the torque of the forces",
-                General,
-                particle_fns!(eq69),
-            )],
-        ),
-        eq(
-            70,
-            "B.3",
-            "Conservation of momentum",
-            Kind::General,
-            &[
-                "system::System::total_force",
-                "system::System::momentum",
-                "milne::big_r",
-                "milne::l",
-            ],
-            vec![
-                check(
-                    "hypothesis: F = R = 0 on force-free systems",
-                    ForceFree,
-                    particle_fns!(eq70_hypothesis),
-                ),
-                check(
-                    "dP/dt = dL/dt = 0 (AD) on force-free systems",
-                    ForceFree,
-                    particle_fns!(eq70),
-                ),
-            ],
-        ),
-        eq(
-            71,
-            "B.3",
-            "Conservation of angular momentum",
-            Kind::General,
-            &[
-                "system::System::torque",
-                "system::System::angular_momentum",
-                "milne::gamma",
-                "milne::h_of_o",
-            ],
-            vec![
-                check(
-                    "hypothesis: τ = Γ(O) = 0 on torque-free systems",
-                    TorqueFree,
-                    particle_fns!(eq71_hypothesis),
-                ),
-                check(
-                    "dL/dt = dH(O)/dt = 0 (AD) on torque-free systems",
-                    TorqueFree,
-                    particle_fns!(eq71),
-                ),
-            ],
-        ),
-        eq(
-            72,
-            "B.4",
-            "Centre of mass; Milne's r̄",
-            Kind::Notation,
-            &[
-                "system::System::centre_of_mass",
-                "milne::r_bar",
-                "milne::sum_m_r",
-                "milne::big_m",
-            ],
-            vec![check(
-                "m x_cm against Milne's M r̄ and Σ m r",
-                General,
-                particle_fns!(eq72),
-            )],
-        ),
-        eq(
-            73,
-            "B.4",
-            "Momentum from the centre-of-mass velocity",
-            Kind::General,
-            &[
-                "system::System::momentum",
-                "system::System::cm_velocity",
-                "milne::l",
-                "milne::r_bar_dot",
-            ],
-            vec![check(
-                "P against m dx_cm/dt and Milne's M dr̄/dt (AD)",
-                General,
-                particle_fns!(eq73),
-            )],
-        ),
-        eq(
-            74,
-            "B.4",
-            "Force from the centre-of-mass acceleration",
-            Kind::General,
-            &[
-                "system::System::total_force",
-                "system::System::cm_acceleration",
-                "milne::big_r",
-                "milne::r_bar_ddot",
-            ],
-            vec![check(
-                "F against m d²x_cm/dt² and Milne's M d²r̄/dt² (AD²)",
-                General,
-                particle_fns!(eq74),
-            )],
-        ),
-    ]
-}
+/// The chain functions of this module, by the names the sections' `*Rust:*` lists use.
+pub(in crate::registry) const FNS: &[(&str, crate::registry::Fns)] = &[
+    crate::named_fns!(Particles, eq68),
+    crate::named_fns!(Particles, eq64),
+    crate::named_fns!(Particles, eq65),
+    crate::named_fns!(Particles, eq66),
+    crate::named_fns!(Particles, eq67),
+    crate::named_fns!(Particles, eq69),
+    crate::named_fns!(Particles, eq70_hypothesis),
+    crate::named_fns!(Particles, eq70),
+    crate::named_fns!(Particles, eq71_hypothesis),
+    crate::named_fns!(Particles, eq71),
+    crate::named_fns!(Particles, eq72),
+    crate::named_fns!(Particles, eq73),
+    crate::named_fns!(Particles, eq74),
+];

@@ -3,11 +3,7 @@
 //!
 //! Here Milne's O is the note's point P (moving, in general) and his O' the fixed origin.
 
-use super::check;
 use crate::milne;
-use crate::particle_fns;
-use crate::registry::sample::ParticleSample::*;
-use crate::registry::{eq, Equation, Kind};
 use crate::registry::{printed, reference, vector_chains, Chain};
 use crate::scalar::Scalar;
 use crate::system::{Point, System};
@@ -170,144 +166,16 @@ pub(super) fn eq84<S: Scalar>(sys: &System<S>, p: &Point<S>) -> Vec<Chain<S>> {
     ])
 }
 
-/// The entries of secs. B.5-B.6, eqs. (75)-(84).
-pub(super) fn equations() -> Vec<Equation> {
-    vec![
-        eq(
-            75,
-            "B.5",
-            "Position relative to a point P; Milne's r' = r_0 + r",
-            Kind::General,
-            &["milne::r", "milne::r_prime", "milne::r_0"],
-            vec![check(
-                "x_i = x_P + (x_i − x_P) = r' = r_0 + r",
-                General,
-                particle_fns!(eq75),
-            )],
-        ),
-        eq(
-            76,
-            "B.5",
-            "Angular momentum about the origin; Milne's H(O')",
-            Kind::Notation,
-            &["system::System::angular_momentum", "milne::h", "milne::v"],
-            vec![check(
-                "L against Milne's Σ r' ∧ m v",
-                General,
-                particle_fns!(eq76),
-            )],
-        ),
-        eq(
-            77,
-            "B.5",
-            "Angular momentum L_P about a moving point; Milne's H(O)",
-            Kind::Notation,
-            &["system::System::angular_momentum_about", "milne::h"],
-            vec![check(
-                "L_P against Milne's Σ r ∧ m v",
-                General,
-                particle_fns!(eq77),
-            )],
-        ),
-        eq(
-            78,
-            "B.5",
-            "L from L_P; Milne's H(O') = H(O) + r_0 ∧ L",
-            Kind::General,
-            &[
-                "system::System::angular_momentum",
-                "system::System::angular_momentum_about",
-                "milne::h",
-                "milne::r_0",
-                "milne::l",
-            ],
-            vec![check("both lines, any P", General, particle_fns!(eq78))],
-        ),
-        eq(
-            79,
-            "B.5",
-            "L from L_cm; Milne's H(O') = H(C) + r̄ ∧ L",
-            Kind::General,
-            &[
-                "system::System::spin_angular_momentum",
-                "milne::h",
-                "milne::g",
-                "milne::r_bar",
-            ],
-            vec![check("both lines", General, particle_fns!(eq79))],
-        ),
-        eq(
-            80,
-            "B.6",
-            "Centre of mass relative to P; Milne's r̄ of sec. 301",
-            Kind::Notation,
-            &["system::System::centre_of_mass", "milne::r_bar"],
-            vec![check(
-                "x_cm − x_P against Milne's Σ m r / M about P",
-                General,
-                particle_fns!(eq80),
-            )],
-        ),
-        eq(
-            81,
-            "B.6",
-            "Velocity of P; Milne's V",
-            Kind::Notation,
-            &["milne::big_v"],
-            vec![check(
-                "v_P against dx_P/dt by AD",
-                General,
-                particle_fns!(eq81),
-            )],
-        ),
-        eq(
-            82,
-            "B.6",
-            "Velocity relative to P; Milne's v = V + v'",
-            Kind::Notation,
-            &["milne::v", "milne::v_rel", "milne::big_v"],
-            vec![check(
-                "v_i − v_P against d(x_i − x_P)/dt by AD, for each particle",
-                General,
-                particle_fns!(eq82),
-            )],
-        ),
-        eq(
-            83,
-            "B.6",
-            "L_P from L'_P; Milne's H(O) = H_r(O) + r̄ ∧ M V",
-            Kind::General,
-            &[
-                "system::System::angular_momentum_about",
-                "system::System::relative_angular_momentum_about",
-                "milne::h",
-                "milne::h_r",
-                "milne::r_bar",
-                "milne::big_v",
-            ],
-            vec![check(
-                "both lines, any moving P",
-                General,
-                particle_fns!(eq83),
-            )],
-        ),
-        eq(
-            84,
-            "B.6",
-            "About the centre of mass the two angular momenta agree; Milne's H(G) = H_r(G)",
-            Kind::General,
-            &[
-                "system::System::angular_momentum_about",
-                "system::System::relative_angular_momentum_about",
-                "milne::g",
-                "milne::h",
-                "milne::h_r",
-            ],
-            vec![check(
-                "L_P = L'_P with P on the centre of mass, H(G) = H_r(G)",
-                PAtCm,
-                particle_fns!(eq84),
-            )],
-        ),
-    ]
-}
+/// The chain functions of this module, by the names the sections' `*Rust:*` lists use.
+pub(in crate::registry) const FNS: &[(&str, crate::registry::Fns)] = &[
+    crate::named_fns!(Particles, eq75),
+    crate::named_fns!(Particles, eq76),
+    crate::named_fns!(Particles, eq77),
+    crate::named_fns!(Particles, eq78),
+    crate::named_fns!(Particles, eq79),
+    crate::named_fns!(Particles, eq80),
+    crate::named_fns!(Particles, eq81),
+    crate::named_fns!(Particles, eq82),
+    crate::named_fns!(Particles, eq83),
+    crate::named_fns!(Particles, eq84),
+];

@@ -5,12 +5,8 @@
 //! differentiation of the lifted system and point; the torque τ = Σ x_i × F_i of the forces is
 //! added to each chain as a reference that involves no differentiation at all.
 
-use super::check;
 use super::d_dt;
 use crate::milne;
-use crate::particle_fns;
-use crate::registry::sample::ParticleSample::*;
-use crate::registry::{eq, Equation, Kind};
 use crate::registry::{printed, reference, vector_chains, Chain};
 use crate::scalar::Scalar;
 use crate::system::{rate_vec, Point, System};
@@ -227,138 +223,15 @@ pub(super) fn eq90_reduces_to_89<S: Scalar>(sys: &System<S>, p: &Point<S>) -> Ve
     ])
 }
 
-/// The entries of secs. B.7-B.9, eqs. (85)-(90).
-pub(super) fn equations() -> Vec<Equation> {
-    vec![
-        eq(
-            85,
-            "B.7",
-            "Rate of change of L from that of L_P; Milne's dH(O')/dt",
-            Kind::General,
-            &[
-                "system::System::angular_momentum",
-                "system::System::angular_momentum_about",
-                "milne::h",
-                "milne::big_v",
-                "milne::r_0",
-                "milne::l",
-            ],
-            vec![check(
-                "both lines by AD against τ, any moving P",
-                General,
-                particle_fns!(eq85),
-            )],
-        ),
-        eq(
-            86,
-            "B.7",
-            "Eq. (85) when P passes through the origin",
-            Kind::General,
-            &[
-                "system::System::angular_momentum_about",
-                "milne::h",
-                "milne::big_v",
-                "milne::l",
-            ],
-            vec![check(
-                "both lines by AD against τ, x_P = 0, P moving",
-                PAtOrigin,
-                particle_fns!(eq86),
-            )],
-        ),
-        eq(
-            87,
-            "B.7",
-            "Eq. (86) for P on the centre of mass; Milne's dH(G')/dt = dH(G)/dt",
-            Kind::General,
-            &[
-                "system::System::angular_momentum",
-                "system::System::angular_momentum_about",
-                "milne::h",
-                "milne::g",
-                "milne::g_prime",
-            ],
-            vec![
-                check(
-                    "both lines by AD against τ, centre of mass at the origin, P on it",
-                    CmAtOriginPAtCm,
-                    particle_fns!(eq87),
-                ),
-                check(
-                    "Milne's line with G' fixed where G is, any origin, against τ_cm",
-                    General,
-                    particle_fns!(eq87_milne_anywhere),
-                ),
-            ],
-        ),
-        eq(
-            88,
-            "B.8",
-            "Rate of change of L'_cm; Milne's dH(G')/dt = dH_r(G)/dt",
-            Kind::General,
-            &[
-                "system::System::angular_momentum",
-                "system::System::relative_angular_momentum_about",
-                "milne::h",
-                "milne::h_r",
-                "milne::g",
-                "milne::g_prime",
-            ],
-            vec![
-                check(
-                    "both lines by AD against τ, centre of mass at the origin",
-                    CmAtOriginPAtCm,
-                    particle_fns!(eq88),
-                ),
-                check(
-                    "Milne's line with G' fixed where G is, any origin, against τ_cm",
-                    General,
-                    particle_fns!(eq88_milne_anywhere),
-                ),
-            ],
-        ),
-        eq(
-            89,
-            "B.9",
-            "Rate of change of L'_P when P passes through the origin",
-            Kind::General,
-            &[
-                "system::System::relative_angular_momentum_about",
-                "milne::h",
-                "milne::h_r",
-                "milne::r_bar",
-                "milne::big_v",
-                "milne::big_v_dot",
-                "milne::l",
-            ],
-            vec![check(
-                "all six forms by AD against τ, x_P = 0, P moving",
-                PAtOrigin,
-                particle_fns!(eq89),
-            )],
-        ),
-        eq(
-            90,
-            "B.9",
-            "Rate of change of L'_P for any P",
-            Kind::General,
-            &[
-                "system::System::relative_angular_momentum_about",
-                "system::System::angular_momentum",
-                "system::System::torque_about",
-            ],
-            vec![
-                check(
-                    "dL'_P/dt (AD) against the printed form and τ'_P of eq. (40)",
-                    General,
-                    particle_fns!(eq90),
-                ),
-                check(
-                    "at x_P = 0 it gives back (89)",
-                    PAtOrigin,
-                    particle_fns!(eq90_reduces_to_89),
-                ),
-            ],
-        ),
-    ]
-}
+/// The chain functions of this module, by the names the sections' `*Rust:*` lists use.
+pub(in crate::registry) const FNS: &[(&str, crate::registry::Fns)] = &[
+    crate::named_fns!(Particles, eq85),
+    crate::named_fns!(Particles, eq86),
+    crate::named_fns!(Particles, eq87),
+    crate::named_fns!(Particles, eq87_milne_anywhere),
+    crate::named_fns!(Particles, eq88),
+    crate::named_fns!(Particles, eq88_milne_anywhere),
+    crate::named_fns!(Particles, eq89),
+    crate::named_fns!(Particles, eq90),
+    crate::named_fns!(Particles, eq90_reduces_to_89),
+];

@@ -7,35 +7,40 @@
 //! denote our quantities, so every form must agree); `X = \text{const}` is checked as
 //! d/dt X = 0; a premise and its conclusion (`\Rightarrow`) are both checked on the registry's
 //! sample, which is drawn so that the premise holds; an evaluation bar `|_{a=b}` adds the chain
-//! a = b (the sample must satisfy it). A form recorded as a misprint ([`MISPRINTS`]) must differ.
+//! a = b (the sample must satisfy it). A form recorded as a misprint ([`misprints`]) must differ.
 
 use super::{Chain, Equation, Role, Side};
 use crate::print::ast::{Chain as PChain, Expr};
 use crate::print::eval::{evaluate, Ctx};
 use crate::print::quantity::{Model, Value};
-use crate::print::symbols::{table, Entry};
+use crate::print::symbols::Entry;
 use crate::scalar::Scalar;
 use serde::Serialize;
 
 /// Misprinted forms (display, the form's LaTeX as printed): they must fail against the chain.
-/// Each is one side of a recorded erratum (`Equation::erratum`), tested in `tests/note/print/check.rs`.
-pub const MISPRINTS: &[(u32, &str)] = &[
-    (28, r"\tau_E - F_{E,y} l \sin \theta"),
-    (
-        49,
-        r"\frac{m l^2 \dot{\theta}}{3} \hat{\mathbf{z}} + l^2 \dot{\theta} (\cos^2 \theta - \sin^2 \theta) \hat{\mathbf{z}}",
-    ),
-    (54, r"\frac{4m l^2 \dot{\theta}^2}{3}"),
-    (
-        62,
-        r"m l g \sin \theta - m l \sin^2 \theta \ddot{\theta} - m l \cos \theta \sin \theta \dot{\theta}^2",
-    ),
-    (68, r"\sum \mathbf{r} \wedge \ddot{\mathbf{r}}"),
-];
+/// Derived from each erratum's `*Misprint:*` and `*Corrected:*` lines in the markdown: the forms
+/// of the printed statement that the correction does not have.
+pub fn misprints() -> Vec<(u32, &'static str)> {
+    crate::registry::source::current()
+        .sections
+        .iter()
+        .filter_map(|s| Some((s.number, s.erratum.as_ref()?)))
+        .flat_map(|(n, e)| {
+            crate::registry::source::misprinted_forms(&e.printed, &e.corrected)
+                .into_iter()
+                .map(move |f| (n, f))
+        })
+        .collect()
+}
 
-/// Displays that continue the previous one: (57) begins with `=`, continuing (56)'s chain from
-/// its last form.
-pub const CONTINUATIONS: &[(u32, &str)] = &[(57, r"\boldsymbol{\tau}_P ")];
+/// The form a display continues when it begins with `=` ((57) continues (56)'s chain from its
+/// last form τ_P), from the note in use.
+pub fn continuation(number: u32) -> Option<&'static str> {
+    crate::registry::source::current()
+        .section(number)?
+        .continues
+        .as_deref()
+}
 
 const LABELS: [&str; 24] = [
     "form 1", "form 2", "form 3", "form 4", "form 5", "form 6", "form 7", "form 8", "form 9",
@@ -73,11 +78,21 @@ pub struct PrintReport {
     pub matches_code: bool,
     /// Rust forms that equal no parsed form.
     pub code_mismatches: Vec<String>,
+    /// On-shell print: whether it failed at every exact point off the motion, as it must.
+    pub off_shell_fails: Option<bool>,
+    /// On-shell print: the `=` at which it breaks off the motion, when the same at every point.
+    pub off_motion_breaks: Option<Vec<u32>>,
+    /// Exact points the print was evaluated at (on the motion).
+    pub exact_points: usize,
+    /// Of those, the points where some chain's residual was not zero.
+    pub exact_failures: usize,
+    /// The largest degree of a residual of its chains (Schwartz-Zippel).
+    pub degree: u32,
 }
 
 /// The chains of a display's print, ready to evaluate.
 pub fn print_chains(number: u32, latex: &str) -> Result<(usize, Vec<Vec<Form>>), String> {
-    print_chains_with(number, latex, MISPRINTS)
+    print_chains_with(number, latex, &misprints())
 }
 
 /// [`print_chains`] with a given list of misprinted forms.
@@ -86,8 +101,9 @@ pub fn print_chains_with(
     latex: &str,
     misprint_list: &[(u32, &str)],
 ) -> Result<(usize, Vec<Vec<Form>>), String> {
-    let src = match CONTINUATIONS.iter().find(|c| c.0 == number) {
-        Some((_, prefix)) => format!("{prefix}{latex}"),
+    let continued = continuation(number);
+    let src = match continued {
+        Some(prefix) => format!("{prefix} {latex}"),
         None => latex.to_string(),
     };
     let d = crate::print::parser::parse_display(&src)?;
@@ -115,8 +131,8 @@ pub fn print_chains_with(
     let mut ours: Vec<Vec<Form>> = Vec::new();
     let mut milne_k = 0;
     let mut count = d.form_count();
-    if number == 57 {
-        count -= 1; // the continued form belongs to (56)
+    if continued.is_some() {
+        count -= 1; // the continued form belongs to the display before
     }
     for st in &d.statements {
         let mut chain = forms(&st.chain, st.milne);
@@ -205,7 +221,7 @@ pub(crate) fn evaluate_chains<S: Scalar>(
     model: Model<S>,
     index: Option<usize>,
 ) -> Result<Vec<Chain<S>>, String> {
-    let t = table();
+    let t = crate::registry::symbol_table();
     let model = std::rc::Rc::new(model);
     let mut out = Vec::new();
     for (ci, chain) in chains.iter().enumerate() {
@@ -288,8 +304,14 @@ pub(crate) fn form_text<'a>(chains: &'a [Vec<Form>], label: &str) -> &'a str {
 }
 
 mod inject;
+mod motion;
 pub mod prove;
 mod run;
 pub mod units;
+pub use crate::registry::sample::PrintSample;
 pub use inject::{injections, run_injection, Injection, Outcome, Typo};
-pub use run::{check_print, check_print_with, sample_check, PRINT_EXACT_POINTS, PRINT_FLOAT_CASES};
+pub use motion::OFF_MOTION_POINTS;
+pub use run::{
+    check_print, check_print_with, print_sample, sample_check, PRINT_EXACT_POINTS,
+    PRINT_FLOAT_CASES,
+};

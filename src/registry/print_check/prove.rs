@@ -10,8 +10,11 @@
 //! its additive terms) symbolically: the transcription matches the print for all values of the
 //! variables, not only at the one exact point of [`super::check_print`].
 
-use super::{evaluate_chains, form_text, print_chains_with, sample_check, term_chains, Form};
-use super::{Role, MISPRINTS};
+use super::{
+    evaluate_chains, form_text, print_chains_with, print_sample, sample_check, term_chains, Form,
+    PrintSample,
+};
+use super::{misprints, Role};
 use crate::print::quantity::Model;
 use crate::registry::prove::{
     judge_chains, reduce, symbolic_ladder, symbolic_particle_values, Relation, PARTICLE_COUNTS,
@@ -43,50 +46,54 @@ type Instance = (Vec<Chain<Sym>>, Relation);
 type Found = (Vec<Instance>, Option<Vec<Chain<Sym>>>, Option<String>);
 
 fn instances(e: &Equation, chains: &[Vec<Form>]) -> Result<Found, String> {
-    let check = sample_check(e).ok_or("no registry check to take a model from")?;
+    let sample = print_sample(e).ok_or("floor-phase displays are not in the note")?;
+    let rust = sample_check(e).map(|c| c.eval);
     let terms = term_chains(chains);
     let mut out = Vec::new();
     let mut off = None;
     let mut code = None;
-    match check.eval {
-        Eval::Ladder(sort, f) => {
+    match sample {
+        PrintSample::Ladder(sort) => {
             let (l, s, rel) = symbolic_ladder(sort);
             let model = || Model::ladder(l.clone(), s.clone());
             let print = evaluate_chains(e, chains, model(), None)?;
-            let mut values = flat(&print);
-            values.extend(flat(&evaluate_chains(e, &terms, model(), None)?));
-            code = unmatched(&(f.symbolic)(&l, &s), &values, &rel);
+            if let Some(Eval::Ladder(_, f)) = rust {
+                let mut values = flat(&print);
+                values.extend(flat(&evaluate_chains(e, &terms, model(), None)?));
+                code = unmatched(&(f.symbolic)(&l, &s), &values, &rel);
+            }
             out.push((print, rel));
             if sort.on_shell() {
                 let (l, s, _) = symbolic_ladder(LadderSample::Kinematic);
                 off = Some(evaluate_chains(e, chains, Model::ladder(l, s), None)?);
             }
         }
-        Eval::Particles(sort, f) => {
+        PrintSample::Particles(sort) => {
             for n in PARTICLE_COUNTS {
                 let values = symbolic_particle_values(n);
                 let (sys, p) = particle_system(sort, n, &values);
                 let model = || Model::particles(sys.clone(), p.clone());
                 let print = evaluate_chains(e, chains, model(), None)?;
-                let rust = (f.symbolic)(&sys, &p);
-                let mut values = flat(&print);
-                if unmatched(&rust, &values, &None).is_some() {
-                    // Per-particle statements: every form and term at each particle too (only
-                    // when needed: evaluating every term at every particle is the slow part).
-                    let with_terms = [chains.to_vec(), terms.clone()].concat();
-                    for i in 0..n {
-                        if let Ok(ch) = evaluate_chains(e, &with_terms, model(), Some(i)) {
-                            values.extend(flat(&ch));
+                if let Some(Eval::Particles(_, f)) = rust {
+                    let rust = (f.symbolic)(&sys, &p);
+                    let mut values = flat(&print);
+                    if unmatched(&rust, &values, &None).is_some() {
+                        // Per-particle statements: every form and term at each particle too
+                        // (only when needed: every term at every particle is the slow part).
+                        let with_terms = [chains.to_vec(), terms.clone()].concat();
+                        for i in 0..n {
+                            if let Ok(ch) = evaluate_chains(e, &with_terms, model(), Some(i)) {
+                                values.extend(flat(&ch));
+                            }
                         }
                     }
-                }
-                if code.is_none() {
-                    code = unmatched(&rust, &values, &None);
+                    if code.is_none() {
+                        code = unmatched(&rust, &values, &None);
+                    }
                 }
                 out.push((print, None));
             }
         }
-        Eval::Floor(..) => return Err("floor-phase displays are not in the note".into()),
     }
     Ok((out, off, code))
 }
@@ -112,7 +119,7 @@ fn flat(chains: &[Chain<Sym>]) -> Vec<Sym> {
 
 /// Prove the print of one display (given as LaTeX) symbolically.
 pub fn prove_print(e: &Equation, latex: &str) -> PrintProof {
-    prove_print_with(e, latex, MISPRINTS)
+    prove_print_with(e, latex, &misprints())
 }
 
 /// [`prove_print`] with a given list of misprinted forms.

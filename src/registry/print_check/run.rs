@@ -1,12 +1,13 @@
 //! Running a display's printed chains on the registry's samples.
 
 use super::{
-    evaluate_chains, form_text, print_chains_with, term_chains, Form, PrintReport, MISPRINTS,
+    evaluate_chains, form_text, misprints, print_chains_with, term_chains, Form, PrintReport,
 };
 use crate::print::quantity::Model;
 use crate::registry::check::{exact_residual, float_residual, Config, TOLERANCE_FACTOR};
+use crate::registry::sample::PrintSample;
 use crate::registry::sample::{
-    exact_ladder, particle_system, LadderSample, RawLadder, RawParticles,
+    exact_ladder, particle_system, LadderSample, ParticleSample, RawLadder, RawParticles,
 };
 use crate::registry::{Chain, Equation, Eval, Role};
 use crate::scalar::{Bound, Rational, Scalar};
@@ -16,7 +17,7 @@ use rand_chacha::ChaCha8Rng;
 
 /// Check the print of one display on its registry samples.
 pub fn check_print(e: &Equation, latex: &str, cfg: &Config) -> PrintReport {
-    check_print_with(e, latex, cfg, MISPRINTS)
+    check_print_with(e, latex, cfg, &misprints())
 }
 
 /// [`check_print`] with a given list of misprinted forms.
@@ -36,26 +37,14 @@ pub fn check_print_with(
         }
     };
     rep.forms = count;
-    let Some(check) = sample_check(e) else {
+    let Some(sample) = print_sample(e) else {
         rep.unparsed
-            .push("no registry check to take a sample from".into());
+            .push("floor-phase displays are not in the note".into());
         return rep;
     };
     let mut rng = ChaCha8Rng::seed_from_u64(cfg.seed ^ u64::from(e.number));
     // Drop forms that do not evaluate (reported), keep the rest.
-    let probe: Result<(), String> = match check.eval {
-        Eval::Ladder(sort, _) => {
-            let ((l, s), _) = RawLadder::draw(&mut rng).build(sort);
-            evaluate_chains(e, &chains, Model::ladder(l, s), None).map(|_| ())
-        }
-        Eval::Particles(sort, _) => {
-            let raw = RawParticles::draw(&mut rng);
-            let ((sys, p), _) = crate::registry::sample::float_particles(sort, &raw);
-            evaluate_chains(e, &chains, Model::particles(sys, p), None).map(|_| ())
-        }
-        Eval::Floor(..) => Err("floor-phase displays are not in the note".into()),
-    };
-    if let Err(err) = probe {
+    if let Err(err) = probe(e, &chains, sample, &mut rng) {
         rep.unparsed.push(err);
         return rep;
     }
@@ -66,96 +55,16 @@ pub fn check_print_with(
         .map(Vec::len)
         .sum::<usize>()
         .min(count);
-    let float_cases = cfg.float_cases.min(PRINT_FLOAT_CASES);
-    let mut worst = (0.0f64, "");
-    let mut float_failures = 0;
-    let mut exact_fail: Option<(String, String)> = None;
-    let mut misprint_held: Vec<String> = Vec::new();
-    let mut code_values: Vec<Rational> = Vec::new();
-    let mut code_sides: Vec<(String, Rational)> = Vec::new();
-    match check.eval {
-        Eval::Ladder(sort, f) => {
-            for _ in 0..float_cases {
-                let ((l, s), (lb, sb)) = RawLadder::draw(&mut rng).build(sort);
-                let v = evaluate_chains(e, &chains, Model::ladder(l, s), None);
-                let b = evaluate_chains(e, &chains, Model::ladder(lb, sb), None);
-                note_float(v, b, &mut worst, &mut float_failures);
-            }
-            for k in 0..cfg.exact_points.min(PRINT_EXACT_POINTS) {
-                let draw = crate::registry::check::exact_ladder_draw(&mut rng);
-                let (l, s) = exact_ladder(sort, draw);
-                let ch = evaluate_chains(e, &chains, Model::ladder(l.clone(), s.clone()), None);
-                note_exact(
-                    ch,
-                    &chains,
-                    &mut exact_fail,
-                    &mut misprint_held,
-                    &mut code_values,
-                    k == 0,
-                );
-                if k == 0 {
-                    let m = Model::ladder(l.clone(), s.clone());
-                    if let Ok(ch) = evaluate_chains(e, &term_chains(&chains), m, None) {
-                        code_values.extend(ch.into_iter().flatten().map(|s| s.value));
-                    }
-                    code_sides = rust_sides((f.exact)(&l, &s));
-                }
-            }
-        }
-        Eval::Particles(sort, f) => {
-            for _ in 0..float_cases {
-                let raw = RawParticles::draw(&mut rng);
-                let ((sys, p), (sysb, pb)) = crate::registry::sample::float_particles(sort, &raw);
-                let v = evaluate_chains(e, &chains, Model::particles(sys, p), None);
-                let b = evaluate_chains(e, &chains, Model::particles(sysb, pb), None);
-                note_float(v, b, &mut worst, &mut float_failures);
-            }
-            for k in 0..cfg.exact_points.min(PRINT_EXACT_POINTS) {
-                let (n, values) = crate::registry::check::exact_particle_draw(&mut rng);
-                let (sys, p) = particle_system(sort, n, &values);
-                let ch =
-                    evaluate_chains(e, &chains, Model::particles(sys.clone(), p.clone()), None);
-                note_exact(
-                    ch,
-                    &chains,
-                    &mut exact_fail,
-                    &mut misprint_held,
-                    &mut code_values,
-                    k == 0,
-                );
-                if k == 0 {
-                    // Per-particle statements: the forms at every particle.
-                    let with_terms = [chains.clone(), term_chains(&chains)].concat();
-                    for i in 0..n {
-                        let m = Model::particles(sys.clone(), p.clone());
-                        if let Ok(ch) = evaluate_chains(e, &with_terms, m, Some(i)) {
-                            code_values.extend(ch.into_iter().flatten().map(|s| s.value));
-                        }
-                    }
-                    code_sides = rust_sides((f.exact)(&sys, &p));
-                }
-            }
-        }
-        Eval::Floor(..) => {}
+    if rep.checked == 0 && e.checks.is_empty() {
+        rep.problems.push(
+            "print: nothing is checked: the display joins no two forms and names no *Rust:* check"
+                .into(),
+        );
     }
-    if float_failures > 0 {
-        rep.problems.push(format!(
-            "print: {float_failures} of {float_cases} float states out of tolerance; worst residual {:.3e} × its error bound at {} '{}'",
-            worst.0,
-            worst.1,
-            form_text(&chains, worst.1)
-        ));
-    }
-    if let Some((label, residual)) = exact_fail {
-        rep.problems.push(format!(
-            "print: {label} '{}' differs from its chain exactly (residual {residual})",
-            form_text(&chains, &label)
-        ));
-    }
-    misprint_held.dedup();
-    for m in misprint_held {
-        rep.problems
-            .push(format!("print: the misprint {m} did not fail"));
+    float_pass(e, &chains, sample, cfg, &mut rng, &mut rep);
+    let (code_values, code_sides) = exact_pass(e, &chains, sample, cfg, &mut rng, &mut rep);
+    if matches!(sample, PrintSample::Ladder(s) if s.on_shell()) {
+        super::motion::off_motion_pass(e, &chains, &mut rng, &mut rep);
     }
     for (label, v) in code_sides {
         // A zero component (z of a planar vector) says nothing about which form it is.
@@ -168,6 +77,159 @@ pub fn check_print_with(
     }
     rep.matches_code = rep.code_mismatches.is_empty() && rep.parsed == rep.forms;
     rep
+}
+
+/// Evaluate every form once at a float state, to report one that does not evaluate.
+fn probe(
+    e: &Equation,
+    chains: &[Vec<Form>],
+    sample: PrintSample,
+    rng: &mut ChaCha8Rng,
+) -> Result<(), String> {
+    match sample {
+        PrintSample::Ladder(sort) => {
+            let ((l, s), _) = RawLadder::draw(rng).build(sort);
+            evaluate_chains(e, chains, Model::ladder(l, s), None).map(|_| ())
+        }
+        PrintSample::Particles(sort) => {
+            let raw = RawParticles::draw(rng);
+            let ((sys, p), _) = crate::registry::sample::float_particles(sort, &raw);
+            evaluate_chains(e, chains, Model::particles(sys, p), None).map(|_| ())
+        }
+    }
+}
+
+/// The float states: every chain within its running error bound.
+fn float_pass(
+    e: &Equation,
+    chains: &[Vec<Form>],
+    sample: PrintSample,
+    cfg: &Config,
+    rng: &mut ChaCha8Rng,
+    rep: &mut PrintReport,
+) {
+    let float_cases = cfg.float_cases.min(PRINT_FLOAT_CASES);
+    let mut worst = (0.0f64, "");
+    let mut failures = 0;
+    for _ in 0..float_cases {
+        let (v, b) = match sample {
+            PrintSample::Ladder(sort) => {
+                let ((l, s), (lb, sb)) = RawLadder::draw(rng).build(sort);
+                (
+                    evaluate_chains(e, chains, Model::ladder(l, s), None),
+                    evaluate_chains(e, chains, Model::ladder(lb, sb), None),
+                )
+            }
+            PrintSample::Particles(sort) => {
+                let raw = RawParticles::draw(rng);
+                let ((sys, p), (sysb, pb)) = crate::registry::sample::float_particles(sort, &raw);
+                (
+                    evaluate_chains(e, chains, Model::particles(sys, p), None),
+                    evaluate_chains(e, chains, Model::particles(sysb, pb), None),
+                )
+            }
+        };
+        note_float(v, b, &mut worst, &mut failures);
+    }
+    if failures > 0 {
+        rep.problems.push(format!(
+            "print: {failures} of {float_cases} float states out of tolerance; worst residual {:.3e} × its error bound at {} '{}'",
+            worst.0,
+            worst.1,
+            form_text(chains, worst.1)
+        ));
+    }
+}
+
+/// The exact points: every chain with zero residual, every misprint differing. Returns the
+/// values of the printed forms and their terms, and the Rust forms', at the first point (for
+/// matching the Rust function against the print).
+fn exact_pass(
+    e: &Equation,
+    chains: &[Vec<Form>],
+    sample: PrintSample,
+    cfg: &Config,
+    rng: &mut ChaCha8Rng,
+    rep: &mut PrintReport,
+) -> (Vec<Rational>, Vec<(String, Rational)>) {
+    let mut exact_fail: Option<(String, String)> = None;
+    let mut misprint_held: Vec<String> = Vec::new();
+    let mut code_values: Vec<Rational> = Vec::new();
+    let mut code_sides: Vec<(String, Rational)> = Vec::new();
+    let rust = sample_check(e).map(|c| c.eval);
+    // Alone, the print gets every exact point of a check; beside a Rust check, one.
+    rep.exact_points = if e.checks.is_empty() {
+        cfg.exact_points
+    } else {
+        cfg.exact_points.min(PRINT_EXACT_POINTS)
+    };
+    rep.degree = super::motion::degree(e, chains, sample);
+    for k in 0..rep.exact_points {
+        let first = k == 0;
+        let mut note = |ch| {
+            note_exact(
+                ch,
+                chains,
+                &mut exact_fail,
+                &mut misprint_held,
+                &mut code_values,
+                first,
+                &mut rep.exact_failures,
+            )
+        };
+        match sample {
+            PrintSample::Ladder(sort) => {
+                let draw = crate::registry::check::exact_ladder_draw(rng);
+                let (l, s) = exact_ladder(sort, draw);
+                note(evaluate_chains(
+                    e,
+                    chains,
+                    Model::ladder(l.clone(), s.clone()),
+                    None,
+                ));
+                if first {
+                    let m = Model::ladder(l.clone(), s.clone());
+                    if let Ok(ch) = evaluate_chains(e, &term_chains(chains), m, None) {
+                        code_values.extend(ch.into_iter().flatten().map(|s| s.value));
+                    }
+                    if let Some(Eval::Ladder(_, f)) = rust {
+                        code_sides = rust_sides((f.exact)(&l, &s));
+                    }
+                }
+            }
+            PrintSample::Particles(sort) => {
+                let (n, values) = crate::registry::check::exact_particle_draw(rng);
+                let (sys, p) = particle_system(sort, n, &values);
+                let m = Model::particles(sys.clone(), p.clone());
+                note(evaluate_chains(e, chains, m, None));
+                if first {
+                    // Per-particle statements: the forms at every particle.
+                    let with_terms = [chains.to_vec(), term_chains(chains)].concat();
+                    for i in 0..n {
+                        let m = Model::particles(sys.clone(), p.clone());
+                        if let Ok(ch) = evaluate_chains(e, &with_terms, m, Some(i)) {
+                            code_values.extend(ch.into_iter().flatten().map(|s| s.value));
+                        }
+                    }
+                    if let Some(Eval::Particles(_, f)) = rust {
+                        code_sides = rust_sides((f.exact)(&sys, &p));
+                    }
+                }
+            }
+        }
+    }
+    if let Some((label, residual)) = exact_fail {
+        rep.problems.push(format!(
+            "print: {label} '{}' differs from its chain exactly (residual {residual})",
+            form_text(chains, &label)
+        ));
+    }
+    misprint_held.dedup();
+    for m in misprint_held {
+        rep.problems
+            .push(format!("print: the misprint {m} did not fail"));
+    }
+    (code_values, code_sides)
 }
 
 /// The registry check whose sample the print is evaluated on: for an on-shell display the one
@@ -189,6 +251,29 @@ pub fn sample_check(e: &Equation) -> Option<&crate::registry::Check> {
         }
     }
     e.checks.first()
+}
+
+/// The states of a display's print: its `*States:*` line if it has one, else those of the
+/// registry check it is compared with ([`sample_check`]), else its kind's (on-shell: the motion;
+/// general, notation: any particles; else any motion of the ladder). `None` for the floor phase,
+/// which the print cannot evaluate.
+pub fn print_sample(e: &Equation) -> Option<PrintSample> {
+    use crate::registry::Kind;
+    if let Some(s) = e.states {
+        return Some(s);
+    }
+    match sample_check(e).map(|c| c.eval) {
+        Some(Eval::Ladder(s, _)) => Some(PrintSample::Ladder(s)),
+        Some(Eval::Particles(s, _)) => Some(PrintSample::Particles(s)),
+        Some(Eval::Floor(..)) => None,
+        None => Some(match e.kind {
+            Kind::OnShell => PrintSample::Ladder(LadderSample::OnShell),
+            Kind::General | Kind::Notation => PrintSample::Particles(ParticleSample::General),
+            Kind::Definition | Kind::Kinematic | Kind::Newton => {
+                PrintSample::Ladder(LadderSample::Kinematic)
+            }
+        }),
+    }
 }
 
 /// Exact points per display for the print: one point already bounds the chance that a false
@@ -225,10 +310,12 @@ fn note_exact(
     misprint_held: &mut Vec<String>,
     values: &mut Vec<Rational>,
     first: bool,
+    failures: &mut usize,
 ) {
     let ch = match ch {
         Ok(c) => c,
         Err(err) => {
+            *failures += 1;
             fail.get_or_insert((format!("form 1 ({err})"), "undefined".into()));
             return;
         }
@@ -237,6 +324,7 @@ fn note_exact(
         values.extend(ch.iter().flatten().map(|s| s.value.clone()));
     }
     let (ok, mis) = exact_residual(&ch);
+    *failures += usize::from(!ok);
     if !ok && fail.is_none() {
         for c in &ch {
             let Some(base) = c.iter().position(|s| s.role != Role::Misprint) else {

@@ -4,19 +4,18 @@
 //!
 //! Every form must have one dimension (no sum of unlike terms: the offending sum is named, as
 //! a reader would write it, by [`crate::print::clash`]) and every form of a chain the chain's
-//! dimension. A recorded misprint ([`super::MISPRINTS`]) that fails this is the erratum's
+//! dimension. A recorded misprint ([`super::misprints`]) that fails this is the erratum's
 //! witness in units; any other form that fails it is a defect of the print's check, like a
 //! residual. `ladder verify` (its `units` column) and `ladder show` (each form's SI unit) both
 //! read this module, so the two cannot disagree.
 
-use super::{print_chains, sample_check, Form, LABELS};
+use super::{print_chains, print_sample, Form, PrintSample, LABELS};
 use crate::print::clash::{unlike_components, unlike_sum};
 use crate::print::eval::{evaluate, Ctx};
 use crate::print::quantity::Model;
-use crate::print::symbols::table;
 use crate::print::unicode::unicode;
 use crate::registry::units::{dimensioned_ladder, dimensioned_particles, UnitsFindings, PARTICLES};
-use crate::registry::{Equation, Eval, Role};
+use crate::registry::{Equation, Role};
 use crate::scalar::{Clash, Dim, Dimension};
 use std::rc::Rc;
 
@@ -50,16 +49,16 @@ impl FormUnits {
 
 /// The model of a display with its symbols' dimensions (the sample its print is checked on).
 pub fn dimensioned_model(e: &Equation) -> Result<Model<Dim>, String> {
-    match sample_check(e).map(|c| c.eval) {
-        Some(Eval::Ladder(sort, _)) => {
+    match print_sample(e) {
+        Some(PrintSample::Ladder(sort)) => {
             let (l, s) = dimensioned_ladder(sort);
             Ok(Model::ladder(l, s))
         }
-        Some(Eval::Particles(sort, _)) => {
+        Some(PrintSample::Particles(sort)) => {
             let (sys, p) = dimensioned_particles(sort, PARTICLES);
             Ok(Model::particles(sys, p))
         }
-        _ => Err("no model for this display".into()),
+        None => Err("no model for this display".into()),
     }
 }
 
@@ -71,7 +70,7 @@ fn form_units(e: &Equation, f: &Form, model: &Rc<Model<Dim>>, index: usize) -> F
         number: e.number,
         milne: f.milne,
         index: None,
-        table: table(),
+        table: crate::registry::symbol_table(),
     };
     let dim = evaluate(&f.expr, &ctx).map(|v| {
         let c = v.components();

@@ -93,8 +93,9 @@ fn full_sweep_catch_rate() {
     let (caught, neutral, missed) = sweep(&all);
     let counted = caught + missed.len();
     println!(
-        "injection sweep: {} typos in 90 displays; {caught} caught, {} neutral (value unchanged), {} missed; catch rate {:.1}% of the {counted} that change a value",
+        "injection sweep: {} typos in {} displays; {caught} caught, {} neutral (value unchanged), {} missed; catch rate {:.1}% of the {counted} that change a value",
         all.len(),
+        sliding_ladder::registry::equations().len(),
         neutral.len(),
         missed.len(),
         100.0 * caught as f64 / counted.max(1) as f64

@@ -2,8 +2,8 @@
 //! (src/registry/print_check/prove.rs), for all values of the variables, not only sampled. Each
 //! way a print proof can fail is planted below and seen to fail.
 
+use sliding_ladder::registry::print_check::misprints;
 use sliding_ladder::registry::print_check::prove::{prove_print, prove_print_with};
-use sliding_ladder::registry::print_check::MISPRINTS;
 use sliding_ladder::registry::{equations, Equation};
 
 fn display(n: u32) -> Equation {
@@ -71,7 +71,7 @@ fn a_right_form_recorded_as_a_misprint_is_caught() {
         p.problem
     );
     // With the real list it holds.
-    assert!(prove_print_with(&e, e.latex(), MISPRINTS).proved);
+    assert!(prove_print_with(&e, e.latex(), &misprints()).proved);
 }
 
 #[test]

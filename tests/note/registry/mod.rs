@@ -3,8 +3,11 @@
 mod complete;
 mod identities;
 mod law;
+mod markdown_alone;
 mod milne;
 mod modular;
 mod perturbation;
 mod prove;
+mod source;
+mod source_fuzz;
 mod units;
