@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{with, BASE};
+use common::{with, BASE, PENALTY};
 use proptest::prelude::*;
 
 /// Run `ladder simulate` on `text`; returns (exit code, stderr, files in the out dir).
@@ -101,8 +101,8 @@ fn every_bad_scene_gets_one_line_exit_2_and_no_file() {
             ">= 0",
         ),
         (
-            "rate too fast",
-            with("angular_velocity = 0.0", "angular_velocity = 100"),
+            "rate too fast for the penalty model",
+            PENALTY.replace("angular_velocity = 0.0", "angular_velocity = 100"),
             Some(7),
             "start.angular_velocity",
             "too fast",
