@@ -55,6 +55,10 @@ pub fn simulate(scene_path: &Path, json: bool, out: Option<&Path>) -> ExitCode {
             return ExitCode::from(run_error_code(&e));
         }
     };
+    // A run past flat went on lying flat after the top's impact (`sim::impact`): never silently.
+    if let Some(why) = lying_flat_note(&outcome) {
+        eprintln!("note: {}: {why}", scene.file);
+    }
     // A run that stops short of the end the scene asked for must say so (exit 1, stderr, JSON).
     let short = unreached_end(&scene, &outcome);
     if let Some(why) = &short {
@@ -78,6 +82,18 @@ pub fn simulate(scene_path: &Path, json: bool, out: Option<&Path>) -> ExitCode {
         if let (Some(why), Value::Object(m)) = (&short, &mut v) {
             m.insert("incomplete".into(), json!(why));
         }
+        if let (Some(sl), Value::Object(m)) = (outcome.slide, &mut v) {
+            m.insert(
+                "lying_flat".into(),
+                json!({
+                    "impact_time": num(sl.impact_time),
+                    "centre_velocity_x": num(sl.centre_velocity_x),
+                    "centre_x_end": num(sl.centre_x_end),
+                    "energy_lost": num(sl.energy_lost),
+                    "note": lying_flat_note(&outcome),
+                }),
+            );
+        }
         if let (Some(why), Value::Object(m)) = (&inside, &mut v) {
             m.insert("failed".into(), json!(why));
         }
@@ -89,6 +105,19 @@ pub fn simulate(scene_path: &Path, json: bool, out: Option<&Path>) -> ExitCode {
         return ExitCode::from(1);
     }
     ExitCode::SUCCESS
+}
+
+/// What a run that went on past flat did (`sim::impact`), for stderr and the JSON.
+pub fn lying_flat_note(o: &Outcome) -> Option<String> {
+    let sl = o.slide?;
+    Some(format!(
+        "the ladder lay flat at t = {} s, before the end time; its top struck the floor there, taken as a perfectly inelastic impact (no bounce; the frictionless floor gives no horizontal impulse), which took {} m g l of energy, and it slid on lying flat at ẋ = {} m/s to t = {} s (centre x = {} m)",
+        sig(sl.impact_time, 16),
+        sig(sl.energy_lost, 6),
+        sig(sl.centre_velocity_x, 13),
+        sig(o.last.0, 16),
+        sig(sl.centre_x_end, 13)
+    ))
 }
 
 /// The exit code of a run that stopped with `e`: lift-off is a failed check and the step limit a
@@ -254,6 +283,9 @@ pub fn summary(scene: &Scene, o: &Outcome) -> String {
         ),
         None => s += "  separation   not reached\n",
     }
+    if o.separation.is_some_and(|p| p.time == 0.0) && scene.rate0 > 0.0 {
+        s += "               at once: the push is at or past √(3g cos θ0/4l), where the wall would have to pull\n";
+    }
     if let Some(f) = o.flat {
         s += &format!(
             "  flat         t = {} s   θ̇ = {} rad/s   centre x = {} m, ẋ = {} m/s, ẏ = {} m/s\n",
@@ -262,6 +294,15 @@ pub fn summary(scene: &Scene, o: &Outcome) -> String {
             sig(f.centre_x, 13),
             sig(f.centre_velocity_x, 13),
             sig(f.centre_velocity_y, 13)
+        );
+    }
+    if let Some(sl) = o.slide {
+        s += &format!(
+            "  lying flat   from t = {} s: the top struck the floor (perfectly inelastic, no horizontal impulse; {} m g l lost), slid at ẋ = {} m/s to centre x = {} m\n",
+            sig(sl.impact_time, 16),
+            sig(sl.energy_lost, 6),
+            sig(sl.centre_velocity_x, 13),
+            sig(sl.centre_x_end, 13)
         );
     }
     if let Some(r) = o.floor_report {

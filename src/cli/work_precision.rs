@@ -4,7 +4,7 @@
 use crate::report::files::{write_all, OutFile};
 use crate::report::work_precision::{default_scenes, sweep, TIMING};
 use crate::report::work_precision_fit::Point;
-use crate::report::work_precision_report::{csv, panel, report, SceneReport};
+use crate::report::work_precision_report::{csv, panel, report, OrderRow, SceneReport};
 use crate::sim::integrators::names;
 use crate::sim::scene;
 use clap::Args;
@@ -88,6 +88,38 @@ pub fn work_precision(scene_paths: &[PathBuf], json: bool, out: Option<&Path>) -
     ExitCode::SUCCESS
 }
 
+/// One method's observed order (or why not), note and tolerance slope.
+fn print_order_row(row: &OrderRow) {
+    let name = match row.fixed_order {
+        Some(p) => format!("{} order {p}", row.method),
+        None => row.method.clone(),
+    };
+    let classical = row
+        .classical
+        .map_or("p(tol)".to_string(), |p| p.to_string());
+    match (&row.observed, &row.not_fitted) {
+        (Some(f), _) => println!(
+            "  {name:<17} classical {classical:<6} observed {:.2} ± {:.2} over {} runs, steps {}..{}, rhs {}..{}, error {:.1e}..{:.1e} (floor {:.0e})",
+            f.order, f.std_error, f.runs, f.steps_range.0, f.steps_range.1, f.rhs_range.0, f.rhs_range.1, f.error_range.0, f.error_range.1, f.floor
+        ),
+        (None, why) => println!(
+            "  {name:<17} classical {classical:<6} observed: not fitted ({})",
+            why.as_deref().unwrap_or("no runs")
+        ),
+    }
+    if let Some(n) = &row.note {
+        println!("  {:<17} note: {n}", "");
+    }
+    match (&row.tolerance_slope, &row.tolerance_not_fitted) {
+        (Some(t), _) => println!(
+            "  {:<17} tolerance slope {:.2} ± {:.2} over {} runs, tolerance {:.0e}..{:.0e}, error {:.1e}..{:.1e}, steps {}..{}",
+            "", t.slope, t.std_error, t.runs, t.tolerance_range.0, t.tolerance_range.1, t.error_range.0, t.error_range.1, t.steps_range.0, t.steps_range.1
+        ),
+        (None, Some(why)) => println!("  {:<17} tolerance slope: not fitted ({why})", ""),
+        (None, None) => {}
+    }
+}
+
 /// The table of one scene on stdout.
 fn print_report(rep: &SceneReport) {
     // A built-in scene's name is its start, which the line gives anyway.
@@ -102,7 +134,7 @@ fn print_report(rep: &SceneReport) {
         rep.start.0,
         rep.start.1,
         if rep.to_flat {
-            ", to flat; flat-time reference: Taylor order 40 at 1e-16 in φ = π/2 − θ from the exact separation"
+            ", to flat; flat-time reference: the exact separation plus the floor phase's duration by quadrature of its conservation laws"
         } else {
             ""
         }
@@ -139,21 +171,16 @@ fn print_report(rep: &SceneReport) {
         println!("ode_solvers-*: the peers (--features peers), handed the exact t_s (no event location): θ there, time error 0 by construction, not on the Pareto front");
     }
     println!(
-        "observed order: least-squares slope of −ln(error) against ln(steps) over runs with error in [floor, {:.0e}], at least {} steps in each phase (a full fall has two), steps not tied with another run and growing, error falling (floor: min({:.0e}, {} × the sweep's rounding level); see work_precision_fit)",
+        "observed order: least-squares slope of −ln(error) against ln(steps) over at least {} runs spanning at least {} decades of error, each with error in [floor, {:.0e}], at least {} steps in each phase (a full fall has two), steps not tied with another run and growing, error falling (floor: min({:.0e}, {} × the sweep's rounding level); see work_precision_fit). tolerance slope: of ln(error) against ln(tolerance) over the runs above the floor (1: proportional)",
+        crate::report::work_precision_fit::MIN_RUNS,
+        crate::report::work_precision_fit::MIN_DECADES,
         crate::report::work_precision_fit::ASYMPTOTIC,
         crate::report::work_precision_fit::MIN_STEPS,
         crate::report::work_precision_fit::FLOOR,
         crate::report::work_precision_fit::ROUNDING_MARGIN,
     );
-    for (m, theory, fit) in &rep.orders {
-        let theory = theory.map_or("p(tol)".to_string(), |p| p.to_string());
-        match fit {
-            Some(f) => println!(
-                "  {m:<17} theoretical {theory:<6} observed {:.2} ± {:.2} over {} runs, steps {}..{}, rhs {}..{}, error {:.1e}..{:.1e} (floor {:.0e})",
-                f.order, f.std_error, f.runs, f.steps_range.0, f.steps_range.1, f.rhs_range.0, f.rhs_range.1, f.error_range.0, f.error_range.1, f.floor
-            ),
-            None => println!("  {m:<17} theoretical {theory:<6} observed n/a (fewer than 3 runs in range: ≥ 10 steps in each phase, error between the floor and 1e-4)"),
-        }
+    for row in rep.orders.iter().chain(&rep.taylor_fixed) {
+        print_order_row(row);
     }
     println!("Pareto front (median run time against the worse error; no listed run is dominated):");
     for r in &rep.pareto {

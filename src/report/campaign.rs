@@ -18,7 +18,9 @@
 //!   π/2 (π/2 − 10^U(−15.5, −1)) or the last float below π/2; for a tenth of the rigid scenes,
 //!   given from the floor instead (`angle_from_floor` φ0 = 10^U(−300, −1));
 //! * θ̇0: 0 (half), a fraction U(0, 1) of the fastest start the wall can hold
-//!   (Ω √(cos θ0), Ω² = 3g/4l), or 10^U(−20, 3) √(g/l), which is refused when too fast.
+//!   (Ω √(cos θ0), Ω² = 3g/4l), or 10^U(−20, 3) √(g/l): past the first a rigid scene
+//!   leaves the wall at once, and is refused when it needs the floor phase past √(g/(l cos θ0))
+//!   (the foot would fly); a penalty scene is refused past the first.
 //!
 //! Penalty scenes keep to what that model does (an integrator, the end `separation`, the
 //! separation outputs); rigid scenes with `exact` to the separation. Everything else the scene

@@ -36,20 +36,30 @@
 //!   zero outside that bound (exit 2), so here it holds the reported angle, as written to the
 //!   outputs, to the same promise.
 //!
+//! * **a start at or past the release push** (D0 = Ω² cos θ0 − θ̇0² ≤ 0 from the SI inputs,
+//!   `sim::start_margin`): the separation is the start itself, θ_s = θ0 and t_s = 0 exactly;
+//!   the flat time against the floor phase's duration from (θ0, θ̇0)
+//!   (`sim::exact::flat::floor_duration_from`), with the bounds above at θ̇_s = θ̇0.
+//!   Near that push the closed form takes the margin of the SI inputs too
+//!   (`PhaseOne::with_start_margin`).
+//!
 //! Results a scene did not reach (an end time before separation) are not judged; a run that
 //! stops short of the end it asked for is a failed run (the command exits 1), counted by the
 //! campaign, not here.
 
 use crate::sim::complement::complement;
+use crate::sim::exact::flat::{floor_duration, floor_duration_from};
 use crate::sim::exact::near_flat::near_flat;
-use crate::sim::exact::{flat::floor_duration, PhaseOne};
+use crate::sim::exact::PhaseOne;
 use crate::sim::extreme::linear_lead_in;
 use crate::sim::integrators::{order, Control};
+use crate::sim::near_release;
 use crate::sim::outcome::Outcome;
 use crate::sim::output::Output;
 use crate::sim::penalty::Contact;
 use crate::sim::penalty_confirm::separation_bound;
 use crate::sim::scene::{ContactModel, Scene};
+use crate::sim::start_margin::Lean;
 use crate::sim::units::Units;
 
 const U: f64 = f64::EPSILON / 2.0;
@@ -134,6 +144,9 @@ fn start_cos(scene: &Scene) -> f64 {
 pub fn reference_separation_time(scene: &Scene) -> Option<(f64, f64)> {
     let unit = Units::of(&scene.ladder).time;
     let rate0 = scene.rate0 * unit;
+    if at_once(scene) {
+        return Some((0.0, 0.0));
+    }
     if let Some(phi0) = scene.phi0 {
         if let Some(nf) = near_flat(OMEGA2, phi0, rate0) {
             return Some((nf.separation_time, 0.0));
@@ -153,8 +166,25 @@ pub fn reference_separation_time(scene: &Scene) -> Option<(f64, f64)> {
             Some((t, th, w)) => (t / unit, th, w * unit),
             None => (0.0, scene.theta0, scene.rate0 * unit),
         };
-    let p = PhaseOne::new(theta, rate, OMEGA2).ok()?;
+    let mut p = PhaseOne::new(theta, rate, OMEGA2).ok()?;
+    // Near the release push the margin of the SI inputs: θ̇0 T, rounded, would move it.
+    if let (Some(d), 0.0) = (start_margin(scene), t0) {
+        p = p.with_start_margin(d);
+    }
     Some((t0 + p.separation()?.time, 0.0))
+}
+
+/// The start's margin D0 T² = (Ω² cos θ0 − θ̇0²) T² from the SI inputs, near the release push
+/// (`sim::near_release::near_margin`); None away from it.
+fn start_margin(scene: &Scene) -> Option<f64> {
+    let unit = Units::of(&scene.ladder).time;
+    let lean = scene.phi0.map_or(Lean::Theta(scene.theta0), Lean::Phi);
+    near_release::near_margin(&scene.ladder, lean, scene.rate0).map(|d| d * (unit * unit))
+}
+
+/// Whether the scene starts at or past the release push (D0 ≤ 0): the top leaves at once.
+fn at_once(scene: &Scene) -> bool {
+    start_margin(scene).is_some_and(|d| d <= 0.0)
 }
 
 fn check(out: &mut Vec<Problem>, what: &'static str, error: f64, bound: f64) {
@@ -188,13 +218,28 @@ pub fn out_of_tolerance(scene: &Scene, o: &Outcome) -> Vec<Problem> {
         return bad;
     }
     let e_wall = 10.0 * n_wall * (tau + U);
-    let (theta_s, rate_s) = (sep.angle, (OMEGA2 * cs).sqrt());
-    check(
-        &mut bad,
-        "separation_angle",
-        (theta_s.cos() - cs).abs(),
-        e_wall * theta_s.max(1.0) + 8.0 * U,
-    );
+    if at_once(scene) {
+        // The wall would have to pull at the start: the run reports the start itself.
+        check(
+            &mut bad,
+            "separation_angle",
+            (sep.angle - scene.theta0).abs(),
+            0.0,
+        );
+        check(&mut bad, "separation_time", sep.time.abs(), 0.0);
+    }
+    let (theta_s, rate_s) = match at_once(scene) {
+        true => (sep.angle, r0),
+        false => (sep.angle, (OMEGA2 * cs).sqrt()),
+    };
+    if !at_once(scene) {
+        check(
+            &mut bad,
+            "separation_angle",
+            (theta_s.cos() - cs).abs(),
+            e_wall * theta_s.max(1.0) + 8.0 * U,
+        );
+    }
     if scene.control.is_none() {
         return bad;
     }
@@ -202,10 +247,15 @@ pub fn out_of_tolerance(scene: &Scene, o: &Outcome) -> Vec<Problem> {
         return bad;
     };
     let sin_s = theta_s.sin();
-    let ts_bound = e_wall * (OMEGA2 * sin_s * theta_s.max(1.0) + 2.0 * rate_s * rate_s.max(1.0))
-        / (3.0 * OMEGA2 * sin_s * rate_s)
-        + 16.0 * U * ts_ref
-        + ts_ref_slip;
+    let ts_bound = match at_once(scene) {
+        true => 0.0,
+        false => {
+            e_wall * (OMEGA2 * sin_s * theta_s.max(1.0) + 2.0 * rate_s * rate_s.max(1.0))
+                / (3.0 * OMEGA2 * sin_s * rate_s)
+                + 16.0 * U * ts_ref
+                + ts_ref_slip
+        }
+    };
     check(
         &mut bad,
         "separation_time",
@@ -218,7 +268,10 @@ pub fn out_of_tolerance(scene: &Scene, o: &Outcome) -> Vec<Problem> {
     let w_max = r0.max(rate_s).max(rate_end.abs());
     let energy_slip = e_all * (1.0 + 3.0 * w_max) * w_max.max(1.0);
     if let Some(f) = o.flat {
-        let d = floor_duration(cs);
+        let d = match at_once(scene) {
+            true => floor_duration_from(scene.phi0.unwrap_or(complement(scene.theta0)), r0),
+            false => floor_duration(cs),
+        };
         let tf_ref = ts_ref + d;
         let rate_f = f.rate * unit;
         let bound = ts_bound

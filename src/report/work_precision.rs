@@ -4,19 +4,22 @@
 //! on the asymptotic range and the Pareto front ([`super::work_precision_fit`]).
 //! Modelled on DiffEqDevTools.jl (`WorkPrecisionSet`): a plain record per run, plotting apart.
 //!
-//! References: separation scenes against the exact closed form (`sim::exact`); the full fall to
-//! flat against the Taylor method at order [`MAX_ORDER`] and tolerance 1e-16 (no closed form
-//! exists for the floor phase), whose agreement with DOP853 at 1e-16 is reported beside it.
+//! References, independent of every integrator: the separation from the exact closed form
+//! (`sim::exact`, within 1.1 ulps in angle and 1.6 in time of mpmath, `tests/sim/exact/ulps.rs`);
+//! the full fall's flat time as that separation time plus the floor phase's duration by
+//! quadrature of its conservation laws (`sim::exact::flat`, within 16 ε of mpmath). An error
+//! below a reference's accuracy ([`SEPARATION_ACCURACY`], [`FLAT_ACCURACY`]) is not measured:
+//! a run's error is counted as at least that ([`Run::error`]), so no point of a fit or of the
+//! Pareto front lies below it. (The flat reference was the Taylor method at order 40 and
+//! tolerance 1e-16, one of the methods measured; the front ended on an error of 0.)
 
 use super::work_precision_fit::Point;
-use crate::sim::complement::{self, ComplementFloor};
+use crate::sim::exact::flat::floor_duration;
 use crate::sim::exact::{separation_cos, PhaseOne, Separation};
 use crate::sim::fall;
-use crate::sim::integrators::taylor::{Taylor, MAX_ORDER};
 use crate::sim::integrators::{card, is_adaptive, Control};
 use crate::sim::output::Output;
 use crate::sim::rigid::Ladder;
-use crate::sim::run::integrate_phase;
 use crate::sim::scene::{End, Scene};
 use serde::Serialize;
 use std::time::Instant;
@@ -57,7 +60,18 @@ pub struct Run {
     pub seconds_iqr: (f64, f64),
     /// Timed repeats.
     pub repeats: usize,
+    /// The relative accuracy of the references this run is judged against: errors below it
+    /// are not measured ([`SEPARATION_ACCURACY`], [`FLAT_ACCURACY`]).
+    pub reference_accuracy: f64,
 }
+
+/// Relative accuracy of the separation's reference (the closed form): 2 ulps, above the 1.1
+/// and 1.6 ulps measured against mpmath (`tests/sim/exact/ulps.rs`).
+pub const SEPARATION_ACCURACY: f64 = 2.0 * f64::EPSILON;
+
+/// Relative accuracy of the flat time's reference: the separation time's and the floor
+/// phase's quadrature's 16 ε (`sim::exact::flat`'s bound against mpmath), added.
+pub const FLAT_ACCURACY: f64 = SEPARATION_ACCURACY + 16.0 * f64::EPSILON;
 
 impl Point for Run {
     fn method(&self) -> &str {
@@ -76,11 +90,20 @@ impl Point for Run {
     fn seconds(&self) -> f64 {
         self.seconds
     }
-    /// The worse of the angle, time and (full fall) flat-time errors.
+    /// The tolerance of an adaptive run; a fixed step's is NaN (it has none).
+    fn tolerance(&self) -> f64 {
+        match is_adaptive(&self.method) {
+            true => self.tolerance,
+            false => f64::NAN,
+        }
+    }
+    /// The worse of the angle, time and (full fall) flat-time errors, at least the
+    /// references' accuracy (below it nothing is measured).
     fn error(&self) -> f64 {
         self.angle_error
             .max(self.time_error)
             .max(self.flat_time_error.unwrap_or(0.0))
+            .max(self.reference_accuracy)
     }
 }
 
@@ -183,33 +206,19 @@ pub fn median_seconds(f: impl FnMut()) -> f64 {
     time_it(TIMING, f).0
 }
 
-/// The reference flat time: the floor phase from the exact separation state, by the Taylor
-/// method at order MAX_ORDER and tolerance 1e-16 (no run of the sweep uses that order, and the
-/// wall phase is the closed form).
-///
-/// The floor phase runs in the complement φ = π/2 − θ (`sim::complement`), from
-/// φ_s = arcsin(cos θ_s) with cos θ_s from footnote 4 ([`separation_cos`]): near the floor θ_s
-/// carries an absolute error of an ulp of π/2, which in θ would be a relative error of u/φ_s in
-/// the whole floor phase (`tests/report/work_precision/runs.rs` shows it at θ0 = π/2 − 1e-9).
+/// The reference flat time, independent of every integrator: the exact separation time `sep`
+/// (closed form) plus the floor phase's duration by quadrature of its conservation laws
+/// (`sim::exact::flat::floor_duration`, in √(l/g)), from cos θ_s of footnote 4
+/// ([`separation_cos`], a sum of positive terms: near the floor it keeps φ_s = arcsin(cos θ_s)
+/// to its relative precision, where θ_s itself is an ulp of π/2 off). Within [`FLAT_ACCURACY`].
 pub fn flat_reference(base: &Scene, sep: &Separation) -> Result<f64, String> {
     let ladder = base.ladder;
-    let sys = ComplementFloor::new(&ladder);
-    let phi_s = separation_cos(base.theta0, base.rate0, ladder.big_omega2()).asin();
-    let y = complement::floor_state_at_separation(&ladder, phi_s, sep.rate);
-    let mut st = Taylor::with_order(sep.time, y, 1e-16, MAX_ORDER);
-    let t_end = sep.time + 1e3 * (ladder.half_length / ladder.gravity).sqrt();
-    let end = integrate_phase(
-        &sys,
-        &mut st,
-        &[&complement::Flat],
-        t_end,
-        1_000_000,
-        &mut (),
-    )
-    .map_err(|e| format!("reference run: {e}"))?;
-    end.event
-        .map(|_| end.t)
-        .ok_or_else(|| "the reference run never lies flat".into())
+    let cos_s = separation_cos(base.theta0, base.rate0, ladder.big_omega2());
+    if !(cos_s > 0.0 && cos_s <= 1.0) {
+        return Err(format!("no floor phase from cos θ_s = {cos_s}"));
+    }
+    let unit = (ladder.half_length / ladder.gravity).sqrt();
+    Ok(sep.time + floor_duration(cos_s) * unit)
 }
 
 /// All runs of `methods` for `base` (its ladder, start and end; method and outputs are
@@ -274,6 +283,10 @@ pub fn measure(
                 seconds,
                 seconds_iqr,
                 repeats,
+                reference_accuracy: match flat_ref {
+                    Some(_) => FLAT_ACCURACY,
+                    None => SEPARATION_ACCURACY,
+                },
             });
         }
     }

@@ -15,7 +15,7 @@
 //! ours). Scenes that run to flat are not measured for the peers (no floor phase, no event).
 //! Right-hand-side evaluations are ode_solvers' own count; rtol = atol = the tolerance.
 
-use super::work_precision::{sweep, time_it, Run, Timing, PEERS_OF};
+use super::work_precision::{sweep, time_it, Run, Timing, PEERS_OF, SEPARATION_ACCURACY};
 use crate::sim::exact::PhaseOne;
 use crate::sim::scene::{End, Scene};
 use ode_solvers::{OutputType, System, Vector2};
@@ -81,6 +81,7 @@ pub fn measure_peers(scene: &Scene, timing: Timing) -> Result<Vec<Run>, String> 
                 seconds,
                 seconds_iqr,
                 repeats,
+                reference_accuracy: SEPARATION_ACCURACY,
             });
         }
     }

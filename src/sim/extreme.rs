@@ -6,6 +6,8 @@
 //!   time): the ladder never leaves the wall; said so without integrating.
 //! * When Ω² cos θ0 − θ̇0² ≤ 0 (for θ0 = 0: θ̇0 ≥ Ω, i.e. cos θ_s = 2/3 + θ̇0²/(3Ω²) ≥ 1) the
 //!   wall would have to pull from the first instant: the top leaves at once, t_s = 0, θ_s = θ0.
+//!   Near that push the factor is formed exactly and the phase runs in the deviation from the
+//!   start (`super::near_release`).
 //! * Otherwise the wall phase (5) is integrated *in the ladder's own units as given*, with the
 //!   end time scaled by the time unit √(l/g), so that the integrators' scale invariance is put to
 //!   the test rather than assumed. The separation angle must not depend on m, l, g; times scale
@@ -17,10 +19,12 @@ use super::event::{Direction, Event};
 use super::integrators::AnyStepper;
 use super::integrators::{Control, Stats, Stepper};
 pub use super::lead_in::{linear_lead_in, LINEAR_AMPLITUDE};
+use super::near_release::{self, NearRelease};
 use super::outcome::SeparationState;
 use super::rigid::{separation_factor, Ladder, WallPhase};
 use super::run::{integrate_phase, Observer, RunError};
 use super::scene::MAX_END_TIME;
+use super::start_margin::Lean;
 
 /// How the wall phase from a start ends.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -63,8 +67,23 @@ pub fn wall_release(
     if theta0 == 0.0 && rate0 == 0.0 {
         return Ok((WallRelease::Equilibrium, Stats::default()));
     }
-    if separation_factor(big_omega2, theta0, rate0) <= 0.0 {
+    // Near the release push the factor at the start is formed exactly (`super::start_margin`)
+    // and the phase runs in the deviation from the start (`super::near_release`).
+    let margin = near_release::near_margin(ladder, Lean::Theta(theta0), rate0);
+    if margin.map_or(separation_factor(big_omega2, theta0, rate0), |d| d) <= 0.0 {
         return Ok((WallRelease::AtOnce, Stats::default()));
+    }
+    // The longest fall the scenes allow (1e4 s at l = g = 1 m, s⁻²), in this ladder's units.
+    let t_end = MAX_END_TIME * (ladder.half_length / ladder.gravity).sqrt();
+    if let Some(d) = margin {
+        let model = NearRelease::new(big_omega2, Lean::Theta(theta0), rate0, d);
+        let mut stepper = AnyStepper::new(method, control, 0.0, [0.0, 0.0])
+            .ok_or_else(|| RunError::Start(format!("method {method} does not take {control:?}")))?;
+        let end = near_release::integrate(&model, &mut stepper, t_end, max_steps, &mut ());
+        let stats = stepper.stats();
+        let end = end?;
+        let (u, rate) = model.travel_and_rate(&end.y);
+        return separated(end.event, end.t, theta0 + u, rate, stats, t_end);
     }
     let wall = WallPhase::new(ladder);
     let (t0, y0) = linear_lead_in(big_omega2, theta0, rate0)
@@ -77,8 +96,6 @@ pub fn wall_release(
     };
     let mut stepper = AnyStepper::new(method, control, 0.0, start)
         .ok_or_else(|| RunError::Start(format!("method {method} does not take {control:?}")))?;
-    // The longest fall the scenes allow (1e4 s at l = g = 1 m, s⁻²), in this ladder's units.
-    let t_end = MAX_END_TIME * (ladder.half_length / ladder.gravity).sqrt();
     // In time since the lead-in (the steppers' step floor is relative to |t|).
     let end = if in_complement {
         let sys = complement::ComplementWall::new(ladder);
@@ -111,13 +128,22 @@ pub fn wall_release(
     });
     let stats = stepper.stats();
     let end = end?;
-    match end.event {
+    separated(end.event, end.t, end.y[0], end.y[1], stats, t_end)
+}
+
+/// The separation at (t, θ, θ̇) when the phase ended on its event, else the error of a wall
+/// force that never reached zero by `t_end`.
+fn separated(
+    event: Option<usize>,
+    time: f64,
+    angle: f64,
+    rate: f64,
+    stats: Stats,
+    t_end: f64,
+) -> Result<(WallRelease, Stats), RunError> {
+    match event {
         Some(_) => Ok((
-            WallRelease::Separated(SeparationState {
-                time: end.t,
-                angle: end.y[0],
-                rate: end.y[1],
-            }),
+            WallRelease::Separated(SeparationState { time, angle, rate }),
             stats,
         )),
         None => Err(RunError::Start(format!(

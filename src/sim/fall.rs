@@ -1,75 +1,30 @@
 //! The whole fall of a scene: wall phase to separation, then (if the outputs need it) the floor
-//! phase to flat. A [`Plan`] made from the outputs decides what is built, evaluated and stored;
-//! [`Work`] counts it so that tests can check that nothing else was done.
+//! phase to flat, and, for a run to a later time, the ladder lying flat after its top struck
+//! the floor ([`super::impact`]). A [`Plan`] made from the outputs decides what is built,
+//! evaluated and stored; [`Work`] counts it so that tests can check that nothing else was done.
+//! The phases themselves are in `sim::fall_wall` and `sim::fall_floor`.
 
-use super::complement;
-use super::event::{Direction, Event};
 use super::exact::PhaseOne;
+use super::fall_floor::floor_phase;
 pub use super::fall_observer::momentum_balance;
-use super::fall_observer::{rigid_momentum_x, TraceObserver, SAMPLES_PER_STEP};
+use super::fall_observer::{rigid_momentum_x, TraceObserver};
+use super::fall_wall::{wall_phase, WallStart};
 use super::floor;
-use super::integrators::taylor;
-use super::integrators::AnyStepper;
-use super::integrators::Stepper;
+use super::impact;
 use super::lead_in::linear_state_at;
-pub use super::outcome::{FlatState, FloorReport, Outcome, Plan, Sample, SeparationState, Work};
-use super::rigid::{self, Ladder, WallPhase};
-use super::run::{integrate_phase, Observer, RunError};
+use super::near_release;
+pub use super::outcome::{
+    FlatState, FloorReport, Outcome, Plan, Sample, SeparationState, Slide, Work,
+};
+use super::rigid::{self, Ladder};
+use super::run::{Observer, RunError};
 use super::scene::{ContactModel, End, Scene, MAX_END_TIME};
+use super::start_margin::Lean;
 use super::trace::Kept;
 use super::units::Units;
-use std::cell::Cell;
 
 /// Default hard limit on steps per phase (the scene checks refuse a scene that needs more).
 pub use super::scene_parts::MAX_STEPS;
-/// Separation: the factor g = Ω² cos θ − θ̇² of the wall force falls through zero.
-struct SeparationEvent(f64);
-impl Event<2> for SeparationEvent {
-    fn value(&self, _t: f64, y: &[f64; 2]) -> f64 {
-        rigid::separation_factor(self.0, y[0], y[1])
-    }
-    fn direction(&self) -> Direction {
-        Direction::Falling
-    }
-    /// d/dt (Ω² cos θ − θ̇²) = −Ω² sin θ θ̇ − 2 θ̇ θ̈.
-    fn rate(&self, _t: f64, y: &[f64; 2], dy: &[f64; 2]) -> Option<f64> {
-        Some(-self.0 * y[0].sin() * dy[0] - 2.0 * y[1] * dy[1])
-    }
-    /// Ω² cos θ − θ̇² and its rate on the step's polynomials of cos θ and θ̇.
-    fn on_series(&self, s: &taylor::Series<2>, tau: f64) -> Option<(f64, f64)> {
-        Some(taylor::separation_factor_on(
-            self.0,
-            &s.cos,
-            &s.y[1],
-            s.order,
-            s.inv_unit(),
-            tau,
-        ))
-    }
-    /// Ω² cos θ − θ̇² with the carried cos θ.
-    fn value_with_trig(&self, _t: f64, y: &[f64; 2], trig: (f64, f64)) -> f64 {
-        self.0 * trig.1 - y[1] * y[1]
-    }
-}
-
-/// Lift-off: the floor force falls through zero (checked inside steps too: it could dip and
-/// recover within one step).
-struct LiftOffEvent {
-    ladder: Ladder,
-    evals: Cell<u64>,
-}
-impl Event<4> for LiftOffEvent {
-    fn value(&self, _t: f64, y: &[f64; 4]) -> f64 {
-        self.evals.set(self.evals.get() + 1);
-        complement::floor_force(&self.ladder, y[0], y[2])
-    }
-    fn direction(&self) -> Direction {
-        Direction::Falling
-    }
-    fn interior_samples(&self) -> usize {
-        SAMPLES_PER_STEP
-    }
-}
 
 /// Run `scene` with at most `max_steps` steps per phase. Rigid scenes run in the scene's own
 /// units (see [`super::scaled`]), penalty scenes in the penalty model's; results are in SI.
@@ -93,7 +48,13 @@ pub fn run(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
         },
     );
     let lead = lead.map(|(t, theta, rate)| (t / units.time, theta, rate * units.time));
-    let mut out = run_rigid(&units.scale_scene(scene), lead, max_steps)
+    // Near the release push the start's margin D0 = Ω² cos θ0 − θ̇0², formed exactly from the
+    // SI inputs and scaled by T² (a relative rounding): θ̇0 T, rounded, would lose it
+    // (`super::start_margin`).
+    let lean = scene.phi0.map_or(Lean::Theta(scene.theta0), Lean::Phi);
+    let margin = near_release::near_margin(&scene.ladder, lean, scene.rate0)
+        .map(|d| d * (units.time * units.time));
+    let mut out = run_rigid(&units.scale_scene(scene), lead, margin, max_steps)
         .map(|o| units.outcome_to_si(o))
         .map_err(|e| units.error_to_si(e))?;
     // The trace's first point is the start as given (its rate may not survive the scaling).
@@ -104,10 +65,12 @@ pub fn run(scene: &Scene, max_steps: u64) -> Result<Outcome, RunError> {
 }
 
 /// A rigid `scene` already in its own units (m = l = g = 1), with the linear lead-in of a tiny
-/// start (t0, θ, θ̇) in those units when it has one ([`super::extreme::linear_lead_in`]).
+/// start (t0, θ, θ̇) in those units when it has one ([`super::extreme::linear_lead_in`]) and
+/// the start's margin D0 near the release push ([`super::near_release::near_margin`]).
 fn run_rigid(
     scene: &Scene,
     lead: Option<(f64, f64, f64)>,
+    margin: Option<f64>,
     max_steps: u64,
 ) -> Result<Outcome, RunError> {
     let plan = Plan::of(scene);
@@ -129,48 +92,12 @@ fn run_rigid(
         .map_or((0.0, [scene.theta0, scene.rate0]), |(t, th, w)| {
             (t, [th, w])
         });
-    let Some(control) = scene.control else {
-        // The exact reference (wall phase only; the scene validation guarantees end = separation).
-        let p =
-            PhaseOne::new(y_lead[0], y_lead[1], ladder.big_omega2()).map_err(RunError::Start)?;
-        let s = p
-            .separation()
-            .ok_or_else(|| RunError::Start("the ladder never leaves the wall".into()))?;
-        let sep = SeparationState {
-            time: t0 + s.time,
-            angle: s.angle,
-            rate: s.rate,
-        };
-        return Ok(Outcome {
-            plan,
-            separation: Some(sep),
-            flat: None,
-            last: (t0 + s.time, s.angle, s.rate),
-            energy_error: None,
-            momentum_error: None,
-            floor_report: None,
-            trace: None,
-            work,
-        });
-    };
-    let wall = WallPhase::new(&ladder);
+    // The margin belongs to the start as given (a lead-in never meets the release push).
+    let margin = margin.filter(|_| t0 == 0.0);
+    if scene.control.is_none() {
+        return exact_outcome(plan, &ladder, t0, y_lead, margin);
+    }
     let y0 = [scene.theta0, scene.rate0];
-    // Near the floor the wall phase runs in φ = π/2 − θ (see `super::complement`).
-    let in_complement = complement::applies(y_lead[0]);
-    // A start given as its complement φ0 (`angle_from_floor`) enters exactly (θ0 cannot hold it).
-    let phi0 = scene.phi0.filter(|_| t0 == 0.0);
-    let start = match in_complement {
-        true => [
-            phi0.unwrap_or_else(|| complement::complement(y_lead[0])),
-            -y_lead[1],
-        ],
-        false => y_lead,
-    };
-    // The stepper runs in time since the lead-in (its step floor is relative to |t|).
-    let mut stepper = AnyStepper::with_order(&scene.method, control, scene.order, 0.0, start)
-        .ok_or_else(|| {
-            RunError::Start(format!("method {} does not take {control:?}", scene.method))
-        })?;
     let mut obs = TraceObserver {
         ladder,
         phase: 1,
@@ -196,6 +123,7 @@ fn run_rigid(
             plan,
             separation: None,
             flat: None,
+            slide: None,
             last: (t0, y_lead[0], y_lead[1]),
             energy_error: e0.map(|e| (energy - e).abs() / (m * g * l)),
             momentum_error: None,
@@ -204,35 +132,18 @@ fn run_rigid(
             work,
         });
     }
-    let mut shifted = super::extreme::Shifted(&mut obs, t0);
-    let mut phi_s = None;
-    let mut end1 = if in_complement {
-        let sys = complement::ComplementWall::new(&ladder);
-        let sep_event = complement::ComplementSeparation(sys.big_omega2);
-        let mut e = integrate_phase(
-            &sys,
-            &mut stepper,
-            &[&sep_event],
-            t_end - t0,
-            max_steps,
-            &mut complement::InTheta(&mut shifted),
-        )?;
-        phi_s = Some(e.y[0]);
-        e.y = complement::to_theta(&e.y);
-        e
-    } else {
-        let sep_event = SeparationEvent(wall.big_omega2);
-        integrate_phase(
-            &wall,
-            &mut stepper,
-            &[&sep_event],
-            t_end - t0,
-            max_steps,
-            &mut shifted,
-        )?
+    let start = WallStart {
+        y: y_lead,
+        // A start given as its complement φ0 (`angle_from_floor`) enters exactly.
+        phi0: scene.phi0.filter(|_| t0 == 0.0),
+        margin,
     };
+    // The stepper runs in time since the lead-in (its step floor is relative to |t|).
+    let mut shifted = super::extreme::Shifted(&mut obs, t0);
+    let wall = wall_phase(scene, &start, t_end - t0, max_steps, &mut shifted)?;
+    let mut end1 = wall.end;
     end1.t += t0;
-    work.wall = stepper.stats();
+    work.wall = wall.stats;
     work.force_evals += obs.force_evals;
     let impulse = obs.impulse;
     let mut last = (end1.t, end1.y[0], end1.y[1]);
@@ -242,73 +153,43 @@ fn run_rigid(
         angle: end1.y[0],
         rate: end1.y[1],
     });
-    let (mut flat, mut momentum_error, mut floor_report) = (None, None, None);
+    let (mut flat, mut slide, mut momentum_error, mut floor_report) = (None, None, None, None);
 
     if let (true, Some(sep)) = (plan.floor_phase, separation) {
         // The floor phase runs in φ = π/2 − θ (see `super::complement`).
-        let floor_sys = complement::ComplementFloor::new(&ladder);
-        let phi_s = phi_s.unwrap_or_else(|| complement::complement(sep.angle));
-        // The factor's zero has sin φ_s = φ̇_s²/Ω² ≥ 0; a φ_s ≤ 0 (rounding at subnormal sizes)
-        // would leave the floor phase no flat to cross: say so, never run on past flat.
-        if phi_s <= 0.0 {
-            return Err(RunError::Start(format!(
-                "the separation was located at or past flat (π/2 − θ = {phi_s:e} rad): the start is too close to the floor for f64"
-            )));
-        }
-        let y_s = complement::floor_state_at_separation(&ladder, phi_s, sep.rate);
-        let mut stepper2 =
-            AnyStepper::with_order(&scene.method, control, scene.order, sep.time, y_s).ok_or_else(
-                || RunError::Start(format!("method {} does not take {control:?}", scene.method)),
-            )?;
-        let monitor = plan.floor_monitor.then_some(FloorReport {
-            floor_force_min: f64::INFINITY,
-            top_clearance_min: f64::INFINITY,
-        });
-        let mut obs2 = TraceObserver {
-            ladder,
-            phase: 2,
-            trace: trace.as_mut(),
-            monitor,
-            force_evals: 0,
-            phase_start: sep.time,
-            impulse: None,
-        };
-        let lift = LiftOffEvent {
-            ladder,
-            evals: Cell::new(0),
-        };
-        let end2 = integrate_phase(
-            &floor_sys,
-            &mut stepper2,
-            &[&complement::Flat, &lift],
-            t_end,
-            max_steps,
-            &mut complement::InTheta(&mut obs2),
-        );
-        work.floor = Some(stepper2.stats());
-        work.force_evals += obs2.force_evals + lift.evals.get();
-        floor_report = obs2.monitor;
-        let mut end2 = end2?;
-        end2.y = complement::floor_to_theta(&end2.y);
-        if end2.event == Some(1) {
-            return Err(RunError::LiftOff {
-                t: end2.t,
-                theta: end2.y[0],
-            });
-        }
-        let y = end2.y;
+        let phi_s = wall
+            .phi_s
+            .unwrap_or_else(|| super::complement::complement(sep.angle));
+        let floor = floor_phase(scene, &plan, trace.as_mut(), sep, phi_s, t_end, max_steps)?;
+        work.floor = Some(floor.stats);
+        work.force_evals += floor.force_evals;
+        floor_report = floor.report;
+        let (end2, y) = (floor.end, floor.end.y);
         last = (end2.t, y[0], y[2]);
         momentum_error =
             impulse.map(|j| momentum_balance(y[3], rigid_momentum_x(scene.theta0, scene.rate0), j));
+        // Over the integrated phases: up to flat (the impact's loss is the slide's own figure).
         energy_end = e0.map(|_| floor::energy(&ladder, y[0], y[2], y[3]));
         if end2.event == Some(0) {
-            flat = Some(FlatState {
+            let f = FlatState {
                 time: end2.t,
                 rate: y[2],
                 centre_x: y[1],
                 centre_velocity_x: y[3],
                 centre_velocity_y: -l * y[0].sin() * y[2],
-            });
+            };
+            flat = Some(f);
+            // A run to a later time goes on lying flat (module docs of `super::impact`).
+            if let (End::Time(_), true) = (scene.end, end2.t < t_end) {
+                let s = impact::slide(&ladder, &f, t_end);
+                if let Some(tr) = trace.as_mut() {
+                    for t in [f.time, t_end] {
+                        tr.offer(impact::lying_flat_sample(t));
+                    }
+                }
+                last = (t_end, end2.y[0], 0.0);
+                slide = Some(s);
+            }
         }
     }
     let trace = finished(trace, &ladder, plan.forces, &mut work);
@@ -317,12 +198,49 @@ fn run_rigid(
         plan,
         separation,
         flat,
+        slide,
         last,
         energy_error,
         momentum_error,
         floor_report,
         trace,
         work,
+    })
+}
+
+/// The exact reference's outcome (wall phase only; the scene validation guarantees
+/// end = separation), from (θ, θ̇) = `y` at `t0` after a lead-in, with the start's margin.
+fn exact_outcome(
+    plan: Plan,
+    ladder: &Ladder,
+    t0: f64,
+    y: [f64; 2],
+    margin: Option<f64>,
+) -> Result<Outcome, RunError> {
+    let big_omega2 = ladder.big_omega2();
+    let mut p = PhaseOne::new(y[0], y[1], big_omega2).map_err(RunError::Start)?;
+    if let Some(d) = margin {
+        p = p.with_start_margin(d);
+    }
+    let s = p
+        .separation()
+        .ok_or_else(|| RunError::Start("the ladder never leaves the wall".into()))?;
+    let sep = SeparationState {
+        time: t0 + s.time,
+        angle: s.angle,
+        rate: s.rate,
+    };
+    Ok(Outcome {
+        plan,
+        separation: Some(sep),
+        flat: None,
+        slide: None,
+        last: (t0 + s.time, s.angle, s.rate),
+        energy_error: None,
+        momentum_error: None,
+        floor_report: None,
+        trace: None,
+        work: Work::default(),
     })
 }
 

@@ -14,7 +14,9 @@
 //! `contact.model = "penalty"`), [`constrained`] (full coordinates with Lagrange multipliers
 //! and their drift), [`extreme`] (the wall phase at the edges of its domain: equilibrium,
 //! immediate release, any scale; a tiny start's linear growth in [`lead_in`]), [`complement`]
-//! (the wall phase near the floor, in φ = π/2 − θ).
+//! (the wall phase near the floor, in φ = π/2 − θ), [`near_release`] (the wall phase near the
+//! release push, in the deviation from the start, with the start's margin from
+//! [`start_margin`]).
 
 pub mod complement;
 pub mod constrained;
@@ -22,11 +24,15 @@ pub mod event;
 pub mod exact;
 pub mod extreme;
 pub mod fall;
+mod fall_floor;
 mod fall_observer;
+mod fall_wall;
 pub mod floor;
+pub mod impact;
 pub mod integrators;
 pub mod lead_in;
 pub mod minimum;
+pub mod near_release;
 pub mod outcome;
 pub mod output;
 pub mod penalty;
@@ -45,5 +51,6 @@ pub mod scene_parts;
 mod scene_shape;
 pub mod scene_work;
 mod start;
+pub mod start_margin;
 pub mod trace;
 pub mod units;

@@ -40,7 +40,7 @@ impl Plan {
 /// One stored point of the motion.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sample {
-    /// 1 (wall phase) or 2 (floor phase).
+    /// 1 (wall phase), 2 (floor phase) or 3 (lying flat after the impact, `sim::impact`).
     pub phase: u8,
     /// t, s.
     pub t: f64,
@@ -91,6 +91,21 @@ pub struct FlatState {
     pub centre_velocity_y: f64,
 }
 
+/// After flat, in a run to a later time (beyond the note; [`super::impact`]): the top struck
+/// the floor, perfectly inelastically (no bounce, and no horizontal impulse from the
+/// frictionless floor), and the ladder slid on lying flat at the centre's horizontal speed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Slide {
+    /// When the ladder lay flat and its top struck the floor (= the flat time).
+    pub impact_time: f64,
+    /// Ẋ, unchanged by the impact, and the speed of the slide.
+    pub centre_velocity_x: f64,
+    /// X at the end time.
+    pub centre_x_end: f64,
+    /// The kinetic energy the impact took, (2/3) m l² θ̇², over m g l.
+    pub energy_lost: f64,
+}
+
 /// What the floor-phase monitors saw.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FloorReport {
@@ -109,6 +124,8 @@ pub struct Outcome {
     pub separation: Option<SeparationState>,
     /// Flat, if reached.
     pub flat: Option<FlatState>,
+    /// Lying flat after the impact, when the run's end time came after flat.
+    pub slide: Option<Slide>,
     /// (t, θ, θ̇) at the end.
     pub last: (f64, f64, f64),
     /// |E_end − E_0| / (m g l), if asked.

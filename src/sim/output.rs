@@ -23,7 +23,8 @@ pub enum Output {
     /// Horizontal momentum balance of the fall, |Δ(m Ẋ) − ∫F_w dt| / (m √(g l))
     /// (`fall::momentum_balance`).
     MomentumError,
-    /// Energy change over the run, relative to m g l (`energy_error`).
+    /// Energy change over the integrated phases, relative to m g l (`energy_error`); a run
+    /// that goes on lying flat is measured up to flat (the impact's loss is `sim::impact`'s).
     EnergyError,
     /// Time and state at the end (`final.*`).
     FinalState,

@@ -44,6 +44,7 @@ pub fn run(scene: &Scene, k: f64, c: f64, max_steps: u64) -> Result<Outcome, Run
         plan: Plan::of(scene),
         separation: Some(sep),
         flat: None,
+        slide: None,
         last: (sep.time, sep.angle, sep.rate),
         energy_error: None,
         momentum_error: None,

@@ -11,7 +11,7 @@
 //! is how a third of the slow scenes failed before.
 
 use super::integrators::{Control, StepError};
-use super::outcome::{FlatState, FloorReport, Outcome, SeparationState};
+use super::outcome::{FlatState, FloorReport, Outcome, SeparationState, Slide};
 use super::run::RunError;
 use super::scene::{End, Scene};
 pub use super::units::{Units, UNIT_LADDER};
@@ -47,6 +47,12 @@ impl Units {
             centre_velocity_x: s.centre_velocity_x * (l / t),
             centre_velocity_y: s.centre_velocity_y * (l / t),
         });
+        o.slide = o.slide.map(|s| Slide {
+            impact_time: s.impact_time * t,
+            centre_velocity_x: s.centre_velocity_x * (l / t),
+            centre_x_end: s.centre_x_end * l,
+            energy_lost: s.energy_lost,
+        });
         o.last = (o.last.0 * t, o.last.1, o.last.2 / t);
         o.floor_report = o.floor_report.map(|r| FloorReport {
             floor_force_min: r.floor_force_min * f,
@@ -59,7 +65,7 @@ impl Units {
                 p.forces = p.forces.map(|(w, fl)| (w * f, fl * f));
             }
         }
-        // energy_error is |ΔE| / (m g l) and momentum_error over m √(g l): already unit-free.
+        // energy_error and energy_lost are over m g l, momentum_error over m √(g l): unit-free.
         o
     }
 

@@ -124,18 +124,32 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
         "a number >= 0 (rad/s)",
     )?;
     let big_omega2 = ladder.big_omega2();
-    if rate0 * rate0 >= big_omega2 * start.cos_theta0() {
+    let contact = check_contact(&cx, raw.contact.get_ref(), &ladder)?;
+    // At or past the release push the wall would have to pull at the start: a rigid run
+    // reports the separation at t = 0 and goes on in the floor phase (`sim::fall_wall`); the
+    // penalty model, whose springs would start stretched, is not run there.
+    let penalty = matches!(contact, ContactModel::Penalty { .. });
+    if penalty && rate0 * rate0 >= big_omega2 * start.cos_theta0() {
         let max = (big_omega2 * start.cos_theta0()).sqrt();
         return Err(cx.err(Some(s.angular_velocity.span()), "start.angular_velocity", format!(
-            "{rate0} rad/s is too fast: the wall would have to pull at the start; allowed: below sqrt(3g cos θ0 / 4l) = {max}"
+            "{rate0} rad/s is too fast for the penalty model: the wall would have to pull at the start; allowed: below sqrt(3g cos θ0 / 4l) = {max} (model = \"rigid\" reports the separation at t = 0 and goes on in the floor phase)"
         )));
     }
-    let contact = check_contact(&cx, raw.contact.get_ref(), &ladder)?;
     // The scene's time unit √(l/g): steps and end times are limited in it (see `sim::scaled`).
     let unit = Units::of(&ladder).time;
     let (method, control) = check_integrator(&cx, raw.integrator.get_ref(), unit)?;
     let order = super::scene_checks::check_order(&cx, raw.integrator.get_ref(), &method)?;
     let end = check_end(&cx, raw.end.get_ref(), unit)?;
+    // Past √(g/(l cos θ0)) the floor would have to pull at the start of the floor phase too
+    // (its force there is m l (g/l − cos θ0 θ̇0²)/(3 sin² θ0 + 1), `sim::fall_floor`): the
+    // ladder would fly, which no phase of this model follows.
+    let fly = ladder.gravity / (ladder.half_length * start.cos_theta0());
+    if !penalty && end != End::Separation && rate0 * rate0 >= fly {
+        return Err(cx.err(Some(s.angular_velocity.span()), "start.angular_velocity", format!(
+            "{rate0} rad/s is too fast: past sqrt(3g cos θ0 / 4l) the top leaves the wall at once, and past sqrt(g / (l cos θ0)) = {} the foot would leave the floor too, which this model does not follow; allowed: below that, or end.at = \"separation\"",
+            fly.sqrt()
+        )));
+    }
     if theta0 == 0.0 && rate0 == 0.0 && !matches!(end, End::Time(_)) {
         return Err(cx.err(Some(start.span.clone()), "start", "θ0 = 0 with θ̇0 = 0 is the equilibrium: the ladder never leaves the wall; allowed: angle > 0 or angular_velocity > 0 (or end.at = \"time\")"));
     }

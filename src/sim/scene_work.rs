@@ -229,7 +229,9 @@ pub fn phase_steps(
         };
     };
     let hs = h / unit;
-    let cs = 2.0 / 3.0 * theta0.cos() + 4.0 / 9.0 * rate * rate;
+    // At or past the release push the floor phase starts at θ0, faster than from a separation
+    // there: its duration from cos θ_s = cos θ0 bounds it.
+    let cs = (2.0 / 3.0 * theta0.cos() + 4.0 / 9.0 * rate * rate).min(theta0.cos());
     let floor = match (end, contact) {
         (End::Separation, _) | (_, ContactModel::Penalty { .. }) => 0.0,
         _ if t_end <= t_s => 0.0,

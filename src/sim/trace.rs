@@ -69,8 +69,9 @@ impl Kept {
     }
 
     /// The kept samples with the last one offered, and their forces (F_w, F_f) when `forces`
-    /// (eqs. (14), (15) on the wall, the floor phase's normal force after it), in the ladder's
-    /// units; returns them with the force evaluations spent.
+    /// (eqs. (14), (15) on the wall, the floor phase's normal force after it, m g/2 at the foot
+    /// once the ladder lies flat, phase 3: `super::impact`), in the ladder's units; returns them
+    /// with the force evaluations spent.
     pub(super) fn finish(mut self, ladder: &Ladder, forces: bool) -> (Vec<Sample>, u64) {
         if let Some((s, false)) = self.last {
             self.samples.push(s);
@@ -78,13 +79,13 @@ impl Kept {
         let mut evals = 0;
         if forces {
             for s in &mut self.samples {
-                s.forces = Some(if s.phase == 1 {
-                    (
+                s.forces = Some(match s.phase {
+                    1 => (
                         rigid::wall_force(ladder, s.theta, s.rate),
                         rigid::floor_force(ladder, s.theta, s.rate),
-                    )
-                } else {
-                    (0.0, floor::floor_force(ladder, s.theta, s.rate))
+                    ),
+                    2 => (0.0, floor::floor_force(ladder, s.theta, s.rate)),
+                    _ => (0.0, super::impact::lying_flat_floor_force(ladder)),
                 });
                 evals += 2;
             }

@@ -1,6 +1,7 @@
 //! `ladder work-precision` takes a list of scenes and draws one panel per scene (issue 13,
 //! item 3): two scene files give two panels titled by their starts, `runs.csv` rows of both,
-//! and an observed-order block per scene with the fitted range and the slope's standard error.
+//! and an observed-order block per scene with the fitted range and the slope's standard error
+//! (or why none is fitted) and the slope of error against tolerance.
 
 use std::process::Command;
 
@@ -43,12 +44,21 @@ fn a_list_of_scenes_gives_one_panel_each() {
     // One observed-order line for dop853 per scene, with its standard error and range.
     let fits: Vec<&str> = stdout
         .lines()
-        .filter(|l| l.trim_start().starts_with("dop853") && l.contains("theoretical"))
+        .filter(|l| l.trim_start().starts_with("dop853") && l.contains("classical"))
         .collect();
     assert_eq!(fits.len(), 2, "{stdout}");
     assert!(
         fits.iter()
             .any(|l| l.contains(" ± ") && l.contains("rhs ") && l.contains("floor")),
         "{fits:?}"
+    );
+    assert!(
+        fits.iter().any(|l| l.contains("not fitted (")),
+        "steep (θ0 = 1.4) reaches the floor in fewer than 10 steps: {fits:?}"
+    );
+    // Each of the four adaptive methods has its tolerance line, on each scene.
+    assert!(
+        stdout.matches("tolerance slope").count() >= 2 * 4,
+        "{stdout}"
     );
 }

@@ -164,6 +164,24 @@ fn the_judge_rejects_wrong_results() {
     assert_eq!(flagged(&sc, &o), ["energy_error", "energy_error"]);
 }
 
+/// A start past the release push (θ0 = 0.3 pushed at 1.1 √(3g cos θ0/4l)) leaves the wall at
+/// once: the judge holds the separation to the start itself and the flat time to the floor
+/// phase from there (`sim::exact::flat::floor_duration_from`), and sees either moved.
+#[test]
+fn the_judge_holds_a_start_past_the_release_push_to_the_start() {
+    let (mut sc, _) = whole_fall(0.3);
+    sc.rate0 = 1.1 * (0.75 * 9.81 / 0.5 * 0.3f64.cos()).sqrt();
+    let good = fall::run(&sc, fall::MAX_STEPS).expect("runs");
+    assert_eq!(good.separation.unwrap().time, 0.0);
+    assert!(flagged(&sc, &good).is_empty(), "{:?}", flagged(&sc, &good));
+    let mut o = good.clone();
+    o.separation.as_mut().unwrap().angle *= 1.0 + 1e-9;
+    assert_eq!(flagged(&sc, &o), ["separation_angle"]);
+    let mut o = good.clone();
+    o.flat.as_mut().unwrap().time *= 1.0 + 1e-8;
+    assert_eq!(flagged(&sc, &o), ["flat_time"]);
+}
+
 /// A penalty run is held to the rigid angle within the penalty contact's error model
 /// (`sim::penalty_confirm::separation_bound`): at κ = 1e8 an angle moved by 1e-6 is rejected.
 #[test]

@@ -221,3 +221,78 @@ fn no_listed_point_is_dominated_and_every_other_is() {
         .collect();
     assert!(strict.len() > front.len());
 }
+
+/// The report's rule: five runs in range spanning two decades of error, else the reason. A
+/// clean line of order 8 over 100..1600 steps (five runs, 1e-3..1.5e-12, the first above the
+/// asymptotic 1e-4 and out) is fitted; its first four are not ("4 runs"), and five runs with
+/// the same steps but errors spanning 1.5 decades are not either.
+#[test]
+fn the_report_fits_five_runs_over_two_decades_and_says_why_not() {
+    let line = |k: i32, span: f64| {
+        let n = 100.0 * 2f64.powf(k as f64 / 2.0);
+        P("m", n as u64, 0.0, 1e-5 * (100.0 / n).powf(span))
+    };
+    let five: Vec<P> = (0..5).map(|k| line(k, 8.0)).collect();
+    let fit = order_fit(&five, "m").expect("fitted");
+    assert_eq!(fit.runs, 5);
+    assert!((fit.order - 8.0).abs() < 0.05, "{fit:?}");
+    let four = order_fit(&five[..4], "m").expect_err("four runs");
+    assert!(four.starts_with("4 runs in range"), "{four}");
+    assert!(observed_order(&five[..4], "m").is_some());
+    // Slope 0.75: five runs over 0.75 · log10(2^2) = 0.45 decades.
+    let flat: Vec<P> = (0..5).map(|k| line(k, 0.75)).collect();
+    let why = order_fit(&flat, "m").expect_err("too few decades");
+    assert!(why.contains("decades of error"), "{why}");
+}
+
+/// A run with a tolerance: (tolerance, steps, error).
+#[derive(Debug)]
+struct T(f64, u64, f64);
+impl Point for T {
+    fn method(&self) -> &str {
+        "m"
+    }
+    fn rhs_evals(&self) -> u64 {
+        self.1
+    }
+    fn steps(&self) -> u64 {
+        self.1
+    }
+    fn seconds(&self) -> f64 {
+        0.0
+    }
+    fn error(&self) -> f64 {
+        self.2
+    }
+    fn tolerance(&self) -> f64 {
+        self.0
+    }
+}
+
+/// The tolerance slope: 1 for an error proportional to the tolerance, 0 for a stretch where
+/// a step cap holds the steps and the error (issue 38: dop853 from θ0 = 0.1, 1e-11..6e-11
+/// from 1e-5 to 1e-9), and not fitted below five runs or two decades of tolerance.
+#[test]
+fn the_tolerance_slope_is_one_where_the_error_follows_the_tolerance() {
+    let prop: Vec<T> = (3..=10)
+        .map(|k| T(10f64.powi(-k), 10 * k as u64, 3.0 * 10f64.powi(-k)))
+        .collect();
+    let s = tolerance_slope(&prop, "m").unwrap();
+    assert!(
+        (s.slope - 1.0).abs() < 1e-12 && s.std_error < 1e-12,
+        "{s:?}"
+    );
+    assert_eq!((s.runs, s.tolerance_range), (8, (1e-3, 1e-10)));
+    let capped: Vec<T> = (5..=9)
+        .map(|k| T(10f64.powi(-k), 8, 3e-11 * (1.0 + 0.1 * k as f64)))
+        .collect();
+    let c = tolerance_slope(&capped, "m").unwrap();
+    assert!(c.slope.abs() < 0.05, "{c:?}");
+    assert!(tolerance_slope(&capped[..4], "m").is_err());
+    let narrow: Vec<T> = (0..6)
+        .map(|k| T(1e-6 * 10f64.powf(-0.3 * k as f64), 10, 1e-6))
+        .collect();
+    assert!(tolerance_slope(&narrow, "m")
+        .unwrap_err()
+        .contains("decades of tolerance"));
+}

@@ -76,7 +76,20 @@ fn adaptive(
 pub fn floor_duration(cos_s: f64) -> f64 {
     let phi_s = cos_s.asin();
     let rate_s2 = OMEGA2 * cos_s;
-    let kinetic = 0.5 * (1.0 - cos_s * cos_s + 1.0 / 3.0) * rate_s2;
+    duration(phi_s, 0.5 * (1.0 - cos_s * cos_s + 1.0 / 3.0) * rate_s2)
+}
+
+/// Time to flat in units of √(l/g) of a floor phase that starts at φ = π/2 − θ = `phi_s` with
+/// θ̇ = `rate_s` (per √(l/g)): a start at or past the release push leaves the wall at once with
+/// its own rate, not the separation's θ̇_s² = Ω² cos θ_s (`sim::fall_wall`).
+pub fn floor_duration_from(phi_s: f64, rate_s: f64) -> f64 {
+    let c = phi_s.cos();
+    duration(phi_s, 0.5 * (c * c + 1.0 / 3.0) * rate_s * rate_s)
+}
+
+/// ∫ dφ/φ̇ over [0, φ_s] with the floor phase's kinetic energy ½ (sin² θ + 1/3) θ̇² = `kinetic`
+/// at φ_s (module docs).
+fn duration(phi_s: f64, kinetic: f64) -> f64 {
     let inverse_rate = |phi: f64| {
         let drop = 2.0 * (0.5 * (phi_s + phi)).cos() * (0.5 * (phi_s - phi)).sin();
         let c = phi.cos();
@@ -141,5 +154,18 @@ mod tests {
                 "cos θ_s {cos_s}: {got} against {want}"
             );
         }
+    }
+
+    /// From upright at θ̇0 = 0.9 per √(l/g) (past the release push Ω = 0.866): 1.527855663419451
+    /// by mpmath (`python3 tools/near_release_reference.py --past`), 16 ε as above; and the
+    /// general form agrees with the separation's at θ̇_s² = Ω² cos θ_s.
+    #[test]
+    fn the_duration_from_any_start_is_the_energy_integral() {
+        let got = floor_duration_from(std::f64::consts::FRAC_PI_2, 0.9);
+        let want = 1.527_855_663_419_451_5;
+        assert!((got - want).abs() <= 16.0 * f64::EPSILON * want, "{got}");
+        let c: f64 = 0.5;
+        let from = floor_duration_from(c.asin(), (OMEGA2 * c).sqrt());
+        assert!((from - floor_duration(c)).abs() <= 16.0 * f64::EPSILON * from);
     }
 }

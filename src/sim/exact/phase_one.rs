@@ -38,6 +38,9 @@ pub struct PhaseOne {
     /// ρ = θ̇₀/(2Ω), so that θ̇² = 4Ω²(sin²(θ/2) − a) with a = s₀² − ρ².
     rho: f64,
     orbit: Orbit,
+    /// cos θ₀ − θ̇₀²/Ω² from the caller, formed from inputs this type does not see (the scene's
+    /// SI values, `sim::start_margin`); None: formed here in double-double.
+    margin: Option<f64>,
 }
 
 /// The three kinds of pendulum orbit (φ = π − θ), by the sign of a = s₀² − ρ².
@@ -100,6 +103,7 @@ impl PhaseOne {
                 c0,
                 rho,
                 orbit,
+                margin: None,
             });
         }
         if rho > MAX_RATE_RATIO {
@@ -164,7 +168,18 @@ impl PhaseOne {
             c0,
             rho,
             orbit,
+            margin: None,
         })
+    }
+
+    /// The same motion with its start's wall-force factor D₀ = Ω² cos θ₀ − θ̇₀² given (in
+    /// this motion's units), for a start whose θ̇₀ or Ω² reached this type rounded (a scene
+    /// scaled to its own units, θ̇₀ √(l/g)): near the release push the separation depends on
+    /// the start through D₀ alone, which those roundings would change by up to κ u relative
+    /// (κ = Ω² cos θ₀ / D₀; `sim::near_release`).
+    pub fn with_start_margin(mut self, margin: f64) -> PhaseOne {
+        self.margin = Some(margin / self.big_omega2);
+        self
     }
 
     /// The start angle θ₀, rad.
@@ -194,7 +209,9 @@ impl PhaseOne {
             return None;
         }
         // cos θ₀ − θ̇₀²/Ω² in double-double: near immediate separation it is a small difference.
-        let margin = cos_minus_ratio(self.theta0.cos(), self.rate0, self.big_omega2);
+        let margin = self
+            .margin
+            .unwrap_or_else(|| cos_minus_ratio(self.theta0.cos(), self.rate0, self.big_omega2));
         if margin <= 0.0 || margin.is_nan() {
             let (angle, rate) = (self.theta0, self.rate0);
             return Some(Separation {

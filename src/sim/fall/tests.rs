@@ -1,8 +1,15 @@
 //! Unit tests of `sim::fall`: the events' rates and values.
 
 use super::*;
+use crate::sim::complement;
+use crate::sim::event::Event;
+use crate::sim::fall_floor::LiftOffEvent;
+use crate::sim::fall_wall::SeparationEvent;
+use crate::sim::integrators::AnyStepper;
 use crate::sim::integrators::{Control, Ode};
+use crate::sim::run::integrate_phase;
 use num_dual::DualNum;
+use std::cell::Cell;
 
 /// `SeparationEvent::rate` is the derivative of its value along the state rate: a central
 /// difference of the value, g = Ω² cos θ − θ̇², along y ± ε dy. Error model: g's third

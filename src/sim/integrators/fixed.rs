@@ -1,6 +1,13 @@
 //! The driver shared by the fixed-step methods: step bookkeeping, the cached slope, and the cubic
 //! Hermite interpolant over the last step (free, since the end slope is the next step's first
 //! stage).
+//!
+//! **Time on the grid.** The time after n whole steps from t0 is t0 + n h, rounded once, not
+//! the running sum t + h: that sum rounds at every step, each time by up to half an ulp of t,
+//! and the roundings of one step size at times of one binade lean the same way, so the error
+//! grew with the number of steps (issue 38: rk4's separation time from θ0 = 1e-4 at rest, off by
+//! 1.15e-12 relative at h = 1e-4 T, 1.1e5 steps). A step shortened by the event-safety cap or
+//! to land on the stop time starts a new grid at its end.
 
 use super::{all_finite, eval, hermite, Control, Integrator, Ode, Stats, StepError, Stepper};
 
@@ -49,6 +56,8 @@ pub struct FixedStep<M, const N: usize> {
     t_prev: f64,
     y_prev: [f64; N],
     f_prev: [f64; N],
+    /// The grid's origin and the whole steps taken on it (module docs).
+    grid: (f64, u64),
     stats: Stats,
     _method: std::marker::PhantomData<M>,
 }
@@ -73,6 +82,7 @@ impl<M: FixedMethod<N>, const N: usize> FixedStep<M, N> {
             t_prev: t0,
             y_prev: y0,
             f_prev: [0.0; N],
+            grid: (t0, 0),
             stats: Stats::default(),
             _method: std::marker::PhantomData,
         }
@@ -121,9 +131,16 @@ impl<M: FixedMethod<N>, const N: usize> Stepper<N> for FixedStep<M, N> {
         self.f_prev = f0;
         self.t = if self.t + h == t_stop || h == t_stop - self.t_prev {
             t_stop
+        } else if h == self.h {
+            // A whole step on the grid: t0 + n h.
+            self.grid.1 += 1;
+            self.grid.0 + self.grid.1 as f64 * h
         } else {
             self.t_prev + h
         };
+        if h != self.h || self.t == t_stop {
+            self.grid = (self.t, 0);
+        }
         self.y = y1;
         self.f = f1;
         self.stats.steps += 1;

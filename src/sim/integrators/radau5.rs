@@ -12,8 +12,8 @@
 //! to a real and a complex system): for the ladder N is 2 or 4, where that is simplest and fast.
 //! The dense output is the collocation polynomial itself.
 
+use super::adaptive::{advance_time, start_step, trial_step};
 use super::Integrator;
-use super::adaptive::{start_step, trial_step};
 use super::dense_lu::{lu_factor, lu_solve};
 use super::{all_finite, eval, Ode, Stats, StepError, Stepper};
 use num_dual::Dual64;
@@ -114,6 +114,8 @@ pub struct Radau5<const N: usize> {
     y: [f64; N],
     h: f64,
     t_prev: f64,
+    /// The rounding of `t` so far (`adaptive::advance_time`).
+    t_lo: f64,
     y_prev: [f64; N],
     z: [[f64; N]; 3],
     have_prev: bool,
@@ -140,6 +142,7 @@ impl<const N: usize> Radau5<N> {
             y: y0,
             h: 0.0,
             t_prev: t0,
+            t_lo: 0.0,
             y_prev: y0,
             z: [[0.0; N]; 3],
             have_prev: false,
@@ -360,7 +363,7 @@ impl<const N: usize> Stepper<N> for Radau5<N> {
                 self.y_prev = y;
                 self.z = z;
                 self.have_prev = true;
-                self.t = if last { t_stop } else { t + h };
+                (self.t, self.t_lo) = advance_time(t, self.t_lo, h, last, t_stop);
                 self.y = y1;
                 if !last {
                     self.h = if keep_jac && (1.0..=1.2).contains(&grow) {

@@ -3,6 +3,12 @@
 //!
 //! For a separable model (acceleration independent of velocity, the wall phase) it is
 //! symplectic, so the energy error stays bounded instead of drifting as with explicit Euler.
+//!
+//! The drift takes the position's rate at the new velocity, f_q(q0, v1). For the usual layout
+//! that is v1; for a model whose position moves at the velocity plus a constant (the deviation
+//! from a uniform rotation, `sim::near_release`) it is v1 + (f_q0 − v0), read off the first
+//! slope. Written that way for both: for the usual layout f_q0 − v0 is exactly 0, so its steps
+//! are bit for bit those of q0 + h v1.
 
 use super::fixed::{FixedStep, SlopeOnlyMethod};
 use super::card::{Card, ControlKind, Stiffness, Sweep};
@@ -32,7 +38,7 @@ impl<const N: usize> SlopeOnlyMethod<N> for SymplecticEulerStep {
         let mut y1 = *y;
         for i in 0..d {
             y1[d + i] = y[d + i] + h * f0[d + i];
-            y1[i] = y[i] + h * y1[d + i];
+            y1[i] = y[i] + h * (y1[d + i] + (f0[i] - y[d + i]));
         }
         y1
     }

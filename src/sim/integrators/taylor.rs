@@ -140,6 +140,8 @@ pub struct Taylor<const N: usize> {
     /// (sin, cos) of y[0], carried along the series.
     trig: (f64, f64),
     t_prev: f64,
+    /// The rounding of `t` so far (`adaptive::advance_time`).
+    t_lo: f64,
     series: Series<N>,
     stats: Stats,
 }
@@ -161,6 +163,7 @@ impl<const N: usize> Taylor<N> {
             y: y0,
             trig: y0[0].sin_cos(),
             t_prev: t0,
+            t_lo: 0.0,
             series: Series::new(order.clamp(MIN_ORDER, MAX_ORDER)),
             stats: Stats::default(),
         }
@@ -269,7 +272,7 @@ impl<const N: usize> Stepper<N> for Taylor<N> {
             return Err(StepError::NotFinite { t });
         }
         self.t_prev = t;
-        self.t = if last { t_stop } else { t + h };
+        (self.t, self.t_lo) = super::adaptive::advance_time(t, self.t_lo, h, last, t_stop);
         self.y = y1;
         self.trig = trig1;
         self.stats.steps += 1;

@@ -76,6 +76,12 @@ impl<const N: usize> Series<N> {
         self.inv_unit
     }
 
+    /// H/k for k = 0..=MAX_ORDER+1 (entry 0 is 0): the "reciprocals" a model's own recursion
+    /// reads to give its coefficients in the unit H (`sim::near_release`).
+    pub fn unit_over_k(&self) -> &[f64; MAX_ORDER + 2] {
+        &self.unit_over_k
+    }
+
     /// Take the time unit `unit` for the next recursion: the power of two at or below it (1 if
     /// it is not a positive finite number).
     pub fn set_unit(&mut self, unit: f64) {

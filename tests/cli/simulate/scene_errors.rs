@@ -1,7 +1,7 @@
 //! Every kind of bad scene: exit code 2, one line on stderr naming the file, the line and the
 //! field, and no output file written. Plus: random and mutated scene text never panics.
 
-use crate::common::{with, BASE};
+use crate::common::{with, BASE, PENALTY};
 use proptest::prelude::*;
 
 /// Run `ladder simulate` on `text`; returns (exit code, stderr, files in the out dir).
@@ -99,8 +99,8 @@ fn every_bad_scene_gets_one_line_exit_2_and_no_file() {
             ">= 0",
         ),
         (
-            "rate too fast",
-            with("angular_velocity = 0.0", "angular_velocity = 100"),
+            "rate too fast for the penalty model",
+            PENALTY.replace("angular_velocity = 0.0", "angular_velocity = 100"),
             Some(7),
             "start.angular_velocity",
             "too fast",

@@ -4,4 +4,5 @@ mod figure;
 mod fit;
 #[cfg(feature = "peers")]
 mod peers;
+mod radau5_order;
 mod runs;

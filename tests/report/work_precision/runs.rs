@@ -1,12 +1,14 @@
 //! Work-precision on real runs: dop853's observed order on the fitted range is near 8, the
-//! Pareto front of a real sweep has no dominated run, and the full fall's flat-time reference
-//! agrees with an independent method.
+//! Pareto front of a real sweep has no dominated run and no point below its reference's
+//! accuracy, and the full fall's flat-time reference (closed form and quadrature, independent
+//! of the integrators) agrees with DOP853.
 
+use sliding_ladder::report::work_precision::FLAT_ACCURACY;
 use sliding_ladder::report::work_precision::{
     default_scenes, flat_reference, measure, scene_at, Run, Timing,
 };
 use sliding_ladder::report::work_precision_fit::{
-    dominates, observed_order, rounding_floor, Point, ASYMPTOTIC, MIN_STEPS,
+    dominates, order_fit, rounding_floor, Point, ASYMPTOTIC, MIN_RUNS, MIN_STEPS,
 };
 use sliding_ladder::report::work_precision_report::report;
 use sliding_ladder::sim::event::{Direction, Event};
@@ -26,26 +28,29 @@ const ONCE: Timing = Timing {
     max: 1,
 };
 
-/// The issue's criterion on its scenes, with the fitting rule of `work_precision_fit` (runs of
-/// at least 10 steps in every phase above the sweep's rounding floor, fitted against steps).
-/// Every order reported is within 1 of 8, and one is reported where the range holds three runs:
-/// upright with a push, θ0 = 0.1 and 0.3 from rest. From θ0 = 1 and 1.5 dop853 reaches the
-/// rounding floor in fewer than 10 steps; in the full fall to flat from 0.3, fewer than three
-/// runs above the floor take 10 steps in each phase. There no order is reported, and the test
-/// holds the reason: the runs above the floor that rule 2 keeps are fewer than three.
+/// The issue's criterion on its scenes, with the fitting rule of `work_precision_fit` (at least
+/// five runs of at least 10 steps in every phase above the sweep's rounding floor, spanning two
+/// decades of error, fitted against steps). Every order reported is within 1 of 8, and one is
+/// reported where the range holds five runs: upright with a push and θ0 = 0.1 from rest. From
+/// θ0 = 0.3 four runs are in range (issue 38: such fits on 3-4 runs gave slopes far from the
+/// method's), from θ0 = 1 and 1.5 dop853 reaches the rounding floor in fewer than 10 steps,
+/// and in the full fall to flat fewer than five runs above the floor take 10 steps in each
+/// phase. There no order is reported, and the test holds the reason.
 #[test]
 fn dop853_order_is_within_one_of_eight_on_the_fitted_range() {
     for sc in default_scenes() {
         let runs = measure(&sc, &["dop853"], ONCE, |_| {}).unwrap();
-        let fit = observed_order(&runs, "dop853");
+        let fit = order_fit(&runs, "dop853");
         println!("{}: {fit:?}", sc.file);
-        if sc.end == End::Separation && sc.theta0 < 0.5 {
+        if sc.end == End::Separation && sc.theta0 < 0.2 {
             let f = fit.expect("a fitted range");
             assert!((f.order - 8.0).abs() <= 1.0, "{}: {f:?}", sc.file);
-            assert!(f.runs >= 3 && f.error_range.1 >= f.floor, "{f:?}");
+            assert!(f.runs >= MIN_RUNS && f.error_range.1 >= f.floor, "{f:?}");
+            assert!(f.error_range.0 / f.error_range.1 >= 100.0, "{f:?}");
             assert!(f.steps_range.0 >= MIN_STEPS, "{f:?}");
         } else {
-            assert!(fit.is_none(), "{}: {fit:?}", sc.file);
+            let why = fit.expect_err("too few runs in range");
+            assert!(why.contains("runs in range"), "{why}");
             let floor = rounding_floor(&runs, "dop853");
             let above: Vec<&Run> = runs
                 .iter()
@@ -55,7 +60,7 @@ fn dop853_order_is_within_one_of_eight_on_the_fitted_range() {
                 .iter()
                 .filter(|r| r.shortest_phase_steps() >= MIN_STEPS)
                 .count();
-            assert!(above.len() >= 3 && long < 3, "{}: {long}", sc.file);
+            assert!(above.len() >= 3 && long < MIN_RUNS, "{}: {long}", sc.file);
         }
     }
 }
@@ -73,7 +78,10 @@ fn a_real_front_has_no_dominated_run_and_the_flat_reference_holds() {
             assert!(rep.runs.iter().any(|q| dominates(q, r)), "{r:?} left out");
         }
     }
-    // The reference (Taylor, order 40, from the exact separation) and DOP853 at 1e-16 agree.
+    // No point of the front lies below the reference's accuracy (the front ended on an error
+    // of 0 when the reference was the Taylor method at order 40).
+    assert!(rep.pareto.iter().all(|r| r.error() >= FLAT_ACCURACY));
+    // The reference (the closed form and the floor phase's quadrature) and DOP853 agree.
     let best = rep
         .runs
         .iter()

@@ -6,3 +6,4 @@ mod ode;
 mod quadrature;
 mod reference;
 mod robust;
+mod ulps;

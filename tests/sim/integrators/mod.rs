@@ -8,6 +8,7 @@ mod fixed;
 mod overflow;
 mod radau5;
 mod rhs_counts;
+mod step_time;
 mod taylor;
 mod unit_free_steps;
 mod verlet;

@@ -1,0 +1,189 @@
+//! The wall force's factor at the start, D0 = Ω² cos θ0 − θ̇0², to f64's relative precision
+//! from the scene's binary64 inputs (eq. (14) on the motion (5): F_w = m l sin θ (Ω² cos θ −
+//! θ̇²), `rigid::separation_factor`).
+//!
+//! **Why.** Near the release push, θ̇0 → Ω √cos θ0, D0 is a small difference of two numbers of
+//! size Ω² cos θ0: formed in f64 it carries an absolute error of about u Ω² cos θ0, a relative
+//! error u κ with κ = Ω² cos θ0 / D0 (κ = 2.7e15 one ulp below Ω from upright; the scaling of a
+//! scene to its own units, θ̇0 → θ̇0 √(l/g), adds the same again). The separation depends on the
+//! start through D0 alone (sin²(θ_s/2) − sin²(θ0/2) = D0/(6Ω²), footnote 4 generalised), so
+//! every digit of D0 lost is a digit of θ_s − θ0 and of t_s lost (`sim::near_release`).
+//!
+//! **How.** g, l and θ̇0 are binary64 numbers, hence exact rationals; cos θ0 (or sin φ0 for a
+//! start given as φ0 = π/2 − θ0, as sin φ0 = φ0 · (sin φ0/φ0) so that a tiny φ0 keeps its
+//! relative precision) is summed from its Taylor series in fixed point with 2⁻²⁰⁰ resolution,
+//! each of its ≤ 60 terms truncated once (so within 2⁻¹⁹⁴ of the true value); then
+//! D0 = (3 g C − 4 l θ̇0²)/(4 l) is exact rational arithmetic ([`crate::scalar::Rational`], the
+//! exact checks' type), rounded once to f64 (num-rational's `to_f64` keeps 55 bits and rounds).
+//! The error left is 2⁻¹⁹⁴ Ω² C plus half an ulp of D0. Hand-written: the crate has exact
+//! rationals but no arbitrary-precision cosine (rug and malachite are LGPL with C builds);
+//! twenty lines of series. It costs tens of microseconds, paid only near the release push.
+
+use super::rigid::Ladder;
+use crate::scalar::Rational;
+use num_bigint::BigInt;
+use num_traits::{One, ToPrimitive, Zero};
+
+/// Fixed-point resolution of the series: 2⁻ᴮᴵᵀˢ.
+const BITS: i64 = 200;
+
+/// The start's angle as a scene gives it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Lean {
+    /// θ0, rad (`[start] angle`).
+    Theta(f64),
+    /// φ0 = π/2 − θ0, rad (`[start] angle_from_floor`, exact where θ0 is not).
+    Phi(f64),
+}
+
+impl Lean {
+    /// cos θ0 in f64 (from φ0 as sin φ0).
+    pub fn cos(self) -> f64 {
+        match self {
+            Lean::Theta(t) => t.cos(),
+            Lean::Phi(p) => p.sin(),
+        }
+    }
+
+    /// sin θ0 in f64 (from φ0 as cos φ0).
+    pub fn sin(self) -> f64 {
+        match self {
+            Lean::Theta(t) => t.sin(),
+            Lean::Phi(p) => p.cos(),
+        }
+    }
+
+    /// cos θ0 (= sin φ0) as an exact rational within 2⁻¹⁹⁴ (relatively, for φ0) of the truth.
+    fn cos_exact(self) -> Rational {
+        match self {
+            Lean::Theta(t) => fixed_series(t, 0),
+            Lean::Phi(p) => exact(p) * fixed_series(p, 1),
+        }
+    }
+}
+
+/// x as an exact rational (x finite).
+fn exact(x: f64) -> Rational {
+    Rational::from_float(x).unwrap_or_else(Rational::zero)
+}
+
+/// Σ_k (−1)^k x^{2k} / (2k + o)! · o! for o = 0 (cos x) or o = 1 (sin x / x), |x| ≤ 2, in fixed
+/// point: each term is the last times −x²/((2k − 1 + o)(2k + o)), truncated to 2⁻ᴮᴵᵀˢ.
+fn fixed_series(x: f64, o: u64) -> Rational {
+    let one = BigInt::one() << BITS as usize;
+    // x² in fixed point (x = m 2^e exactly, so x² 2^BITS = m² 2^(2e + BITS), truncated).
+    let x2 = {
+        let r = exact(x) * exact(x) * Rational::from_integer(one.clone());
+        r.to_integer()
+    };
+    let (mut term, mut sum) = (one.clone(), one.clone());
+    let mut k = 1u64;
+    while !term.is_zero() && k < 200 {
+        term = -((term * &x2) >> BITS as usize) / BigInt::from((2 * k - 1 + o) * (2 * k + o));
+        sum += &term;
+        k += 1;
+    }
+    Rational::new(sum, one)
+}
+
+/// D0 = Ω² cos θ0 − θ̇0² of `ladder` (in its own units, s⁻²) for the start `lean`, `rate0`:
+/// exact rationals rounded once (module docs). NaN for a non-finite input.
+pub fn start_margin(ladder: &Ladder, lean: Lean, rate0: f64) -> f64 {
+    let (g, l) = (ladder.gravity, ladder.half_length);
+    let angle = match lean {
+        Lean::Theta(t) | Lean::Phi(t) => t,
+    };
+    if !(g.is_finite() && l.is_finite() && l > 0.0 && angle.is_finite() && rate0.is_finite()) {
+        return f64::NAN;
+    }
+    let three = Rational::from_integer(3.into());
+    let four = Rational::from_integer(4.into());
+    let numer = three * exact(g) * lean.cos_exact() - four.clone() * exact(l) * exact(rate0).pow(2);
+    (numer / (four * exact(l))).to_f64().unwrap_or(f64::NAN)
+}
+
+/// The same margin formed in f64, Ω² cos θ0 − θ̇0²: what the run used before (kept for the
+/// tests that show its error).
+pub fn start_margin_f64(ladder: &Ladder, lean: Lean, rate0: f64) -> f64 {
+    ladder.big_omega2() * lean.cos() - rate0 * rate0
+}
+
+// The references keep the digits mpmath printed: more than f64 holds, on purpose.
+#[allow(clippy::excessive_precision)]
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::FRAC_PI_2;
+
+    const UNIT: Ladder = Ladder {
+        mass: 1.0,
+        half_length: 1.0,
+        gravity: 1.0,
+    };
+
+    /// The fixed-point cosine and sine/x against f64's (libm, within an ulp): the series is
+    /// summed right, whatever its last bits. And a wrong series (o swapped) is far off.
+    #[test]
+    fn the_series_are_cos_and_sin_over_x() {
+        for x in [0.0, 1e-300, 1e-8, 0.3, 1.0, FRAC_PI_2] {
+            let c = fixed_series(x, 0).to_f64().expect("finite");
+            assert!((c - x.cos()).abs() <= f64::EPSILON, "cos {x}: {c}");
+            let s = fixed_series(x, 1).to_f64().expect("finite");
+            let want = if x == 0.0 { 1.0 } else { x.sin() / x };
+            assert!((s - want).abs() <= 2.0 * f64::EPSILON, "sin/x {x}: {s}");
+        }
+        assert!((fixed_series(1.0, 1).to_f64().unwrap() - 1f64.cos()).abs() > 0.1);
+    }
+
+    /// From upright, D0 = 3/4 − θ̇0² exactly (cos 0 = 1): its value is checked against the
+    /// exact product of the inputs, one ulp below fl(Ω) where the f64 form is off by 19 %
+    /// (mpmath: D0 = 2.792026472903680882473642e-16, tools/near_release_reference.py).
+    #[test]
+    fn the_margin_from_upright_is_exact() {
+        let w = 0.8660254037844385;
+        let want = 2.792026472903680882473642e-16;
+        let got = start_margin(&UNIT, Lean::Theta(0.0), w);
+        assert!((got - want).abs() <= f64::EPSILON * want, "{got}");
+        let naive = start_margin_f64(&UNIT, Lean::Theta(0.0), w);
+        assert!((naive - want).abs() > 0.1 * want, "{naive}");
+    }
+
+    /// In SI (g = 9.81, l = 0.7) and leaning (θ0 = 0.3), against mpmath at 120 digits
+    /// (tools/near_release_reference.py): within 2 ulps, where the f64 form keeps no digit.
+    #[test]
+    fn the_margin_in_si_and_leaning_matches_mpmath() {
+        let si = Ladder {
+            mass: 1.0,
+            half_length: 0.7,
+            gravity: 9.81,
+        };
+        for (ladder, lean, w, want) in [
+            (
+                si,
+                Lean::Theta(0.0),
+                3.242023177849641,
+                2.660039704541903379452595e-15,
+            ),
+            (
+                UNIT,
+                Lean::Theta(0.3),
+                0.8464646282297946,
+                9.048415678994154764330362e-17,
+            ),
+            (
+                UNIT,
+                Lean::Phi(1e-12),
+                8.660254037844386e-07,
+                1.191560109419765795633022e-28,
+            ),
+        ] {
+            let got = start_margin(&ladder, lean, w);
+            assert!(
+                (got - want).abs() <= 2.0 * f64::EPSILON * want,
+                "{lean:?}: {got}"
+            );
+            let naive = start_margin_f64(&ladder, lean, w);
+            assert!((naive - want).abs() > 0.1 * want, "{lean:?}: {naive}");
+        }
+    }
+}
