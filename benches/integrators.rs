@@ -14,7 +14,7 @@
 
 use criterion::{criterion_group, Criterion};
 use ode_solvers::{OutputType, System, Vector2};
-use sliding_ladder::report::campaign_judge::reference_separation_time;
+use sliding_ladder::report::campaign::judge::reference_separation_time;
 use sliding_ladder::report::work_precision::scene_at;
 use sliding_ladder::sim::exact::flat::floor_duration;
 use sliding_ladder::sim::exact::{separation_cos, PhaseOne};

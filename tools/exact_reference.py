@@ -3,7 +3,7 @@
 
 Regenerate with `python3 tools/exact_reference.py` (separation table) and
 `python3 tools/exact_reference.py --jacobi` (Jacobi table); needs mpmath (`pip install mpmath`).
-The printed Rust rows are pasted into `tests/exact_common/mod.rs`.
+The printed Rust rows are pasted into `tests/sim/exact/mpmath.rs`.
 
 Method (independent of src/sim/exact): every input is the exact binary64 value the Rust test
 passes, lifted to 60 significant digits.  The separation angle comes from the note's footnote 4

@@ -3,7 +3,7 @@
 
 Regenerate with `python3 tools/near_release_reference.py` (and `--past` for the flat time of a
 start past the release push); needs mpmath (mpmath 1.3.0 was used).
-The printed Rust rows are pasted into tests/near_release_common/mod.rs unchanged.
+The printed Rust rows are pasted into tests/sim/near_release/pushes.rs unchanged.
 
 Each start is (g, l, theta0 or phi0 = pi/2 - theta0, rate0), every input the exact binary64 value
 the Rust test passes.  With omega^2 = 3g/(4l) (exact from the binary64 g and l) and

@@ -29,7 +29,6 @@ use crate::registry::check::Config;
 use crate::verify::errata::ErratumReport;
 use crate::verify::{EquationResult, MethodResult};
 use std::path::Path;
-use std::process::ExitCode;
 
 /// Everything the book shows that comes from running the checks.
 pub struct BookData {
@@ -101,53 +100,13 @@ pub fn build(root: &Path, data: &BookData) -> Built {
     site::build(root, data)
 }
 
-/// Run `ladder book --out DIR`: 0 when the book is written and every check passed, 1 when it
-/// is written but some check failed or some display did not typeset, 2 when it cannot be
-/// written (nothing is left behind).
-pub fn command(out: &Path, cfg: &Config) -> ExitCode {
-    if let Err(e) = write::check_out(out) {
-        eprintln!("ladder book: {e}");
-        return ExitCode::from(2);
-    }
+/// Write the book to `out` (`ladder book --out DIR`): the checks run, the pages built and
+/// written atomically. An error means nothing was written (the folder cannot be used, or a
+/// write failed and was rolled back); the caller says what and chooses the exit code.
+pub fn write_book(out: &Path, cfg: &Config) -> Result<(Built, BookData), String> {
+    write::check_out(out)?;
     let data = BookData::gather(cfg);
     let built = build(&code::crate_root(), &data);
-    if let Err(e) = write_atomically(out, &built.files) {
-        eprintln!("ladder book: {e}");
-        return ExitCode::from(2);
-    }
-    let pages = built
-        .files
-        .iter()
-        .filter(|(n, _)| n.ends_with(".html"))
-        .count();
-    println!(
-        "book: {} files ({pages} pages) written to {}; open {}",
-        built.files.len(),
-        out.display(),
-        out.join("index.html").display()
-    );
-    println!("{}", data.summary);
-    for p in built.problems.iter().chain(&data.docs_problems) {
-        println!("  ! {p}");
-    }
-    if built.problems.is_empty() && data.all_good() {
-        ExitCode::SUCCESS
-    } else {
-        let failed: Vec<&str> = data
-            .results
-            .iter()
-            .chain(&data.extensions)
-            .filter(|r| r.status == crate::verify::Status::Failed)
-            .map(|r| r.label.as_str())
-            .collect();
-        eprintln!(
-            "ladder book: written, exit 1: {} failed displays{}; {} problems of the book, {} of its files; {} methods failed",
-            failed.len(),
-            if failed.is_empty() { String::new() } else { format!(" ({})", failed.join(", ")) },
-            built.problems.len(),
-            data.docs_problems.len(),
-            data.methods.iter().filter(|m| !m.passed).count()
-        );
-        ExitCode::from(1)
-    }
+    write_atomically(out, &built.files)?;
+    Ok((built, data))
 }

@@ -6,7 +6,7 @@
 use crate::ladder::analysis::Reference;
 use crate::ladder::geometry::Corner;
 use crate::report::diagram::diagram;
-use crate::report::diagram_svg::draw_svg;
+use crate::report::diagram::svg::draw_svg;
 use crate::scalar::Rational;
 use clap::Args;
 use num_traits::{One, ToPrimitive, Zero};

@@ -1,6 +1,7 @@
-//! `ladder show N`: one display in depth (issue 15); the work is done by [`crate::show`].
+//! `ladder show N`: one display in depth (issue 15); the work is done by [`crate::show`]; this file only prints and chooses the exit code.
 
 use crate::registry::check::Config;
+use crate::show::{self, text, Answer};
 use clap::Args;
 use std::process::ExitCode;
 
@@ -26,14 +27,53 @@ pub struct ShowArgs {
 
 /// Run `ladder show` with its options.
 pub fn run(a: ShowArgs) -> ExitCode {
-    crate::show::command(
-        &a.query,
-        a.at.as_deref(),
-        a.json,
-        a.values_only,
-        &Config {
-            float_cases: a.cases,
-            ..Config::default()
-        },
-    )
+    let cfg = Config {
+        float_cases: a.cases,
+        ..Config::default()
+    };
+    let shown = match show::answer(&a.query, a.at.as_deref(), a.values_only, &cfg) {
+        Ok(Answer::Shown(s)) => s,
+        Ok(Answer::Matches { words, hits }) => {
+            if a.json {
+                print_json(&serde_json::json!({ "query": words, "matches": hits }));
+            } else {
+                print!("{}", text::hits(&words, &hits));
+            }
+            return ExitCode::SUCCESS;
+        }
+        Err(e) => {
+            eprintln!("{e}");
+            return ExitCode::from(2);
+        }
+    };
+    if a.json && shown.len() == 1 {
+        print_json(&shown[0]);
+    } else if a.json {
+        print_json(&shown);
+    } else {
+        for (k, s) in shown.iter().enumerate() {
+            if k > 0 {
+                println!();
+            }
+            print!("{}", text::render(s));
+        }
+    }
+    let failed: Vec<String> = shown
+        .iter()
+        .filter(|s| s.failed())
+        .map(|s| format!("({})", s.number))
+        .collect();
+    if failed.is_empty() {
+        return ExitCode::SUCCESS;
+    }
+    eprintln!("ladder show: exit 1: failed: {}", failed.join(", "));
+    ExitCode::from(1)
+}
+
+/// Print plain data as pretty JSON (it always serialises).
+fn print_json(v: &impl serde::Serialize) {
+    println!(
+        "{}",
+        serde_json::to_string_pretty(v).expect("JSON of plain data")
+    );
 }

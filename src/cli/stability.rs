@@ -1,9 +1,9 @@
 //! `ladder stability`: the stiff and extreme cases with their verdicts (see
 //! [`crate::report::stability`]); exit 1 only when a verdict contradicts theory's expectation.
 
+use crate::report::stability::scale::SWEEP_CASES;
+use crate::report::stability::stiff::EXPECTED_RUNS;
 use crate::report::stability::{all_cases, table};
-use crate::report::stability_scale::SWEEP_CASES;
-use crate::report::stability_stiff::EXPECTED_RUNS;
 use clap::Args;
 use indicatif::{ProgressBar, ProgressDrawTarget};
 use std::io::{IsTerminal, Write};

@@ -2,9 +2,9 @@
 //! scene, as tables, JSON, or CSV + SVG with `--out`.
 
 use crate::report::files::{write_all, OutFile};
+use crate::report::work_precision::fit::Point;
+use crate::report::work_precision::report::{csv, panel, report, OrderRow, SceneReport};
 use crate::report::work_precision::{default_scenes, sweep, TIMING};
-use crate::report::work_precision_fit::Point;
-use crate::report::work_precision_report::{csv, panel, report, OrderRow, SceneReport};
 use crate::sim::integrators::names;
 use crate::sim::scene;
 use clap::Args;
@@ -172,12 +172,12 @@ fn print_report(rep: &SceneReport) {
     }
     println!(
         "observed order: least-squares slope of −ln(error) against ln(steps) over at least {} runs spanning at least {} decades of error, each with error in [floor, {:.0e}], at least {} steps in each phase (a full fall has two), steps not tied with another run and growing, error falling (floor: min({:.0e}, {} × the sweep's rounding level); see work_precision_fit). tolerance slope: of ln(error) against ln(tolerance) over the runs above the floor (1: proportional)",
-        crate::report::work_precision_fit::MIN_RUNS,
-        crate::report::work_precision_fit::MIN_DECADES,
-        crate::report::work_precision_fit::ASYMPTOTIC,
-        crate::report::work_precision_fit::MIN_STEPS,
-        crate::report::work_precision_fit::FLOOR,
-        crate::report::work_precision_fit::ROUNDING_MARGIN,
+        crate::report::work_precision::fit::MIN_RUNS,
+        crate::report::work_precision::fit::MIN_DECADES,
+        crate::report::work_precision::fit::ASYMPTOTIC,
+        crate::report::work_precision::fit::MIN_STEPS,
+        crate::report::work_precision::fit::FLOOR,
+        crate::report::work_precision::fit::ROUNDING_MARGIN,
     );
     for row in rep.orders.iter().chain(&rep.taylor_fixed) {
         print_order_row(row);

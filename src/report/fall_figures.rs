@@ -5,8 +5,8 @@
 use super::files::OutFile;
 use super::plot::{zero_crossings, Chart, Mark, PlotSpec, Series};
 use crate::sim::fall::{Outcome, Sample};
-use crate::sim::output::Output;
 use crate::sim::rigid::separation_cosine;
+use crate::sim::scene::output::Output;
 use crate::sim::scene::Scene;
 
 fn csv_rows(trace: &[Sample], forces: bool) -> String {

@@ -7,7 +7,7 @@
 //! checks `ladder verify` runs on it, with their residuals and verdicts, run for this display
 //! alone ([`checks`]); the Rust functions and the book page with file and line ([`source`]); and
 //! for an erratum the printed and corrected forms and their difference. A word instead of a
-//! number searches titles and symbols ([`find`]). [`command`] is the one entry point.
+//! number searches titles and symbols ([`find`]). [`answer`] is the one entry point (the command prints it: `cli::show`).
 //!
 //! Whether a display's forms must agree at the user's state is decided, not assumed
 //! ([`expectation`]): an on-shell display needs the state on the motion, one checked only from
@@ -20,7 +20,7 @@ pub mod find;
 pub mod phase;
 pub mod source;
 pub mod state;
-mod text;
+pub mod text;
 pub mod values;
 
 use crate::print::unicode;
@@ -29,7 +29,6 @@ use crate::registry::{equations, Equation, Eval, LadderSample};
 use crate::verify::errata::ErratumReport;
 use crate::verify::{EquationResult, Status};
 use serde::Serialize;
-use std::process::ExitCode;
 
 /// One symbol of a display, from the symbol table.
 #[derive(Clone, Debug, Serialize)]
@@ -309,77 +308,42 @@ pub fn show(
     })
 }
 
-/// `ladder show QUERY [--at STATE] [--json]`: exit 0 when every display shown holds as
-/// recorded, 1 when a check fails or forms that must agree do not, 2 on bad input.
-pub fn command(
+/// What `ladder show QUERY` finds: the displays a query names, shown at the state, or the
+/// displays whose titles and symbols match its words.
+pub enum Answer {
+    /// The displays named by number, in the order asked.
+    Shown(Vec<Shown>),
+    /// Words: the displays they match (never empty).
+    Matches { words: String, hits: Vec<find::Hit> },
+}
+
+impl Shown {
+    /// A display shown failed: a check failed, or forms that must agree did not.
+    pub fn failed(&self) -> bool {
+        !self.problems.is_empty() || self.status == Some(Status::Failed)
+    }
+}
+
+/// Answer `ladder show QUERY [--at STATE]`: an error is bad input (one line, for exit 2).
+pub fn answer(
     query: &str,
     at_text: Option<&str>,
-    json: bool,
     values_only: bool,
     cfg: &Config,
-) -> ExitCode {
-    let bad = |msg: String| {
-        eprintln!("{msg}");
-        ExitCode::from(2)
-    };
-    let at = match at_text.map(at::parse_at).transpose() {
-        Ok(a) => a,
-        Err(e) => return bad(e),
-    };
-    let numbers = match find::parse_query(query) {
-        Ok(find::Query::Numbers(n)) => n,
-        Ok(find::Query::Words(w)) => {
+) -> Result<Answer, String> {
+    let at = at_text.map(at::parse_at).transpose()?;
+    match find::parse_query(query)? {
+        find::Query::Words(w) => {
             let hits = find::search(&w);
             if hits.is_empty() {
-                return bad(format!("show: no display's title or symbols match '{w}'"));
+                return Err(format!("show: no display's title or symbols match '{w}'"));
             }
-            if json {
-                let out = serde_json::json!({ "query": w, "matches": hits });
-                println!(
-                    "{}",
-                    serde_json::to_string_pretty(&out).expect("JSON of plain data")
-                );
-            } else {
-                print!("{}", text::hits(&w, &hits));
-            }
-            return ExitCode::SUCCESS;
+            Ok(Answer::Matches { words: w, hits })
         }
-        Err(e) => return bad(e),
-    };
-    let mut shown = Vec::new();
-    for n in numbers {
-        match show(n, at.as_ref(), cfg, !values_only) {
-            Ok(s) => shown.push(s),
-            Err(e) => return bad(e),
-        }
-    }
-    if json {
-        let v = if shown.len() == 1 {
-            serde_json::to_value(&shown[0])
-        } else {
-            serde_json::to_value(&shown)
-        };
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&v.expect("JSON of plain data")).expect("JSON")
-        );
-    } else {
-        for (k, s) in shown.iter().enumerate() {
-            if k > 0 {
-                println!();
-            }
-            print!("{}", text::render(s));
-        }
-    }
-    let failed: Vec<String> = shown
-        .iter()
-        .filter(|s| !s.problems.is_empty() || s.status == Some(Status::Failed))
-        .map(|s| format!("({})", s.number))
-        .collect();
-    if failed.is_empty() {
-        ExitCode::SUCCESS
-    } else {
-        eprintln!("ladder show: exit 1: failed: {}", failed.join(", "));
-        ExitCode::from(1)
+        find::Query::Numbers(numbers) => numbers
+            .into_iter()
+            .map(|n| show(n, at.as_ref(), cfg, !values_only))
+            .collect::<Result<Vec<_>, _>>()
+            .map(Answer::Shown),
     }
 }

@@ -2,8 +2,8 @@
 //! the fall, the penalty scenes and the unit conversions share, below all of them.
 
 use super::integrators::Stats;
-use super::output::Output;
 use super::scene::{End, Scene};
+use crate::sim::scene::output::Output;
 
 /// What a run must compute, decided by the scene's outputs alone.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -127,70 +127,13 @@ pub fn integrate_phase<const N: usize, S: Ode<N>, St: Stepper<N>, O: Observer<N>
                 Some(trig) => ev.value_with_trig(t1, &y1, trig),
                 None => ev.value(t1, &y1),
             };
-            let value_at = |s: &St, t: f64| ev.value(t, &s.interpolate(t));
-            let (mut ta, mut va) = (t0, prev[i]);
-            let mut bracket = None;
-            let k = ev.interior_samples();
-            if k > 0 {
-                stepper.prepare_dense(sys);
-                for j in 1..=k {
-                    let tj = t0 + (t1 - t0) * j as f64 / (k + 1) as f64;
-                    let vj = value_at(stepper, tj);
-                    if crosses(ev.direction(), va, vj) {
-                        bracket = Some((ta, va, tj, vj));
-                        break;
-                    }
-                    (ta, va) = (tj, vj);
-                }
-            }
-            if bracket.is_none() && crosses(ev.direction(), va, v1) {
-                bracket = Some((ta, va, t1, v1));
-            }
+            let bracket = find_bracket(sys, stepper, *ev, (t0, prev[i]), (t1, v1));
             prev[i] = v1;
             if let Some((a, fa, b, fb)) = bracket {
                 if first.is_some_and(|(r, _)| r <= a) {
                     continue;
                 }
-                stepper.prepare_dense(sys);
-                // The Taylor method with an event it can evaluate on the step's polynomials:
-                // Newton on them (no transcendental function per iterate). At the step's ends
-                // fa and fb are already the polynomials' values (the stepper's end values come
-                // from the same polynomials); a sampled end is evaluated on them again.
-                let t_prev = stepper.t_prev();
-                let on_series = |t: f64| ev.on_series(stepper.step_series()?, t - t_prev);
-                let at = |t: f64, v: f64, end: f64| {
-                    if t == end {
-                        Some(v)
-                    } else {
-                        on_series(t).map(|(v, _)| v)
-                    }
-                };
-                let on_poly = match (at(a, fa, t_prev), at(b, fb, t1)) {
-                    (Some(ia), Some(ib)) if ia * ib <= 0.0 => Some((ia, ib)),
-                    (Some(_), Some(_)) => Some((fa, fb)),
-                    _ => None,
-                };
-                // None when the event or the stepper has no polynomials.
-                let root = on_poly.and_then(|(fa, fb)| newton_in_bracket(on_series, a, b, fa, fb));
-                let root = match root {
-                    Some(r) => r,
-                    None => {
-                        // Refine on the interpolant; its end values may differ from the
-                        // step's by a rounding, so fall back to the step's values where they
-                        // disagree in sign.
-                        let (ia, ib) = (value_at(stepper, a), value_at(stepper, b));
-                        let (fa, fb) = if ia * ib <= 0.0 { (ia, ib) } else { (fa, fb) };
-                        // Newton's method where the interpolant and the event have exact
-                        // derivatives (the Taylor method), else Brent's.
-                        let with_rate = |t: f64| {
-                            let dy = stepper.interpolate_rate(t)?;
-                            let y = stepper.interpolate(t);
-                            Some((ev.value(t, &y), ev.rate(t, &y, &dy)?))
-                        };
-                        newton_in_bracket(with_rate, a, b, fa, fb)
-                            .unwrap_or_else(|| brent(|t| value_at(stepper, t), a, b, fa, fb))
-                    }
-                };
+                let root = locate_root(sys, stepper, *ev, (a, fa), (b, fb));
                 if first.is_none_or(|(r, _)| root < r) {
                     first = Some((root, i));
                 }
@@ -230,4 +173,77 @@ pub fn integrate_phase<const N: usize, S: Ode<N>, St: Stepper<N>, O: Observer<N>
             });
         }
     }
+}
+
+/// The first sign change of `ev` over the step from `(t0, v0)` to `(t1, v1)`, sampling the
+/// step's interpolant at the event's interior points first: (a, f(a), b, f(b)).
+fn find_bracket<const N: usize, S: Ode<N>, St: Stepper<N>>(
+    sys: &S,
+    stepper: &mut St,
+    ev: &dyn Event<N>,
+    (t0, v0): (f64, f64),
+    (t1, v1): (f64, f64),
+) -> Option<(f64, f64, f64, f64)> {
+    let (mut ta, mut va) = (t0, v0);
+    let k = ev.interior_samples();
+    if k > 0 {
+        stepper.prepare_dense(sys);
+        for j in 1..=k {
+            let tj = t0 + (t1 - t0) * j as f64 / (k + 1) as f64;
+            let vj = ev.value(tj, &stepper.interpolate(tj));
+            if crosses(ev.direction(), va, vj) {
+                return Some((ta, va, tj, vj));
+            }
+            (ta, va) = (tj, vj);
+        }
+    }
+    crosses(ev.direction(), va, v1).then_some((ta, va, t1, v1))
+}
+
+/// The root of `ev` in the bracket [a, b] of the last step.
+fn locate_root<const N: usize, S: Ode<N>, St: Stepper<N>>(
+    sys: &S,
+    stepper: &mut St,
+    ev: &dyn Event<N>,
+    (a, fa): (f64, f64),
+    (b, fb): (f64, f64),
+) -> f64 {
+    stepper.prepare_dense(sys);
+    let t1 = stepper.t();
+    let value_at = |s: &St, t: f64| ev.value(t, &s.interpolate(t));
+    // The Taylor method with an event it can evaluate on the step's polynomials: Newton on
+    // them (no transcendental function per iterate). At the step's ends fa and fb are already
+    // the polynomials' values (the stepper's end values come from the same polynomials); a
+    // sampled end is evaluated on them again.
+    let t_prev = stepper.t_prev();
+    let on_series = |t: f64| ev.on_series(stepper.step_series()?, t - t_prev);
+    let at = |t: f64, v: f64, end: f64| {
+        if t == end {
+            Some(v)
+        } else {
+            on_series(t).map(|(v, _)| v)
+        }
+    };
+    let on_poly = match (at(a, fa, t_prev), at(b, fb, t1)) {
+        (Some(ia), Some(ib)) if ia * ib <= 0.0 => Some((ia, ib)),
+        (Some(_), Some(_)) => Some((fa, fb)),
+        _ => None,
+    };
+    // None when the event or the stepper has no polynomials.
+    if let Some(r) = on_poly.and_then(|(fa, fb)| newton_in_bracket(on_series, a, b, fa, fb)) {
+        return r;
+    }
+    // Refine on the interpolant; its end values may differ from the step's by a rounding, so
+    // fall back to the step's values where they disagree in sign.
+    let (ia, ib) = (value_at(stepper, a), value_at(stepper, b));
+    let (fa, fb) = if ia * ib <= 0.0 { (ia, ib) } else { (fa, fb) };
+    // Newton's method where the interpolant and the event have exact derivatives (the Taylor
+    // method), else Brent's.
+    let with_rate = |t: f64| {
+        let dy = stepper.interpolate_rate(t)?;
+        let y = stepper.interpolate(t);
+        Some((ev.value(t, &y), ev.rate(t, &y, &dy)?))
+    };
+    newton_in_bracket(with_rate, a, b, fa, fb)
+        .unwrap_or_else(|| brent(|t| value_at(stepper, t), a, b, fa, fb))
 }

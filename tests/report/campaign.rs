@@ -2,13 +2,13 @@
 //! draw covers the whole domain and writes scenes the parser reads back exactly, the flat-time
 //! reference agrees with a tight integration, and the judge rejects wrong results.
 
+use sliding_ladder::report::campaign::judge::{non_finite, out_of_tolerance, Problem};
 use sliding_ladder::report::campaign::{draw, draw_first, methods as scene_methods, selected};
-use sliding_ladder::report::campaign_judge::{non_finite, out_of_tolerance, Problem};
 use sliding_ladder::sim::exact::flat::floor_duration;
 use sliding_ladder::sim::fall::{self, Outcome};
 use sliding_ladder::sim::integrators::Control;
-use sliding_ladder::sim::output::Output;
 use sliding_ladder::sim::rigid::Ladder;
+use sliding_ladder::sim::scene::output::Output;
 use sliding_ladder::sim::scene::{parse, ContactModel, End, Scene};
 use std::collections::BTreeSet;
 use std::f64::consts::FRAC_PI_2;
@@ -183,7 +183,7 @@ fn the_judge_holds_a_start_past_the_release_push_to_the_start() {
 }
 
 /// A penalty run is held to the rigid angle within the penalty contact's error model
-/// (`sim::penalty_confirm::separation_bound`): at κ = 1e8 an angle moved by 1e-6 is rejected.
+/// (`sim::penalty::confirm::separation_bound`): at κ = 1e8 an angle moved by 1e-6 is rejected.
 #[test]
 fn the_judge_holds_penalty_runs_to_the_rigid_angle() {
     let mut sc = scene(0.3, 1e-10, End::Separation, vec![Output::SeparationAngle]);
@@ -238,7 +238,7 @@ fn the_contact_filter_leaves_out_exactly_one_model() {
     let refused = parse("drawn.toml", &draw_first(1, 857)).expect_err("F6 is refused");
     assert_eq!(refused.field, "integrator.method");
     // F3's scenes 69, 129 and 418 (starts near π/2 whose springs cannot tell separation from
-    // flat) are refused up front too (`sim::penalty_plan`).
+    // flat) are refused up front too (`sim::penalty::plan`).
     for i in [69, 129, 418] {
         let refused = parse("drawn.toml", &draw_first(1, i)).expect_err("F3 is refused");
         assert_eq!(refused.field, "contact.stiffness", "scene {i}");
@@ -256,7 +256,7 @@ fn the_contact_filter_leaves_out_exactly_one_model() {
 /// hung job would not answer within the test's own 20 s (checked from another thread).
 #[test]
 fn the_watchdog_names_a_hang_and_goes_on() {
-    use sliding_ladder::report::campaign_judge::Watchdog;
+    use sliding_ladder::report::campaign::judge::Watchdog;
     use std::sync::atomic::{AtomicBool, Ordering};
     use std::sync::{mpsc, Arc};
     use std::time::{Duration, Instant};

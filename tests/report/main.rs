@@ -4,6 +4,6 @@
 mod campaign;
 mod diagram;
 mod fall_figures;
-mod stability_long;
+mod stability;
 mod svg_chart;
 mod work_precision;

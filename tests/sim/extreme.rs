@@ -6,8 +6,8 @@ use sliding_ladder::sim::constrained::{self, Constrained};
 use sliding_ladder::sim::extreme::{wall_release, WallRelease};
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::integrators::Control;
+use sliding_ladder::sim::penalty::run::separation;
 use sliding_ladder::sim::penalty::{self, Contact, Law};
-use sliding_ladder::sim::penalty_run::separation;
 use sliding_ladder::sim::rigid::Ladder;
 use sliding_ladder::sim::scene;
 use std::f64::consts::FRAC_PI_2;
@@ -44,7 +44,7 @@ fn starts_from_upright_to_almost_flat_separate_where_theory_says() {
         let WallRelease::Separated(s) = r else {
             panic!("{theta0}: {r:?}")
         };
-        // |cos θ_s − theory| ≤ 10 N τ max(θ_s, 1) + 4u (module docs of report::stability_extreme).
+        // |cos θ_s − theory| ≤ 10 N τ max(θ_s, 1) + 4u (module docs of report::stability::extreme).
         let bound = 10.0 * n as f64 * 1e-13 * s.angle.max(1.0) + 4.0 * U;
         let err = (s.angle.cos() - theory_cos(&UNIT, theta0, 0.0)).abs();
         assert!(err <= bound, "θ0 = {theta0}: {err} > {bound}");
@@ -201,7 +201,7 @@ proptest! {
 /// (1.5e-8 at π/2 − 1e-9, issue 17) would fail it; in θ the bound was 5e-3.
 #[test]
 fn near_flat_stability_rows_hold_a_bound_that_carrying_theta_fails() {
-    let cases = sliding_ladder::report::stability_extreme::extreme_cases(&mut |_, _| {});
+    let cases = sliding_ladder::report::stability::extreme::extreme_cases(&mut |_, _| {});
     let rows: Vec<_> = cases
         .iter()
         .filter(|c| c.case.contains("π/2−1e-9") && c.case.ends_with("time"))
@@ -222,7 +222,7 @@ fn near_flat_stability_rows_hold_a_bound_that_carrying_theta_fails() {
 /// spread, and its error is the worst member's (so at least every member's).
 #[test]
 fn extreme_rows_are_judged_on_the_worst_of_an_ulp_ensemble() {
-    let cases = sliding_ladder::report::stability_extreme::extreme_cases(&mut |_, _| {});
+    let cases = sliding_ladder::report::stability::extreme::extreme_cases(&mut |_, _| {});
     let row = cases
         .iter()
         .find(|c| c.case == "rest θ0=0.3: time")

@@ -7,8 +7,8 @@ use sliding_ladder::report::work_precision::scene_at;
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::floor;
 use sliding_ladder::sim::integrators::Control;
-use sliding_ladder::sim::output::Output;
 use sliding_ladder::sim::rigid::{self, Ladder};
+use sliding_ladder::sim::scene::output::Output;
 use sliding_ladder::sim::scene::End;
 
 const LADDER: Ladder = Ladder {

@@ -3,7 +3,7 @@
 //! it (scene text → parse → plan → run → JSON and files, all in memory), counting panics,
 //! NaN/inf outputs, runs over the time budget, failed runs (an error, or stopping short of the
 //! end asked for: the command exits 1) and results outside their stated tolerance
-//! (`sliding_ladder::report::campaign_judge`). Refusals (exit 2, a plan-time error naming the
+//! (`sliding_ladder::report::campaign::judge`). Refusals (exit 2, a plan-time error naming the
 //! field) are requests the tool says up front it cannot meet: counted apart, by field.
 //! Each scene runs under a watchdog (`campaign_judge::Watchdog`): one still running after the
 //! budget is counted over budget and named on stderr at once, and the campaign goes on (a hang
@@ -17,14 +17,14 @@
 //! `--scenes 10000 --seed 1 --work-cap 1e5 --budget 30` (README says why; both contact models).
 
 use clap::Parser;
-use sliding_ladder::cli::simulate::{files, to_json};
+use sliding_ladder::report::campaign::judge::{non_finite, out_of_tolerance, Problem, Watchdog};
 use sliding_ladder::report::campaign::{busier_steps, draw, selected, work_share, WorkShare};
-use sliding_ladder::report::campaign_judge::{non_finite, out_of_tolerance, Problem, Watchdog};
+use sliding_ladder::report::outcome::{files, to_json};
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::outcome::unreached_end;
-use sliding_ladder::sim::output::Output;
 use sliding_ladder::sim::run::RunError;
 use sliding_ladder::sim::scene;
+use sliding_ladder::sim::scene::output::Output;
 use std::collections::BTreeMap;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::PathBuf;
@@ -58,7 +58,7 @@ struct Args {
     #[arg(long, default_value_t = 0)]
     first: u64,
     /// Run only scenes whose phases need at most this many steps by the plan's estimate
-    /// (`sim::scene_work::phase_steps`); the others are parsed and planned, and counted apart.
+    /// (`sim::scene::work::phase_steps`); the others are parsed and planned, and counted apart.
     /// A run past 100 times this in a phase stops and counts as over budget (the estimate
     /// was wrong). Default: every scene the tool accepts (its limit, 1e7 steps a phase).
     #[arg(long, default_value_t = fall::MAX_STEPS as f64)]

@@ -11,7 +11,7 @@
 //! (`sim::integrators::verlet` says why). Each kick now takes its own end's velocity; the same
 //! 40 runs then miss by at most 1.9 h², 0.003 of the bound (rk4 0.003, symplectic Euler 0.025).
 //! Explicit Euler is not held to h ω ≤ 0.2 but to h ω² t_s ≤ 0.02 by the plan
-//! (`sim::scene_work`), so its figures here (far outside the bound) are of steps it refuses.
+//! (`sim::scene::work`), so its figures here (far outside the bound) are of steps it refuses.
 //!
 //! Run: `cargo run --release --example penalty_fixed_step -- verlet` (or rk4,
 //! symplectic-euler, euler; about 4 s each).
@@ -20,9 +20,9 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{order, Control};
+use sliding_ladder::sim::penalty::confirm::{rigid_separation_angle, separation_bound};
+use sliding_ladder::sim::penalty::run::separate_with;
 use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel};
-use sliding_ladder::sim::penalty_confirm::{rigid_separation_angle, separation_bound};
-use sliding_ladder::sim::penalty_run::separate_with;
 
 fn main() {
     let method = std::env::args().nth(1).unwrap_or_else(|| "verlet".into());

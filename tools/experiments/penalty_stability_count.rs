@@ -1,4 +1,4 @@
-//! The stability count of `sim::scene_work::explicit_penalty_steps`: at loose tolerances an
+//! The stability count of `sim::scene::work::explicit_penalty_steps`: at loose tolerances an
 //! explicit adaptive method on penalty springs takes steps at the edge of its stability region,
 //! c ω t_s of them (ω = 2√κ + 4γ per √(l/g), t_s the separation time). This prints the
 //! measured steps / (ω t_s) for dopri5 and dop853 from θ0 = 0.0106 and 0.3 (θ̇0 = 4e-5) at
@@ -9,8 +9,8 @@
 
 use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::Control;
+use sliding_ladder::sim::penalty::run::separate_with;
 use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel};
-use sliding_ladder::sim::penalty_run::separate_with;
 
 fn main() {
     for method in ["dopri5", "dop853"] {

@@ -7,9 +7,9 @@
 
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::integrators::Control;
+use sliding_ladder::sim::penalty::confirm::rigid_separation_angle;
+use sliding_ladder::sim::penalty::run::separation;
 use sliding_ladder::sim::penalty::{Contact, Law};
-use sliding_ladder::sim::penalty_confirm::rigid_separation_angle;
-use sliding_ladder::sim::penalty_run::separation;
 use sliding_ladder::sim::scene::parse;
 use std::time::Instant;
 

@@ -81,7 +81,7 @@ pub fn floor_duration(cos_s: f64) -> f64 {
 
 /// Time to flat in units of √(l/g) of a floor phase that starts at φ = π/2 − θ = `phi_s` with
 /// θ̇ = `rate_s` (per √(l/g)): a start at or past the release push leaves the wall at once with
-/// its own rate, not the separation's θ̇_s² = Ω² cos θ_s (`sim::fall_wall`).
+/// its own rate, not the separation's θ̇_s² = Ω² cos θ_s (`sim::fall::wall_phase`).
 pub fn floor_duration_from(phi_s: f64, rate_s: f64) -> f64 {
     let c = phi_s.cos();
     duration(phi_s, 0.5 * (c * c + 1.0 / 3.0) * rate_s * rate_s)

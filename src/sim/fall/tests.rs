@@ -3,8 +3,8 @@
 use super::*;
 use crate::sim::complement;
 use crate::sim::event::Event;
-use crate::sim::fall_floor::LiftOffEvent;
-use crate::sim::fall_wall::SeparationEvent;
+use crate::sim::fall::floor_phase::LiftOffEvent;
+use crate::sim::fall::wall_phase::SeparationEvent;
 use crate::sim::integrators::AnyStepper;
 use crate::sim::integrators::{Control, Ode};
 use crate::sim::run::integrate_phase;

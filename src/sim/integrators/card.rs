@@ -70,7 +70,7 @@ impl Sweep {
 }
 
 /// How an explicit adaptive method's steps on penalty springs are estimated before a run
-/// (`sim::scene_work` explains the model and the sweeps that set these constants). A method
+/// (`sim::scene::work` explains the model and the sweeps that set these constants). A method
 /// without a fit is refused on penalty springs: the plan could not promise the run ends.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PenaltyFit {

@@ -57,7 +57,7 @@ pub const CARD: Card = Card {
     rigid_only: false,
     // Half decades: its runs of at least 10 steps above the rounding floor span only 2-3 decades
     // of tolerance on the short scenes, too few decade points for the order fit
-    // (`report::work_precision_fit`, rule 2).
+    // (`report::work_precision::fit`, rule 2).
     sweep: Sweep::Tolerances { from: 3, to: 16, per_decade: 2 },
     penalty_fit: Some(PenaltyFit { stability: 0.7, estimate_order: 8.0, accuracy: (0.3, 2.5), wall_force_rate: 3500.0 }),
     stiff_case: Some(Control::Tolerance(1e-10)),

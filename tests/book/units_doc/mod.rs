@@ -3,7 +3,6 @@
 //! scales with a change of units as its stated dimension says.
 
 use pulldown_cmark::{Event, Options, Parser, Tag, TagEnd};
-use sliding_ladder::cli::simulate::to_json;
 use sliding_ladder::ladder::energy::{kinetic_energy, moment_of_inertia_cm, potential_energy};
 use sliding_ladder::ladder::forces::{floor_force, wall_force};
 use sliding_ladder::ladder::geometry::{cm_acceleration, cm_position, cm_velocity};
@@ -12,6 +11,7 @@ use sliding_ladder::ladder::torque::{
 };
 use sliding_ladder::registry::sample::{LadderSample, ParticleSample};
 use sliding_ladder::registry::units::{dimensioned_ladder, dimensioned_particles};
+use sliding_ladder::report::outcome::to_json;
 use sliding_ladder::scalar::{Dim, Dimension, Scalar};
 use sliding_ladder::sim::{fall, scene};
 use std::collections::BTreeMap;

@@ -192,7 +192,7 @@ fn summary_problems(a: &str, b: &str, steps: f64) -> Vec<String> {
 /// rad/s, m, m/s) scales as that unit says; a wrong unit in the summary is caught.
 #[test]
 fn every_unit_the_simulate_summary_prints_is_right() {
-    use sliding_ladder::cli::simulate::summary;
+    use sliding_ladder::report::outcome::summary;
     let (a, b, steps) = both_runs();
     let (ta, tb) = (summary(&a.0, &a.1), summary(&b.0, &b.1));
     let found = with_units(&ta);

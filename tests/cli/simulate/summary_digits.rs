@@ -3,7 +3,7 @@
 //! 0.000000000000. Each number the summary prints for separation, flat and end is read back and
 //! held against the outcome it came from, to the digits printed.
 
-use sliding_ladder::cli::simulate::summary;
+use sliding_ladder::report::outcome::summary;
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::scene;
 

@@ -12,8 +12,8 @@ use sliding_ladder::ladder::geometry::{corner_position, Corner};
 use sliding_ladder::ladder::particles::{
     as_system, floor_force_from_motion, wall_force_from_motion,
 };
+use sliding_ladder::report::diagram::svg::draw_svg;
 use sliding_ladder::report::diagram::{arm_symbol, arrow_scale, diagram, to_px, window, Diagram};
-use sliding_ladder::report::diagram_svg::draw_svg;
 use sliding_ladder::report::svg_text::n3;
 use sliding_ladder::report::svg_text::plain;
 

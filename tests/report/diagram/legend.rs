@@ -5,8 +5,8 @@
 use sliding_ladder::docs::worked::example_state;
 use sliding_ladder::ladder::analysis::Reference;
 use sliding_ladder::ladder::geometry::Corner;
+use sliding_ladder::report::diagram::svg::draw_svg;
 use sliding_ladder::report::diagram::{component_torques, diagram, Diagram};
-use sliding_ladder::report::diagram_svg::draw_svg;
 use sliding_ladder::report::svg_text::n3;
 use sliding_ladder::report::svg_text::plain;
 

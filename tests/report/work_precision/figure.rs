@@ -57,7 +57,7 @@ fn a_peer_is_dashed_in_its_partners_colour_with_markers() {
 #[test]
 fn the_pareto_front_is_a_grey_staircase_under_the_data_without_markers() {
     use sliding_ladder::report::svg_chart::FRONT;
-    use sliding_ladder::report::work_precision_report::staircase;
+    use sliding_ladder::report::work_precision::report::staircase;
     // Across to the next run's time, then down to its error: the boundary of what it dominates.
     let front = staircase(vec![(4e-6, 1e-12), (1e-6, 1e-4), (2e-6, 1e-8)]);
     assert_eq!(

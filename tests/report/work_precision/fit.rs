@@ -1,8 +1,8 @@
-//! Rule 2 of the order fit (`report::work_precision_fit`) counts steps per phase: the starting
+//! Rule 2 of the order fit (`report::work_precision::fit`) counts steps per phase: the starting
 //! guess and the step cut at the event come once in each phase, so a full fall needs 10 steps
 //! in the wall phase and 10 in the floor phase before its error follows the method's order.
 
-use sliding_ladder::report::work_precision_fit::{fit_range, observed_order, Point, MIN_STEPS};
+use sliding_ladder::report::work_precision::fit::{fit_range, observed_order, Point, MIN_STEPS};
 
 /// A made-up run: (wall steps, floor steps, error); a one-phase run has no floor steps.
 #[derive(Debug)]

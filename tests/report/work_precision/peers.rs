@@ -5,9 +5,9 @@
 //! `work_precision_figure.rs`).
 #![cfg(feature = "peers")]
 
+use sliding_ladder::report::work_precision::fit::Point;
+use sliding_ladder::report::work_precision::report::{panel, report};
 use sliding_ladder::report::work_precision::{scene_at, Timing, PEERS_OF};
-use sliding_ladder::report::work_precision_fit::Point;
-use sliding_ladder::report::work_precision_report::{panel, report};
 
 const ONCE: Timing = Timing {
     budget: 0.0,

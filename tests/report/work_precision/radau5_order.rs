@@ -9,10 +9,10 @@
 //! decades of tolerance (the fit rule's range) with at least 10 steps (a step count is exact
 //! to 1/2 step, 5 % of ln at 10): the steps' slope within 0.05 of −1/4, the tolerance slope
 //! within 0.1 of 1, the order within 0.5 of their ratio.
-use sliding_ladder::report::work_precision::{measure, scene_at, Timing};
-use sliding_ladder::report::work_precision_fit::{
+use sliding_ladder::report::work_precision::fit::{
     line_fit, observed_order, tolerance_slope, Point, MIN_STEPS,
 };
+use sliding_ladder::report::work_precision::{measure, scene_at, Timing};
 
 const ONCE: Timing = Timing {
     budget: 0.0,

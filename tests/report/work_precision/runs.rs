@@ -3,14 +3,14 @@
 //! accuracy, and the full fall's flat-time reference (closed form and quadrature, independent
 //! of the integrators) agrees with DOP853.
 
+use sliding_ladder::report::work_precision::fit::{
+    dominates, order_fit, rounding_floor, Point, ASYMPTOTIC, MIN_RUNS, MIN_STEPS,
+};
+use sliding_ladder::report::work_precision::report::report;
 use sliding_ladder::report::work_precision::FLAT_ACCURACY;
 use sliding_ladder::report::work_precision::{
     default_scenes, flat_reference, measure, scene_at, Run, Timing,
 };
-use sliding_ladder::report::work_precision_fit::{
-    dominates, order_fit, rounding_floor, Point, ASYMPTOTIC, MIN_RUNS, MIN_STEPS,
-};
-use sliding_ladder::report::work_precision_report::report;
 use sliding_ladder::sim::event::{Direction, Event};
 use sliding_ladder::sim::exact::PhaseOne;
 use sliding_ladder::sim::fall;

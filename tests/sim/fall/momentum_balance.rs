@@ -45,11 +45,11 @@ fn the_momentum_balance_holds_to_the_error_model_and_catches_a_first_order_metho
 /// Campaign seed 1, scene 995 (the Taylor method at tolerance 3.4e-16 on a subnormal start with
 /// a push, to flat): its few long wall-phase steps (up to three times other methods' cap) once
 /// took the wall's impulse by one 5-point rule each and missed it by 2.9e-13, above the judge's
-/// bound of 2.0e-13 (`sim::fall_observer::impulse_pieces` now resolves the quadrature by the
+/// bound of 2.0e-13 (`sim::fall::observer::impulse_pieces` now resolves the quadrature by the
 /// motion). The judge's own check, on the outcome as the campaign makes it.
 #[test]
 fn the_taylor_method_meets_the_judges_momentum_bound_on_campaign_scene_995() {
-    use sliding_ladder::report::campaign_judge::out_of_tolerance;
+    use sliding_ladder::report::campaign::judge::out_of_tolerance;
     let text = "[ladder]\nmass = 9.747692118443467e-8\nhalf_length = 2.1347904560355113e18\ngravity = 9.57698820050432e-7\n[start]\nangle = 2.2675337567e-314\nangular_velocity = 2.53723876632668e-13\n[contact]\nmodel = \"rigid\"\n[integrator]\nmethod = \"taylor\"\ntolerance = 3.4403496339676883e-16\n[end]\nat = \"flat\"\n[outputs]\nwant = [\"separation_time\", \"momentum_error\", \"final_state\"]\n";
     let sc = scene::parse("campaign-1-995.toml", text).unwrap();
     let o = fall::run(&sc, fall::MAX_STEPS).unwrap();

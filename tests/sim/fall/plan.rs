@@ -4,7 +4,7 @@
 use sliding_ladder::report::work_precision::scene_at;
 use sliding_ladder::sim::fall::{self, Plan};
 use sliding_ladder::sim::integrators::Control;
-use sliding_ladder::sim::output::Output;
+use sliding_ladder::sim::scene::output::Output;
 use sliding_ladder::sim::scene::End;
 
 fn run(outputs: Vec<Output>, end: End, control: Control) -> fall::Outcome {

@@ -19,8 +19,8 @@
 use proptest::prelude::*;
 use sliding_ladder::sim::fall::{self, Outcome};
 use sliding_ladder::sim::integrators::{is_adaptive, names, Control};
-use sliding_ladder::sim::output::Output;
 use sliding_ladder::sim::rigid::Ladder;
+use sliding_ladder::sim::scene::output::Output;
 use sliding_ladder::sim::scene::{ContactModel, End, Scene};
 
 const U: f64 = f64::EPSILON / 2.0;

@@ -186,8 +186,8 @@ fn an_end_within_the_lead_in_is_the_linear_motion() {
 fn estimated_wall_time(theta0: f64, rate0: f64) -> f64 {
     use sliding_ladder::sim::integrators::Control;
     use sliding_ladder::sim::rigid::Ladder;
+    use sliding_ladder::sim::scene::work::phase_steps;
     use sliding_ladder::sim::scene::{ContactModel, End};
-    use sliding_ladder::sim::scene_work::phase_steps;
     let ladder = Ladder {
         mass: 1.0,
         half_length: 1.0,

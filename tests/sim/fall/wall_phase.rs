@@ -239,7 +239,7 @@ fn footnote_4_from_the_simulation() {
 /// run past π/4 by time; the run went on to the separation.
 #[test]
 fn a_run_past_pi_over_4_ending_by_time_stops_on_the_exact_motion() {
-    use sliding_ladder::sim::output::Output;
+    use sliding_ladder::sim::scene::output::Output;
     use sliding_ladder::sim::scene::End;
     let u = f64::EPSILON / 2.0;
     for theta0 in [1.0, 1.3] {
@@ -277,7 +277,7 @@ fn a_run_past_pi_over_4_ending_by_time_stops_on_the_exact_motion() {
 /// made by hand in `Units::outcome_to_si` fails it.)
 #[test]
 fn the_separation_rate_is_reported_in_si() {
-    use sliding_ladder::sim::output::Output;
+    use sliding_ladder::sim::scene::output::Output;
     for theta0 in [0.3, 1.2] {
         let mut sc = scene_at(theta0, 0.0);
         sc.control = Some(Control::Tolerance(1e-13));
@@ -310,7 +310,7 @@ fn the_separation_rate_is_reported_in_si() {
 /// unseen, every test of the flat state had l = 1.
 #[test]
 fn the_flat_state_is_reported_in_si() {
-    use sliding_ladder::sim::output::Output;
+    use sliding_ladder::sim::scene::output::Output;
     let mut sc = scene_at(0.3, 0.0);
     sc.ladder.half_length = 2.0;
     sc.control = Some(Control::Tolerance(1e-14));

@@ -19,8 +19,8 @@
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{is_adaptive, names, Control, Stepper};
-use sliding_ladder::sim::output::Output;
 use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+use sliding_ladder::sim::scene::output::Output;
 use sliding_ladder::sim::scene::{ContactModel, End, Scene};
 
 const U: f64 = f64::EPSILON / 2.0;

@@ -1,19 +1,19 @@
 //! A penalty separation is believed only within its stated bound of the rigid one
-//! (`sim::penalty_confirm`): the bound's model constant holds over the start domain, a spurious
+//! (`sim::penalty::confirm`): the bound's model constant holds over the start domain, a spurious
 //! zero of the wall force is an error with exit 2 (never a wrong answer with exit 0), and the
 //! campaign's penalty findings F1 (explicit method, tiny start) and F4 (radau5, subnormal start)
 //! now give the right separation.
 
-use sliding_ladder::report::campaign_judge::out_of_tolerance;
+use sliding_ladder::report::campaign::judge::out_of_tolerance;
 use sliding_ladder::sim::extreme::linear_lead_in;
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::Control;
-use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel, OMEGA2};
-use sliding_ladder::sim::penalty_confirm::{
+use sliding_ladder::sim::penalty::confirm::{
     rigid_separation_angle, separation_bound, zero_amplification, MODEL_CONSTANT,
 };
-use sliding_ladder::sim::penalty_run::{separate_with, separation};
+use sliding_ladder::sim::penalty::run::{separate_with, separation};
+use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel, OMEGA2};
 use sliding_ladder::sim::scene::parse;
 use std::f64::consts::FRAC_PI_2;
 use std::process::Command;
@@ -140,7 +140,7 @@ fn scene(angle: &str, rate: &str, springs: (&str, &str), method: &str, tol: &str
 
 /// F1 (dop853, θ0 = 1e-12, κ = 1e6, tolerance 1e-10 reported θ_s = 1.4e-12 with exit 0, then
 /// was refused up front; at 1e-10 it is refused up front again since the plan holds explicit
-/// methods to τ ≤ F_w0/40 = 1.7e-11 at a tiny start, `sim::scene_work`: run here at 1e-11) and F4 (radau5 from θ0 = 2.5e-315 with a push, refused as a
+/// methods to τ ≤ F_w0/40 = 1.7e-11 at a tiny start, `sim::scene::work`: run here at 1e-11) and F4 (radau5 from θ0 = 2.5e-315 with a push, refused as a
 /// spurious zero although right) run and separate within the campaign judge's tolerance; so
 /// does F9 (a subnormal θ0 pushed near the wall's limit reported θ_s = θ0 with exit 0).
 #[test]
@@ -193,7 +193,7 @@ fn the_campaign_findings_f1_and_f4_separate_where_the_rigid_ladder_does() {
 
 /// `ladder simulate` on a scene whose contact the integration does not resolve: exit 2, one
 /// line on stderr saying so, nothing on stdout. The plan now refuses this scene up front (the
-/// starting wall force 7e-10 m g is below 40 τ, `sim::scene_work`); the run's own check behind
+/// starting wall force 7e-10 m g is below 40 τ, `sim::scene::work`); the run's own check behind
 /// it is shown above on the library.
 #[test]
 fn ladder_simulate_exits_2_on_an_unresolved_contact() {
@@ -243,7 +243,7 @@ fn the_judge_holds_a_penalty_separation_to_the_contacts_error_model() {
 /// F3 (penalty starts near π/2, campaign seed 1): scenes 69 (κ = 37 at the last float below
 /// π/2), 129 (κ = 1.3e6 at π/2 − 1.4e-9) and 418 (κ = 1.6e6 at π/2 − 2.1e-7: it "separated"
 /// at π/2 + 3.3e-7, inside the model's stated bound but past flat) are refused up front, exit 2
-/// naming the stiffness and why (`sim::penalty_plan`); scene 514 (κ = 1.9e4 at π/2 − 2.1e-4,
+/// naming the stiffness and why (`sim::penalty::plan`); scene 514 (κ = 1.9e4 at π/2 − 2.1e-4,
 /// whose model shift 7e-5 rad is below the 1.4e-4 rad left) runs, and so do stiffer springs
 /// from 1e-7 below flat: both separate between the start and flat, within the judge's bound.
 #[test]

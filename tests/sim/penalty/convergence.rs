@@ -5,8 +5,8 @@
 use num_dual::DualNum;
 use sliding_ladder::sim::integrators::radau5::Radau5;
 use sliding_ladder::sim::integrators::{Control, Ode};
+use sliding_ladder::sim::penalty::run::{separate_with, separate_with_ode, separation};
 use sliding_ladder::sim::penalty::{self, preloaded_start, Contact, Law, PenaltyModel};
-use sliding_ladder::sim::penalty_run::{separate_with, separate_with_ode, separation};
 use sliding_ladder::sim::run::RunError;
 
 const THETA0: f64 = 0.3;

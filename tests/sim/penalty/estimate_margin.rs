@@ -1,5 +1,5 @@
 //! The plan's step count for an explicit adaptive method on penalty springs
-//! (`sim::scene_work::explicit_penalty_steps`) errs low outside the range it was fitted on, so
+//! (`sim::scene::work::explicit_penalty_steps`) errs low outside the range it was fitted on, so
 //! a scene is refused when the count exceeds MAX_STEPS / EXPLICIT_MARGIN. The five scenes are
 //! the 1e6-scene campaign's heavy share (seed 1, first run with `--work-above 1e4`, chunks 0 and 1): each was
 //! accepted, ran 3-5 s and stopped at the 1e7-step limit (exit 1). Measured in release on
@@ -18,8 +18,8 @@
 //! (`tools/experiments/penalty_stability_count.rs`), and the count is now 1.05 ω t_s (0.7 for dop853).
 
 use sliding_ladder::sim::scene::parse;
-use sliding_ladder::sim::scene_parts::MAX_STEPS;
-use sliding_ladder::sim::scene_work::{phase_steps, EXPLICIT_MARGIN};
+use sliding_ladder::sim::scene::parts::MAX_STEPS;
+use sliding_ladder::sim::scene::work::{phase_steps, EXPLICIT_MARGIN};
 
 /// The five scenes as the campaign drew them.
 /// With the steps their runs took (the table).

@@ -1,10 +1,10 @@
 //! Two refusals of penalty scenes and the sweeps that set their thresholds:
-//! * explicit methods whose tolerance exceeds the starting wall force (`sim::scene_work`,
+//! * explicit methods whose tolerance exceeds the starting wall force (`sim::scene::work`,
 //!   [`RESOLVED_WALL_FORCE`]): below it a run can end at a spurious zero of the wall force,
 //!   above it none was seen;
 //!   and its companion for θ0 = 0 with a push, where that force is 0 and only its rate
 //!   Ḟ_w0 counts (`resolved_wall_force_rates`);
-//! * springs softer than [`SOFTEST_CONTACT`] (`sim::scene_checks`): the foot lifts off first.
+//! * springs softer than [`SOFTEST_CONTACT`] (`sim::scene::checks`): the foot lifts off first.
 //!
 //! The fast test shows runs on each side of the first (`tests/sim/scene/work.rs` of the second);
 //! the sweeps run with `LADDER_SLOW=1 cargo test --profile test --test sim penalty::refusals`
@@ -13,13 +13,13 @@
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use sliding_ladder::sim::integrators::Control;
+use sliding_ladder::sim::penalty::confirm::{rigid_separation_angle, separation_bound};
+use sliding_ladder::sim::penalty::run::separation;
 use sliding_ladder::sim::penalty::{Contact, Law, OMEGA2};
-use sliding_ladder::sim::penalty_confirm::{rigid_separation_angle, separation_bound};
-use sliding_ladder::sim::penalty_run::separation;
-use sliding_ladder::sim::scene::SOFTEST_CONTACT;
-use sliding_ladder::sim::scene_work::{
+use sliding_ladder::sim::scene::work::{
     resolved_wall_force_rates, starting_wall_force, wall_force_rate, RESOLVED_WALL_FORCE,
 };
+use sliding_ladder::sim::scene::SOFTEST_CONTACT;
 use std::f64::consts::FRAC_PI_2;
 
 /// What became of a run: separated within the bound, a spurious zero (the run's own check
@@ -66,7 +66,7 @@ fn a_tolerance_above_the_starting_wall_force_gives_a_spurious_zero_and_the_limit
     }
 }
 
-/// The sweep (module docs of `sim::scene_work`): random κ, γ, starts and pushes with τ around
+/// The sweep (module docs of `sim::scene::work`): random κ, γ, starts and pushes with τ around
 /// F_w0; the largest F_w0/τ with a spurious zero must stay a factor 3 below the plan's limit.
 #[test]
 fn no_spurious_zero_within_a_factor_3_of_the_limit() {
@@ -123,7 +123,7 @@ fn no_spurious_zero_within_a_factor_3_of_the_limit() {
     assert!(fine * 10 >= above * 8, "{fine} of {above}");
 }
 
-/// The sweep of θ0 = 0 with a push (module docs of `sim::scene_work`, the campaign's F8):
+/// The sweep of θ0 = 0 with a push (module docs of `sim::scene::work`, the campaign's F8):
 /// random method, κ, γ and push, τ = Ḟ_w0/10^U(−1, 3.5); only starts whose separation is far
 /// (the rule's own condition). For each method the largest Ḟ_w0/τ with a spurious zero must
 /// stay a factor 3 below its [`RESOLVED_WALL_FORCE_RATE`]; it prints how many runs below the

@@ -1,6 +1,6 @@
 //! A penalty run whose end is not believed (a zero of the wall force outside the stated bound
 //! of the rigid separation, or the foot lifting off) is tried again at τ/10
-//! (`sim::penalty_confirm::retry_control`). The two scenes of the 1e6-scene campaign (seed 1)
+//! (`sim::penalty::confirm::retry_control`). The two scenes of the 1e6-scene campaign (seed 1)
 //! that failed this way, given here as the scene files the campaign drew, now separate where
 //! the rigid ladder does (the closed form cos θ_r = (2/3) cos θ0 from rest, footnote 4,
 //! computed here), within the error model's bound, written out here too; their first try at
@@ -9,8 +9,8 @@
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Stats};
+use sliding_ladder::sim::penalty::run::{separate_with, separation, PenaltyRun};
 use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel};
-use sliding_ladder::sim::penalty_run::{separate_with, separation, PenaltyRun};
 use sliding_ladder::sim::run::RunError;
 use sliding_ladder::sim::scene::{parse, ContactModel, Scene};
 
@@ -196,7 +196,7 @@ fn a_believed_run_is_not_retried_and_an_unresolved_one_says_so() {
 /// directly (τ % 10 is τ below 10, where a check through runs might not tell the two apart).
 #[test]
 fn the_second_try_is_at_a_tenth_of_the_tolerance() {
-    use sliding_ladder::sim::penalty_confirm::{retry_control, RETRY_DIVISOR};
+    use sliding_ladder::sim::penalty::confirm::{retry_control, RETRY_DIVISOR};
     assert_eq!(RETRY_DIVISOR, 10.0);
     for tol in [1e-12, 3.7e-5, 0.078, 2.0] {
         assert_eq!(

@@ -1,4 +1,4 @@
-//! The penalty run's start on the slow manifold (`sim::penalty_start::slow_forces`): the rates
+//! The penalty run's start on the slow manifold (`sim::penalty::start::slow_forces`): the rates
 //! it gives are the time derivatives of the forces it gives, along the rigid motion (5). The
 //! motion is the exact closed form (`sim::exact::PhaseOne`), and the derivative a Richardson
 //! extrapolation of central differences, R = (4 D(δ) − D(2δ))/3 with D(δ) = (F(t + δ) −
@@ -9,8 +9,8 @@
 //! − went unseen: the rate is used only to start a run, whose later motion forgives it.)
 
 use sliding_ladder::sim::exact::PhaseOne;
-use sliding_ladder::sim::penalty_start::{rigid_forces, slow_forces, OMEGA2};
-use sliding_ladder::sim::scene_work::wall_force_rate;
+use sliding_ladder::sim::penalty::start::{rigid_forces, slow_forces, OMEGA2};
+use sliding_ladder::sim::scene::work::wall_force_rate;
 
 /// The Richardson derivative of `force` at `t` and its error bound (module docs).
 fn richardson(force: impl Fn(f64) -> f64, t: f64) -> (f64, f64) {

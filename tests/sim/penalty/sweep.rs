@@ -12,8 +12,8 @@
 use num_dual::DualNum;
 use sliding_ladder::sim::integrators::radau5::Radau5;
 use sliding_ladder::sim::integrators::{Control, Ode};
+use sliding_ladder::sim::penalty::run::{separate_with_ode, separation};
 use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel};
-use sliding_ladder::sim::penalty_run::{separate_with_ode, separation};
 
 const THETA0: f64 = 0.3;
 const TOL: f64 = 1e-10;

@@ -20,9 +20,9 @@
 use sliding_ladder::sim::integrators::fixed::{FixedMethod, FixedStep};
 use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{eval, Control, Ode, Stepper};
+use sliding_ladder::sim::penalty::confirm::{rigid_separation_angle, separation_bound};
+use sliding_ladder::sim::penalty::run::{separate_with, PenaltySeparation};
 use sliding_ladder::sim::penalty::{preloaded_start, Contact, Law, PenaltyModel};
-use sliding_ladder::sim::penalty_confirm::{rigid_separation_angle, separation_bound};
-use sliding_ladder::sim::penalty_run::{separate_with, PenaltySeparation};
 
 /// Pushed starts (θ0, θ̇0 in √(g/l)) from the F14 sweep (`tools/experiments/penalty_fixed_step.rs`),
 /// where the mid-step pairing missed by the most.
@@ -30,7 +30,7 @@ const STARTS: [(f64, f64); 3] = [(1.243, 0.209), (0.263, 0.211), (0.712, 0.175)]
 /// Springs stiff enough that the ringing is far above the O(h²) slow error, cheap enough for
 /// a test (ω = 2√κ = 2e4 per √(l/g)).
 const KAPPA: f64 = 1e8;
-/// h ω at the plan's limit for a fixed step on springs (`sim::scene_work`).
+/// h ω at the plan's limit for a fixed step on springs (`sim::scene::work`).
 const H_OMEGA: f64 = 0.2;
 
 /// The Verlet step as it was before F14: v½ = v0 + h/2 a(q0, v½), v1 = v½ + h/2 a(q1, v½).

@@ -4,7 +4,7 @@
 //! (exit 2, nothing on stdout or in `--out`) is held in `cli_scene_errors.rs`.
 
 use crate::common::{with, BASE, PENALTY};
-use sliding_ladder::sim::output::Output;
+use sliding_ladder::sim::scene::output::Output;
 use sliding_ladder::sim::scene::{load, parse};
 
 const LADDER_RANGE: &str = "a number > 0 (kg) in [1e-30, 1e30]";

@@ -1,11 +1,11 @@
-//! Plan-time refusals (`sim::scene_work`): a request the run could not meet is refused up front
+//! Plan-time refusals (`sim::scene::work`): a request the run could not meet is refused up front
 //! with exit 2 and the field, and each refusal is needed: the same scene run anyway fails, and a
 //! scene just inside the stated limit is accepted and runs.
 
-use sliding_ladder::report::campaign_judge::out_of_tolerance;
+use sliding_ladder::report::campaign::judge::out_of_tolerance;
 use sliding_ladder::sim::fall;
+use sliding_ladder::sim::scene::work::phase_steps;
 use sliding_ladder::sim::scene::{parse, Scene};
-use sliding_ladder::sim::scene_work::phase_steps;
 
 const BASE: &str = "[ladder]
 mass = 1.0
@@ -253,7 +253,7 @@ fn an_explicit_method_looser_than_the_starting_wall_force_is_refused() {
     }
     assert!(parse("s.toml", &at("radau5", 1e-6)).is_ok());
     // θ0 = π/2 − 1e-9: F_w0 = 7.5e-10 m g, θ_r = π/2 − 6.7e-10; springs of κ = 1e12, as κ = 1e4
-    // would shift the separation by more than that (refused: `sim::penalty_plan`).
+    // would shift the separation by more than that (refused: `sim::penalty::plan`).
     let near = at("dopri5", 1e-6)
         .replace("angle = 1e-12", "angle = 1.5707963257948965")
         .replace("stiffness = 1e4", "stiffness = 1e12");
@@ -535,12 +535,12 @@ fn a_phase_of_exactly_the_most_steps_allowed_is_accepted() {
 
 /// A penalty scene's fixed step is converted to the model's time unit √(l/g) (h' = h/√(l/g)):
 /// at g = 4 (unit ½) the run takes the steps the plan estimates, t_s/h' up to the model's
-/// shift of the separation, 4/(κ sin θ_r) rad (`sim::penalty_confirm`), over θ̇_r, in steps
+/// shift of the separation, 4/(κ sin θ_r) rad (`sim::penalty::confirm`), over θ̇_r, in steps
 /// (mutation testing: `h / unit` → `h · unit` in `penalty_scene::run` went unseen, every
 /// fixed-step penalty test had l = g = 1; it takes four times the steps here).
 #[test]
 fn a_penalty_scenes_fixed_step_is_taken_in_the_models_time_unit() {
-    use sliding_ladder::sim::penalty_confirm::{rigid_separation_angle, MODEL_CONSTANT};
+    use sliding_ladder::sim::penalty::confirm::{rigid_separation_angle, MODEL_CONSTANT};
     let springs = "model = \"penalty\"\nstiffness = 4e4\ndamping = 0.0"; // κ = k l/(m g) = 1e4
     let sc = parse(
         "s.toml",
@@ -574,7 +574,7 @@ fn a_penalty_scenes_fixed_step_is_taken_in_the_models_time_unit() {
 /// unseen; it counts a fixed 25,000 steps plus 0.3 t).
 #[test]
 fn an_explicit_methods_step_count_is_proportional_to_the_span() {
-    use sliding_ladder::sim::scene_work::explicit_penalty_steps;
+    use sliding_ladder::sim::scene::work::explicit_penalty_steps;
     let (kappa, tol) = (1e6f64, 1e-10);
     let omega = 2.0 * kappa.sqrt();
     for method in ["dopri5", "dop853"] {
@@ -595,14 +595,14 @@ fn an_explicit_methods_step_count_is_proportional_to_the_span() {
 /// A penalty scene's push is converted to the model's units (θ̇' = θ̇ √(l/g)): at g = 4 a push
 /// of 0.5 rad/s is 0.25 per √(g/l), and the separation lands where footnote 4 with the push
 /// puts it, cos θ_r = (2/3) cos θ0 + 4 l θ̇0²/(9 g), within the run's stated bound
-/// (`sim::penalty_confirm`: 4/(κ sin θ_r) + 10 N (τ + u) + 10 u). Mutation testing:
+/// (`sim::penalty::confirm`: 4/(κ sin θ_r) + 10 N (τ + u) + 10 u). Mutation testing:
 /// `θ̇0 · unit` → `θ̇0 / unit` in `penalty_scene::run`, and the separation rate's way back to
 /// SI, `θ̇_s / unit` → `θ̇_s · unit` and `θ̇_s % unit`, went unseen (l = g = 1 or no push in
 /// every penalty test); it pushes four times as fast, θ̇' = 1 > Ω √(cos θ0) = 0.85, so the
 /// wall would have to pull at once and the ladder is reported leaving at θ0, 0.54 rad early.
 #[test]
 fn a_penalty_scenes_push_is_taken_in_the_models_units() {
-    use sliding_ladder::sim::penalty_confirm::{separation_bound, MODEL_CONSTANT};
+    use sliding_ladder::sim::penalty::confirm::{separation_bound, MODEL_CONSTANT};
     let springs = "model = \"penalty\"\nstiffness = 4e4\ndamping = 0.0"; // κ = 1e4
     let sc = parse(
         "s.toml",

@@ -14,7 +14,7 @@
 //! inside the asymptotic range; the next term of the error expansion moves the slope by O(h)).
 
 use num_dual::DualNum;
-use sliding_ladder::report::work_precision_fit::line_fit;
+use sliding_ladder::report::work_precision::fit::line_fit;
 use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Ode, Stepper};
 

@@ -1,0 +1,312 @@
+//! The SVG text of a force diagram ([`crate::report::diagram::Diagram`]): wall and floor (hatched), the
+//! rectangle A–D–E–C, the ladder C–D, the angle θ at C, the points, P ringed in red, every force
+//! as an arrow with its symbol and value, and every lever arm as a dashed perpendicular from P to
+//! the force's line of action (dotted), labelled with the note's symbol and its length. The
+//! legend column on the right gives the state and, per force, its components, point, arm and
+//! torque about P, and their sum.
+//!
+//! Written by hand like [`crate::report::svg_chart`], for the same reason: plotters' SVG backend rounds
+//! every coordinate to a whole pixel, so an arrow's direction and a lever arm's right angle came
+//! out slightly wrong; here every coordinate is a float with two decimals.
+
+use crate::report::diagram::{
+    arm_symbol, arrow_scale, drawing_width, to_px, window, Arrow, Diagram, SIDE,
+};
+use crate::report::svg_text::{esc, n3, subscript, FORCE_COLOURS};
+use std::fmt::Write;
+
+/// Width of the legend column right of the drawing, px.
+pub const LEGEND: f64 = 460.0;
+
+fn line(out: &mut String, a: (f64, f64), b: (f64, f64), style: &str) {
+    let _ = writeln!(
+        out,
+        "<line x1=\"{:.2}\" y1=\"{:.2}\" x2=\"{:.2}\" y2=\"{:.2}\" {style}/>",
+        a.0, a.1, b.0, b.1
+    );
+}
+
+/// Text with a white halo, so that it stays legible over lines.
+fn label(out: &mut String, at: (f64, f64), anchor: &str, colour: &str, size: u32, text: &str) {
+    let _ = writeln!(
+        out,
+        "<text x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"{anchor}\" font-size=\"{size}\" fill=\"{colour}\" \
+stroke=\"white\" stroke-width=\"4\" stroke-linejoin=\"round\" paint-order=\"stroke\" xml:space=\"preserve\">{}</text>",
+        at.0,
+        at.1,
+        subscript(text, size)
+    );
+}
+
+/// The arrow of one force: a shaft from where it acts to its tip (the force times the scale),
+/// a filled head at the tip, and its symbol and value beyond the tip.
+fn arrow(out: &mut String, d: &Diagram, a: &Arrow, colour: &str) {
+    let s = arrow_scale(d);
+    let from = to_px(d, a.at);
+    let to = to_px(d, (a.at.0 + s * a.force.0, a.at.1 + s * a.force.1));
+    let (dx, dy) = (to.0 - from.0, to.1 - from.1);
+    let len = dx.hypot(dy);
+    let _ = writeln!(
+        out,
+        "<line class=\"force\" data-symbol=\"{}\" x1=\"{:.2}\" y1=\"{:.2}\" x2=\"{:.2}\" y2=\"{:.2}\" stroke=\"{colour}\" stroke-width=\"3\"/>",
+        esc(&a.symbol),
+        from.0,
+        from.1,
+        to.0,
+        to.1
+    );
+    if len == 0.0 {
+        return;
+    }
+    let (ux, uy) = (dx / len, dy / len);
+    let (h, w) = (14.0, 5.5);
+    let base = (to.0 - h * ux, to.1 - h * uy);
+    let _ = writeln!(
+        out,
+        "<polygon points=\"{:.2},{:.2} {:.2},{:.2} {:.2},{:.2}\" fill=\"{colour}\"/>",
+        to.0,
+        to.1,
+        base.0 - w * uy,
+        base.1 + w * ux,
+        base.0 + w * uy,
+        base.1 - w * ux
+    );
+    // The symbol (the value is in the legend): a mostly horizontal arrow's just under its tip
+    // (its line may carry lever arms), a mostly vertical one's beside its tip, right of the
+    // shaft (its line of action, dotted, runs on through the tip), any other beyond its tip.
+    let (at, anchor) = if ux.abs() > 0.85 {
+        (
+            (to.0 - 4.0 * ux.signum(), to.1 + 20.0),
+            if ux > 0.0 { "end" } else { "start" },
+        )
+    } else if uy.abs() > 0.85 {
+        ((to.0 + 10.0, to.1 - 6.0 * uy.signum() + 5.0), "start")
+    } else {
+        let anchor = if ux < -0.3 {
+            "end"
+        } else if ux > 0.3 {
+            "start"
+        } else {
+            "middle"
+        };
+        (
+            (
+                to.0 + 10.0 * ux,
+                to.1 + 10.0 * uy + if uy > 0.0 { 12.0 } else { -2.0 },
+            ),
+            anchor,
+        )
+    };
+    let text = a.symbol.clone();
+    label(out, at, anchor, colour, 15, &text);
+}
+
+/// The lever arm of a force about P: dashed from P to the foot of the perpendicular on the
+/// line of action, the line of action dotted from the point of the force to the foot, and the
+/// arm's symbol and length beside it (on alternate sides, `side` = ±1, so that arms along the
+/// same line keep their labels apart).
+fn lever_arm(out: &mut String, d: &Diagram, a: &Arrow, colour: &str, side: f64) {
+    let Some(foot) = foot(d, a) else {
+        return;
+    };
+    let (p, f, q) = (to_px(d, d.p), to_px(d, foot), to_px(d, a.at));
+    line(
+        out,
+        q,
+        f,
+        &format!("stroke=\"{colour}\" stroke-opacity=\"0.45\" stroke-width=\"1.2\" stroke-dasharray=\"2 3\""),
+    );
+    let _ = writeln!(
+        out,
+        "<line class=\"arm\" data-symbol=\"{}\" x1=\"{:.2}\" y1=\"{:.2}\" x2=\"{:.2}\" y2=\"{:.2}\" stroke=\"{colour}\" stroke-width=\"1.6\" stroke-dasharray=\"7 4\"/>",
+        esc(&a.symbol),
+        p.0,
+        p.1,
+        f.0,
+        f.1
+    );
+    // A small square at the foot marks the right angle.
+    let (vx, vy) = (
+        (f.0 - p.0) / (f.0 - p.0).hypot(f.1 - p.1),
+        (f.1 - p.1) / (f.0 - p.0).hypot(f.1 - p.1),
+    );
+    let k = 7.0;
+    let c1 = (f.0 - k * vx, f.1 - k * vy);
+    let c2 = (c1.0 + k * vy, c1.1 - k * vx);
+    let c3 = (f.0 + k * vy, f.1 - k * vx);
+    let _ = writeln!(
+        out,
+        "<polyline points=\"{:.2},{:.2} {:.2},{:.2} {:.2},{:.2}\" fill=\"none\" stroke=\"{colour}\" stroke-width=\"1\"/>",
+        c1.0, c1.1, c2.0, c2.1, c3.0, c3.1
+    );
+    // Along the arm: at 60 % of it on one side, 40 % on the other, so that labels of arms on
+    // one line from P, and a line of action that crosses an arm's middle, stay clear.
+    let w = if side > 0.0 { 0.6 } else { 0.4 };
+    let mid = (p.0 + w * (f.0 - p.0), p.1 + w * (f.1 - p.1));
+    let normal = (-vy * side, vx * side);
+    // Beside a mostly vertical arm the label starts (or ends) a little off the line, so that it
+    // does not straddle the line; elsewhere it is centred above or below it.
+    let (at, anchor) = if normal.0.abs() > 0.7 {
+        (
+            (mid.0 + 8.0 * normal.0.signum(), mid.1 + 5.0),
+            if normal.0 > 0.0 { "start" } else { "end" },
+        )
+    } else {
+        (
+            (mid.0 + 14.0 * normal.0, mid.1 + 14.0 * normal.1 + 4.0),
+            "middle",
+        )
+    };
+    let text = match arm_symbol(d, a) {
+        Some(sym) => sym.to_string(),
+        None => format!("{} m", n3(a.arm)),
+    };
+    label(out, at, anchor, colour, 14, &text);
+}
+
+/// The foot of the perpendicular from P on the line of action of `a` (m); `None` when the arm
+/// is zero (the line passes through P) or the force is.
+pub fn foot(d: &Diagram, a: &Arrow) -> Option<(f64, f64)> {
+    let size = a.force.0.hypot(a.force.1);
+    if size == 0.0 || a.arm <= 1e-12 {
+        return None;
+    }
+    let u = (a.force.0 / size, a.force.1 / size);
+    let t = (d.p.0 - a.at.0) * u.0 + (d.p.1 - a.at.1) * u.1;
+    Some((a.at.0 + t * u.0, a.at.1 + t * u.1))
+}
+
+/// Draw the diagram as SVG text.
+pub fn draw_svg(d: &Diagram) -> String {
+    let left = drawing_width(d);
+    let (w, h) = (left + LEGEND, SIDE);
+    let mut out = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" \
+font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n<rect width=\"{w}\" height=\"{h}\" fill=\"white\"/>\n"
+    );
+    let (_, x1, _, y1) = window(d);
+    let at = |n: &str| {
+        d.corners
+            .iter()
+            .find(|c| c.0 == n)
+            .map_or((0.0, 0.0), |c| c.1)
+    };
+    let origin = to_px(d, (0.0, 0.0));
+    let (top, right) = (to_px(d, (0.0, y1)), to_px(d, (x1, 0.0)));
+    // Wall and floor, hatched on the side of the solid.
+    let mut y = origin.1;
+    while y > top.1 + 10.0 {
+        line(
+            &mut out,
+            (origin.0, y),
+            (origin.0 - 9.0, y + 9.0),
+            "stroke=\"#777\" stroke-width=\"1\"",
+        );
+        y -= 14.0;
+    }
+    let mut x = origin.0;
+    while x < right.0 - 10.0 {
+        line(
+            &mut out,
+            (x, origin.1),
+            (x - 9.0, origin.1 + 9.0),
+            "stroke=\"#777\" stroke-width=\"1\"",
+        );
+        x += 14.0;
+    }
+    line(&mut out, origin, top, "stroke=\"black\" stroke-width=\"3\"");
+    line(
+        &mut out,
+        origin,
+        right,
+        "stroke=\"black\" stroke-width=\"3\"",
+    );
+    // The rectangle A–D–E–C (E is not on the ladder), thin, and the ladder C–D, thick.
+    let (c, dd, e) = (to_px(d, at("C")), to_px(d, at("D")), to_px(d, at("E")));
+    let _ = writeln!(
+        out,
+        "<polyline points=\"{:.2},{:.2} {:.2},{:.2} {:.2},{:.2}\" fill=\"none\" stroke=\"#999\" stroke-width=\"1\" stroke-dasharray=\"4 3\"/>",
+        dd.0, dd.1, e.0, e.1, c.0, c.1
+    );
+    line(
+        &mut out,
+        c,
+        dd,
+        "stroke=\"#D2B98B\" stroke-width=\"8\" stroke-linecap=\"round\"",
+    );
+    // θ at C, between the wall (downwards) and the ladder.
+    let r = 42.0;
+    let (ux, uy) = (
+        (dd.0 - c.0) / (dd.0 - c.0).hypot(dd.1 - c.1),
+        (dd.1 - c.1) / (dd.0 - c.0).hypot(dd.1 - c.1),
+    );
+    let _ = writeln!(
+        out,
+        "<path d=\"M {:.2} {:.2} A {r} {r} 0 0 0 {:.2} {:.2}\" fill=\"none\" stroke=\"#555\" stroke-width=\"1.2\"/>",
+        c.0,
+        c.1 + r,
+        c.0 + r * ux,
+        c.1 + r * uy
+    );
+    let half = (0.5 * ux, 0.5 * (1.0 + uy));
+    let n = half.0.hypot(half.1);
+    label(
+        &mut out,
+        (
+            c.0 + (r + 12.0) * half.0 / n,
+            c.1 + (r + 12.0) * half.1 / n + 5.0,
+        ),
+        "middle",
+        "#555",
+        15,
+        "θ",
+    );
+    // Lever arms under the arrows, then the arrows. Two forces with the same foot share one
+    // arm (drawn once); arms along one line from P take alternate sides for their labels.
+    let mut drawn: Vec<(f64, f64)> = Vec::new();
+    let mut directions: Vec<(f64, f64)> = Vec::new();
+    for (i, a) in d.arrows.iter().enumerate() {
+        let Some(f) = foot(d, a) else { continue };
+        if drawn
+            .iter()
+            .any(|g| (g.0 - f.0).abs() + (g.1 - f.1).abs() < 1e-9)
+        {
+            continue;
+        }
+        let dir = ((f.0 - d.p.0) / a.arm, (f.1 - d.p.1) / a.arm);
+        let along = directions
+            .iter()
+            .filter(|g| (g.0 - dir.0).abs() + (g.1 - dir.1).abs() < 1e-9)
+            .count();
+        lever_arm(
+            &mut out,
+            d,
+            a,
+            FORCE_COLOURS[i % FORCE_COLOURS.len()],
+            if along % 2 == 0 { 1.0 } else { -1.0 },
+        );
+        drawn.push(f);
+        directions.push(dir);
+    }
+    for (name, q) in &d.corners {
+        let p = to_px(d, *q);
+        let _ = writeln!(
+            out,
+            "<circle cx=\"{:.2}\" cy=\"{:.2}\" r=\"4\" fill=\"black\"/>",
+            p.0, p.1
+        );
+        label(&mut out, (p.0 - 12.0, p.1 - 8.0), "end", "black", 18, name);
+    }
+    let p = to_px(d, d.p);
+    let _ = writeln!(
+        out,
+        "<circle class=\"reference\" cx=\"{:.2}\" cy=\"{:.2}\" r=\"9\" fill=\"none\" stroke=\"#D00\" stroke-width=\"2\"/>",
+        p.0, p.1
+    );
+    for (i, a) in d.arrows.iter().enumerate() {
+        arrow(&mut out, d, a, FORCE_COLOURS[i % FORCE_COLOURS.len()]);
+    }
+    crate::report::diagram::legend::legend(&mut out, d, left);
+    out.push_str("</svg>\n");
+    out
+}

@@ -1,0 +1,3 @@
+//! `report::stability`: the stability report's cases.
+
+mod long;
