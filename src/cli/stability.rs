@@ -1,6 +1,7 @@
 //! `ladder stability`: the stiff and extreme cases with their verdicts (see
 //! [`crate::report::stability`]); exit 1 only when a verdict contradicts theory's expectation.
 
+use crate::report::stability::case::Case;
 use crate::report::stability::scale::SWEEP_CASES;
 use crate::report::stability::stiff::EXPECTED_RUNS;
 use crate::report::stability::{all_cases, table};
@@ -51,9 +52,70 @@ pub fn stability(json: bool) -> ExitCode {
     };
     // A closed pipe (e.g. `| head`) is not an error of the report.
     let _ = std::io::stdout().lock().write_all(text.as_bytes());
-    if surprises == 0 {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
+    match surprise_line(&cases) {
+        None => ExitCode::SUCCESS,
+        Some(why) => {
+            eprintln!("{why}");
+            ExitCode::from(1)
+        }
+    }
+}
+
+/// The stderr line of a report with cases not as theory expects (exit 1), naming each; `None`
+/// when every verdict is the expected one.
+fn surprise_line(cases: &[Case]) -> Option<String> {
+    let names: Vec<String> = cases
+        .iter()
+        .filter(|c| c.expect.surprised_by(c.verdict))
+        .map(|c| format!("{} {} ({})", c.group, c.case, c.method))
+        .collect();
+    (!names.is_empty()).then(|| {
+        format!(
+            "ladder stability: exit 1: {} cases not as expected: {}",
+            names.len(),
+            names.join(", ")
+        )
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::stability::case::{Expect, Verdict};
+
+    fn case(verdict: Verdict, expect: Expect) -> Case {
+        Case {
+            group: "extreme",
+            case: "θ0=0 θ̇0=1e0·Ω: angle".into(),
+            method: "dop853 1e-13".into(),
+            expected: String::new(),
+            value: String::new(),
+            error: None,
+            bound: None,
+            steps: 0,
+            rhs_evals: 0,
+            seconds: 0.0,
+            verdict,
+            reason: String::new(),
+            expect,
+            drift: None,
+        }
+    }
+
+    /// Exit 1 always says why: a case whose verdict theory did not expect is named on stderr,
+    /// and a report as expected has no line.
+    #[test]
+    fn surprise_line_names_each_unexpected_case() {
+        let fine = case(Verdict::Ok, Expect::Ok);
+        assert_eq!(surprise_line(&[fine.clone()]), None);
+        let line = surprise_line(&[fine, case(Verdict::Fail, Expect::Ok)]).unwrap();
+        assert!(
+            line.starts_with("ladder stability: exit 1: 1 cases"),
+            "{line}"
+        );
+        assert!(
+            line.contains("extreme θ0=0 θ̇0=1e0·Ω: angle (dop853 1e-13)"),
+            "{line}"
+        );
     }
 }
