@@ -107,7 +107,7 @@ mod tests {
     #[test]
     fn surprise_line_names_each_unexpected_case() {
         let fine = case(Verdict::Ok, Expect::Ok);
-        assert_eq!(surprise_line(&[fine.clone()]), None);
+        assert_eq!(surprise_line(std::slice::from_ref(&fine)), None);
         let line = surprise_line(&[fine, case(Verdict::Fail, Expect::Ok)]).unwrap();
         assert!(
             line.starts_with("ladder stability: exit 1: 1 cases"),
