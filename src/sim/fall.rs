@@ -183,8 +183,8 @@ fn run_rigid(
             if let (End::Time(_), true) = (scene.end, end2.t < t_end) {
                 let s = impact::slide(&ladder, &f, t_end);
                 if let Some(tr) = trace.as_mut() {
-                    for t in [f.time, t_end] {
-                        tr.offer(impact::lying_flat_sample(t));
+                    for (t, x) in [(f.time, f.centre_x), (t_end, s.centre_x_end)] {
+                        tr.offer(impact::lying_flat_sample(t, x));
                     }
                 }
                 last = (t_end, end2.y[0], 0.0);
