@@ -262,8 +262,19 @@ fn caption(name: &str) -> String {
     }
 }
 
-/// The figures page: every figure with its caption.
-pub fn figures_page(files: &[(String, Vec<u8>)]) -> String {
+/// The work-precision figure of `docs/simulator.md` (a picture of `docs/`, kept beside the
+/// about pages), with its caption.
+pub const WORK_PRECISION: (&str, &str) = (
+    "work-precision.png",
+    "Work against precision of every integrator on the six built-in scenes, one panel per scene: \
+the error of the separation (or flat) time against the work, the peers (ode_solvers' DOP853 and \
+Dopri5) dashed in the colour of the method they match, the Pareto front as a grey band \
+(docs/simulator.md says how it was made and on which machine).",
+);
+
+/// The figures page: every figure with its caption, then `pictures` (file, caption) of the
+/// book's root.
+pub fn figures_page(files: &[(String, Vec<u8>)], pictures: &[(&str, &str)]) -> String {
     let mut out = String::from("<h1>Figures</h1>\n");
     for (name, _) in files {
         out.push_str(&format!(
@@ -271,6 +282,14 @@ pub fn figures_page(files: &[(String, Vec<u8>)]) -> String {
             id = esc(name.trim_end_matches(".svg")),
             n = esc(name),
             c = esc(&caption(name)),
+        ));
+    }
+    for (file, cap) in pictures {
+        out.push_str(&format!(
+            "<figure id=\"{id}\"><img src=\"{f}\" alt=\"{c}\" /><figcaption>{c}</figcaption></figure>\n",
+            id = esc(file.trim_end_matches(".png")),
+            f = esc(file),
+            c = esc(cap),
         ));
     }
     out

@@ -170,6 +170,12 @@ pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
         }
     }
     let out = super::refs::link_references(out, hooks.equation);
+    // The glossary explains these words; it does not link to itself.
+    let out = if name.ends_with("glossary.md") {
+        out
+    } else {
+        super::terms::link_terms(out)
+    };
     let mut html_out = String::new();
     html::push_html(&mut html_out, out.into_iter());
     (html_out, problems)

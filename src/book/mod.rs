@@ -27,6 +27,7 @@ pub mod reader;
 pub mod reader_pages;
 pub mod refs;
 pub mod site;
+pub mod terms;
 mod write;
 
 pub use write::write_atomically;

@@ -50,7 +50,14 @@ pub fn term(id: &str, text: &str) -> String {
 
 /// The badge of a status: the reader's word, linked to its glossary entry.
 pub fn badge(s: Status) -> String {
-    let tech = super::panel::status_name(s);
+    // The technical word, as `data-status` and `ladder verify` have it (here, not from the
+    // panel, which uses this module).
+    let tech = match s {
+        Status::Verified => "verified",
+        Status::Erratum => "erratum",
+        Status::Definition => "definition",
+        Status::Failed => "failed",
+    };
     term(
         status_term(s),
         &format!(

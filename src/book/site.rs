@@ -316,7 +316,13 @@ pub fn build(root: &Path, data: &BookData) -> Built {
             0,
             &nav,
             "figures.html",
-            &generated::figures_page(&figures),
+            &generated::figures_page(
+                &figures,
+                &[generated::WORK_PRECISION]
+                    .into_iter()
+                    .filter(|(f, _)| root.join("docs").join(f).is_file())
+                    .collect::<Vec<_>>(),
+            ),
         )
         .into_bytes(),
     ));

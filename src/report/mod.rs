@@ -7,6 +7,7 @@ pub mod campaign_judge;
 pub mod chart;
 pub mod diagram;
 mod diagram_legend;
+pub mod diagram_marks;
 pub mod diagram_svg;
 pub mod digits;
 pub mod fall_figures;
