@@ -18,17 +18,17 @@ pub fn svg(root: &std::path::Path) -> Result<String, String> {
 pub fn page() -> String {
     format!(
         "<h1>The fall, animated</h1>\n\
-<p>The ladder of <code>scenes/full-fall.toml</code> released from rest at θ0 = 0.3 rad, simulated \
+<p>The ladder of <code>scenes/full-fall.toml</code> released from rest at θ<sub>0</sub> = 0.3 rad, simulated \
 when this book was built and played {slow}× slower than real time, then held for {hold} s. Every \
 frame is a state the integrator computed: the angle θ and the centre's abscissa X. The three \
-forces are drawn to one scale — blue the wall's push F_w at the top, green the floor's push F_f \
+forces are drawn to one scale — blue the wall's push F<sub>w</sub> at the top, green the floor's push F<sub>f</sub> \
 at the foot, red the weight m g at the centre.</p>\n\
 <figure id=\"fall-animation\"><img src=\"{file}\" width=\"760\" height=\"460\" alt=\"{alt}\" />\
 <figcaption>{alt}</figcaption></figure>\n\
 <p>What to watch for. The wall force grows from zero, peaks and shrinks back to zero as the \
-ladder tilts: the centre's outward speed stops growing there (F_w = m ẍ_cm, (6)). At that \
+ladder tilts: the centre's outward speed stops growing there (F<sub>w</sub> = m ẍ<sub>cm</sub>, (6)). At that \
 instant, marked by the dashed pose and the ring on the wall, the top leaves the wall \
-(cos θ_s = (2/3) cos θ0, the answer on the <a href=\"index.html#answer\">index</a>). After it the \
+(cos θ<sub>s</sub> = (2/3) cos θ<sub>0</sub>, the answer on the <a href=\"index.html#answer\">index</a>). After it the \
 foot slides on at the centre's constant horizontal speed (<a href=\"phase2.html\">the floor \
 phase</a>) and the floor force dips well below the weight before the ladder lands flat. \
 <code>ladder animate SCENE --out FILE</code> draws any scene the same way.</p>\n",

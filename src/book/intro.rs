@@ -61,23 +61,23 @@ pub fn answer_html(a: &Answer, scene: &Scene) -> String {
 <p><strong>Where the ladder leaves the wall.</strong> The wall can only push. While the ladder \
 is steep the centre of mass speeds up away from the wall and the wall supplies that push; as the \
 ladder tilts, the centre would have to slow its outward motion, which needs a pull. So the wall \
-force F_w falls to zero at an angle θ_s and the top leaves the wall there. Energy (10) and \
-F_w = m a_x (6) give it in closed form (footnote 4): \
-<strong>cos θ_s = (2/3) cos θ0</strong> for a start from rest at θ0. Nudged from upright, \
-cos θ_s = 2/3: θ_s = {up:.2}°, whatever m, l or g.</p>\n\
+force F<sub>w</sub> falls to zero at an angle θ<sub>s</sub> and the top leaves the wall there. \
+Energy (10) and F<sub>w</sub> = m a<sub>x</sub> (6) give it in closed form (footnote 4): \
+<strong>cos θ<sub>s</sub> = (2/3) cos θ<sub>0</sub></strong> for a start from rest at θ<sub>0</sub>. \
+Nudged from upright, cos θ<sub>s</sub> = 2/3: θ<sub>s</sub> = {up:.2}°, whatever m, l or g.</p>\n\
 <p>The simulator ({method}, scene <code>{file}</code>: m = {m} kg, l = {hl} m, g = {g} m/s², \
-released from rest at θ0 = {t0:.3} rad = {t0d:.2}°) finds the wall force reach zero at \
-t_s = {ts:.4} s, θ_s = {ths:.4}° (cos θ_s = {cs:.12}; the closed form (2/3) cos θ0 = {cc:.12}), \
-turning at θ̇ = {rs:.4} rad/s.</p>\n\
-<p><strong>How it lands.</strong> After separation the wall no longer acts, so the centre keeps \
-the horizontal speed it had ((P2): no horizontal force) and the foot slides on while the ladder \
-falls (the <a href=\"phase2.html\">floor phase</a>, beyond the note). It lies flat at \
+released from rest at θ<sub>0</sub> = {t0:.3} rad = {t0d:.2}°) finds the wall force reach zero at \
+t<sub>s</sub> = {ts:.4} s, θ<sub>s</sub> = {ths:.4}° (cos θ<sub>s</sub> = {cs:.12}; the closed form \
+(2/3) cos θ<sub>0</sub> = {cc:.12}), turning at θ̇ = {rs:.4} rad/s.</p>\n\
+<p><strong>How it lands.</strong> After separation the wall no longer acts and no horizontal \
+force is left (P2), so the centre keeps the horizontal speed it had and the foot slides on while \
+the ladder falls (the <a href=\"phase2.html\">floor phase</a>, beyond the note). It lies flat at \
 t = {tf:.4} s, turning at θ̇ = {rf:.4} rad/s, its centre moving at Ẋ = {vx:.4} m/s along the \
 floor and {vy:.4} m/s downwards. The top strikes the floor; without bounce the landing takes \
 {el:.4} m g l of kinetic energy, and the ladder slides on, flat, at Ẋ.</p>\n",
         up = deg(a.theta_s_upright),
         method = esc(&scene.method),
-        file = esc(&scene.file),
+        file = esc(&shown_path(&scene.file)),
         m = l.mass,
         hl = l.half_length,
         g = l.gravity,
@@ -91,9 +91,18 @@ floor and {vy:.4} m/s downwards. The top strikes the floor; without bounce the l
         tf = a.t_flat,
         rf = a.rate_flat,
         vx = a.centre_velocity.0,
-        vy = a.centre_velocity.1,
+        vy = -a.centre_velocity.1,
         el = a.energy_lost,
     )
+}
+
+/// A scene's path as the reader knows it, from the crate root (`scenes/full-fall.toml`), not
+/// the machine's absolute path.
+fn shown_path(file: &str) -> String {
+    match file.rfind("scenes/") {
+        Some(i) => file[i..].to_string(),
+        None => file.to_string(),
+    }
 }
 
 /// Where a reader goes next: the pages for a student and for a teacher.
