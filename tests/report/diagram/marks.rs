@@ -26,8 +26,11 @@ fn about(k: Corner) -> Diagram {
     diagram(k.name(), &Reference::Corner(k), &Ladder { m, l, g }, &st)
 }
 
-/// Every `<line class="{class}">` as (x1, y1, x2, y2) with its `data-offset` (0, 0 if none).
-fn lines(svg: &str, class: &str) -> Vec<((f64, f64, f64, f64), (f64, f64))> {
+/// A line's ends (x1, y1, x2, y2), px.
+type Ends = (f64, f64, f64, f64);
+
+/// Every `<line class="{class}">` with its `data-offset` (0, 0 if none).
+fn lines(svg: &str, class: &str) -> Vec<(Ends, (f64, f64))> {
     svg.split("<line")
         .skip(1)
         .filter(|el| el.contains(&format!("class=\"{class}\"")))
@@ -50,7 +53,7 @@ fn lines(svg: &str, class: &str) -> Vec<((f64, f64, f64, f64), (f64, f64))> {
 }
 
 /// Arms (as drawn) lying on the floor, the wall or a force's line of action, as messages.
-fn arms_on_lines(d: &Diagram, arms: &[(f64, f64, f64, f64)]) -> Vec<String> {
+fn arms_on_lines(d: &Diagram, arms: &[Ends]) -> Vec<String> {
     let floor = to_px(d, (0.0, 0.0));
     let mut lines: Vec<((f64, f64), (f64, f64))> = vec![(floor, (1.0, 0.0)), (floor, (0.0, 1.0))];
     for a in d.arrows.iter().filter(|a| a.force != (0.0, 0.0)) {
