@@ -15,20 +15,28 @@ fn eq_link(home: &BTreeMap<u32, String>, number: u32, label: &str) -> String {
     }
 }
 
-/// The index: the summary of the checks, the table of every display, then `README.md`.
-pub fn index_page(data: &BookData, home: &BTreeMap<u32, String>, readme: &str) -> String {
+/// The index: the opening for a student (`opening`: the problem, the figure, the answer, where
+/// to go next), then `README.md` (how the book checks the note), then every display's status.
+pub fn index_page(
+    data: &BookData,
+    home: &BTreeMap<u32, String>,
+    opening: &str,
+    readme: &str,
+) -> String {
+    use super::reader::{badge, term};
     let mut rows = String::new();
     for r in data.results.iter().chain(&data.extensions) {
         let s = status_name(r.status);
         rows.push_str(&format!(
             "<tr data-number=\"{n}\" data-status=\"{s}\" data-proved=\"{p}\"><td>{link}</td><td>{sec}</td><td>{title}</td>\
-<td>{kind}</td><td><span class=\"badge {s}\">{s}</span></td><td>{proved}</td><td>{units}</td><td>{res:.3}</td><td>{exact}</td></tr>\n",
+<td>{kind}</td><td>{badge}</td><td>{proved}</td><td>{units}</td><td>{res:.3}</td><td>{exact}</td></tr>\n",
             n = r.number,
             p = r.proved,
             link = eq_link(home, r.number, &r.label),
             sec = esc(r.section),
             title = esc(r.title),
             kind = r.kind.name(),
+            badge = badge(r.status),
             proved = if r.proved { "yes" } else { "no" },
             units = esc(r.units.name()),
             res = r.max_residual,
@@ -36,17 +44,25 @@ pub fn index_page(data: &BookData, home: &BTreeMap<u32, String>, readme: &str) -
         ));
     }
     let (v, e, d, f) = crate::verify::counts(&data.results);
+    let readme = readme
+        .replacen("<h1>", "<h2>", 1)
+        .replacen("</h1>", "</h2>", 1);
     format!(
-        "<h1>Torque Analyses of a Sliding Ladder, verified</h1>\n\
-<p class=\"summary\"><strong>{v} verified, {e} erratum, {d} definition, {f} failed</strong> of the note's {} displays. \
-{}</p>\n<p>See also: <a href=\"errata.html\">the errata</a>, <a href=\"methods.html\">the derivations</a>, \
-<a href=\"figures.html\">the figures</a>.</p>\n\
-<h2 id=\"summary\">Every display</h2>\n<p>res/bound: the worst float residual in units of its running error bound \
-(pass ≤ 4); exact: the residual at random exact points (the first in rationals, the rest modulo p = 2^61 − 1).</p>\n\
-<table><thead><tr><th>eq</th><th>sec</th><th>title</th><th>kind</th><th>status</th><th>proved</th><th>units</th>\
-<th>res/bound</th><th>exact</th></tr></thead>\n<tbody>\n{rows}</tbody></table>\n{readme}",
+        "{opening}\n{readme}\n<h2 id=\"summary\">Every display, checked</h2>\n\
+<p class=\"summary\"><strong>{v} {checked}, {e} {misprint}, {d} {definition}, {f} failed</strong> of the note's {} displays. \
+{}</p>\n<p>{resb}: the worst float residual in units of its running error bound \
+(pass ≤ 4); {exact}: the residual at random exact points (the first in rationals, the rest {modp}).</p>\n\
+<table><thead><tr><th>eq</th><th>sec</th><th>title</th><th>kind</th><th>status</th><th>{proved}</th><th>units</th>\
+<th>{resb}</th><th>{exact}</th></tr></thead>\n<tbody>\n{rows}</tbody></table>\n",
         data.results.len(),
         esc(&data.summary),
+        checked = term("checked", "checked"),
+        misprint = term("misprint", "misprints in the note"),
+        definition = term("definition", "definitions"),
+        resb = term("residual", "res/bound"),
+        exact = term("exact", "exact"),
+        modp = term("modp", "modulo p = 2<sup>61</sup> − 1"),
+        proved = term("proved", "proved"),
     )
 }
 
@@ -195,34 +211,34 @@ pub fn figure_files(dir: &Path) -> Vec<(String, Vec<u8>)> {
     files
 }
 
-/// The figures of the full fall (`scenes/full-fall.toml`, simulated now): trajectory and
-/// contact forces with the separation, the flat landing and F_w reaching zero marked.
-pub fn fall_figures(root: &Path, problems: &mut Vec<String>) -> Vec<(String, Vec<u8>)> {
-    use crate::report::files::Content;
+/// The full fall of `scenes/full-fall.toml`, simulated now: its scene and outcome.
+pub fn full_fall(
+    root: &Path,
+) -> Result<(crate::sim::scene::Scene, crate::sim::outcome::Outcome), String> {
     let path = root.join("scenes/full-fall.toml");
-    let outcome = crate::sim::scene::load(&path)
-        .map_err(|e| e.to_string())
-        .and_then(|sc| {
-            let o = crate::sim::fall::run(&sc, crate::sim::fall::MAX_STEPS)
-                .map_err(|e| e.to_string())?;
-            Ok(crate::report::fall_figures::files(&sc, &o))
-        });
-    match outcome {
-        Ok(files) => files
-            .into_iter()
-            .filter_map(|f| match f.content {
-                Content::Chart(c, s) => Some((
-                    format!("fall-{}", f.name.replace('_', "-")),
-                    crate::report::svg_chart::document(&[(c, s)], 960.0, 600.0).into_bytes(),
-                )),
-                _ => None,
-            })
-            .collect(),
-        Err(e) => {
-            problems.push(format!("{}: {e}", path.display()));
-            Vec::new()
-        }
-    }
+    let scene = crate::sim::scene::load(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let o = crate::sim::fall::run(&scene, crate::sim::fall::MAX_STEPS)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok((scene, o))
+}
+
+/// The figures of the full fall: trajectory and contact forces with the separation, the flat
+/// landing and F_w reaching zero marked.
+pub fn fall_figures(
+    scene: &crate::sim::scene::Scene,
+    o: &crate::sim::outcome::Outcome,
+) -> Vec<(String, Vec<u8>)> {
+    use crate::report::files::Content;
+    crate::report::fall_figures::files(scene, o)
+        .into_iter()
+        .filter_map(|f| match f.content {
+            Content::Chart(c, s) => Some((
+                format!("fall-{}", f.name.replace('_', "-")),
+                crate::report::svg_chart::document(&[(c, s)], 960.0, 600.0).into_bytes(),
+            )),
+            _ => None,
+        })
+        .collect()
 }
 
 fn caption(name: &str) -> String {
@@ -246,8 +262,19 @@ fn caption(name: &str) -> String {
     }
 }
 
-/// The figures page: every figure with its caption.
-pub fn figures_page(files: &[(String, Vec<u8>)]) -> String {
+/// The work-precision figure of `docs/simulator.md` (a picture of `docs/`, kept beside the
+/// about pages), with its caption.
+pub const WORK_PRECISION: (&str, &str) = (
+    "work-precision.png",
+    "Work against precision of every integrator on the six built-in scenes, one panel per scene: \
+the error of the separation (or flat) time against the work, the peers (ode_solvers' DOP853 and \
+Dopri5) dashed in the colour of the method they match, the Pareto front as a grey band \
+(docs/simulator.md says how it was made and on which machine).",
+);
+
+/// The figures page: every figure with its caption, then `pictures` (file, caption) of the
+/// book's root.
+pub fn figures_page(files: &[(String, Vec<u8>)], pictures: &[(&str, &str)]) -> String {
     let mut out = String::from("<h1>Figures</h1>\n");
     for (name, _) in files {
         out.push_str(&format!(
@@ -255,6 +282,14 @@ pub fn figures_page(files: &[(String, Vec<u8>)]) -> String {
             id = esc(name.trim_end_matches(".svg")),
             n = esc(name),
             c = esc(&caption(name)),
+        ));
+    }
+    for (file, cap) in pictures {
+        out.push_str(&format!(
+            "<figure id=\"{id}\"><img src=\"{f}\" alt=\"{c}\" /><figcaption>{c}</figcaption></figure>\n",
+            id = esc(file.trim_end_matches(".png")),
+            f = esc(file),
+            c = esc(cap),
         ));
     }
     out

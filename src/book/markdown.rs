@@ -70,7 +70,10 @@ fn text_until<'e>(
 
 /// Render `src` (the file `name`) to HTML; returns the HTML and every problem found.
 pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
-    let opts = Options::ENABLE_MATH | Options::ENABLE_TABLES | Options::ENABLE_STRIKETHROUGH;
+    let opts = Options::ENABLE_MATH
+        | Options::ENABLE_TABLES
+        | Options::ENABLE_STRIKETHROUGH
+        | Options::ENABLE_HEADING_ATTRIBUTES;
     let events: Vec<Event> = Parser::new_ext(src, opts).collect();
     let mut problems = Vec::new();
     let mut out: Vec<Event> = Vec::with_capacity(events.len());
@@ -167,6 +170,12 @@ pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
         }
     }
     let out = super::refs::link_references(out, hooks.equation);
+    // The glossary explains these words; it does not link to itself.
+    let out = if name.ends_with("glossary.md") {
+        out
+    } else {
+        super::terms::link_terms(out)
+    };
     let mut html_out = String::new();
     html::push_html(&mut html_out, out.into_iter());
     (html_out, problems)

@@ -13,14 +13,21 @@
 //! written by hand: a template engine would add a dependency for five page shapes.
 
 pub mod about;
+pub mod animation;
 pub mod code;
+pub mod derivations;
 pub mod generated;
+pub mod intro;
 pub mod markdown;
 pub mod math;
 pub mod pages;
 pub mod panel;
+pub mod problems;
+pub mod reader;
+pub mod reader_pages;
 pub mod refs;
 pub mod site;
+pub mod terms;
 mod write;
 
 pub use write::write_atomically;

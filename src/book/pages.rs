@@ -105,6 +105,9 @@ section.erratum dt { color: var(--muted); font: 14px/1.4 system-ui, sans-serif; 
 section.erratum dd { margin: 0 0 0 1em; }
 section.erratum math[display="block"] { text-align: left; }
 .erratum-forms { border-left: 3px solid var(--err); padding-left: .6em; }
+details.solution { border-left: 3px solid var(--def); padding: .2em .8em; margin: .5em 0 1.5em; }
+details.solution summary { cursor: pointer; color: var(--def); font: 14px/1.6 system-ui, sans-serif; }
+table.derivations td, table.derivations th { width: 14%; }
 .source .line { display: block; white-space: pre; }
 .source .ln { display: inline-block; width: 4em; color: #999; text-decoration: none; user-select: none; }
 .source .line:target { background: #fff3b0; }

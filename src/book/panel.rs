@@ -55,12 +55,21 @@ pub fn numbered_display(
 }
 
 fn badges(r: &EquationResult) -> String {
-    let s = status_name(r.status);
-    let mut b = format!("<span class=\"badge {s}\">{s}</span>");
+    super::reader::badge(r.status)
+}
+
+/// The technical status, for the panel: the status of `ladder verify` and the proof, each word
+/// linked to the glossary.
+fn technical_status(r: &EquationResult) -> String {
+    use super::reader::term;
+    let mut s = format!(
+        "<code>{}</code> in <code>ladder verify</code>",
+        status_name(r.status)
+    );
     if r.proved {
-        b.push_str(" <span class=\"badge proved\">proved</span>");
+        s.push_str(&format!("; {}", term("proved", "proved symbolically")));
     }
-    b
+    s
 }
 
 fn forms_checked(r: &EquationResult) -> String {
@@ -88,12 +97,14 @@ fn forms_checked(r: &EquationResult) -> String {
 
 fn residual(r: &EquationResult) -> String {
     format!(
-        "worst {:.3} error bounds over {} float states (pass ≤ 4); {} at {} exact rational points \
-(Schwartz–Zippel chance of a false pass ≤ 1e{})",
+        "worst {:.3} error bounds over {} float states (pass ≤ 4); {} at {} {} \
+({} chance of a false pass ≤ 1e{})",
         r.max_residual,
         r.cases,
         if r.exact { "zero" } else { "not zero" },
         r.exact_points,
+        super::reader::term("exact", "exact points"),
+        super::reader::term("schwartz-zippel", "Schwartz–Zippel"),
         r.sz_bound_log10.ceil()
     )
 }
@@ -211,22 +222,31 @@ fn panel(
     functions: &[Function],
     erratum: Option<&ErratumReport>,
 ) -> Result<String, String> {
+    use super::reader::{kind_term, term};
+    let kind = match kind_term(r.kind.name()) {
+        Some(id) => term(id, &esc(r.kind.name())),
+        None => esc(r.kind.name()),
+    };
     let mut rows = vec![
-        ("Kind", esc(r.kind.name())),
-        ("Forms checked", forms_checked(r)),
-        ("Residual", residual(r)),
+        ("Status".to_string(), technical_status(r)),
+        ("Kind".to_string(), kind),
+        (term("forms", "Forms checked"), forms_checked(r)),
+        (term("residual", "Residual"), residual(r)),
         (
-            "Proof",
+            term("proved", "Proof"),
             format!("{} ({:.3} s)", esc(&r.proof), r.proof_seconds),
         ),
-        ("Units", units(r)),
+        (term("units", "Units"), units(r)),
     ];
     if let (Some(step), Some(law)) = (r.law_step, r.law) {
-        rows.push(("Law", format!("at <code>=</code> no. {step}: {}", esc(law))));
+        rows.push((
+            term("law", "Law"),
+            format!("at <code>=</code> no. {step}: {}", esc(law)),
+        ));
     }
     if let Some(off) = r.fails_off_shell {
         rows.push((
-            "Off the motion",
+            term("off-motion", "Off the motion"),
             if off {
                 "fails, as it must"
             } else {
@@ -235,9 +255,9 @@ fn panel(
             .into(),
         ));
     }
-    rows.push(("Code", function_links(functions)));
+    rows.push(("Code".into(), function_links(functions)));
     for p in &r.problems {
-        rows.push(("Problem", esc(p)));
+        rows.push(("Problem".into(), esc(p)));
     }
     let dl: String = rows
         .iter()

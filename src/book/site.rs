@@ -82,6 +82,11 @@ fn resolve(
     if dest.starts_with("https://") || dest.starts_with("http://") {
         return Some(dest.to_string());
     }
+    // The reader's pages (`docs/book/`) link the book's own pages and their own anchors; the
+    // link checker of the tests holds every such target against the book as written.
+    if base == super::reader_pages::FOLDER && (dest.starts_with('#') || is_book_page(dest)) {
+        return Some(dest.to_string());
+    }
     let (path, frag) = match dest.split_once('#') {
         Some((p, f)) => (p, format!("#{f}")),
         None => (dest, String::new()),
@@ -108,6 +113,12 @@ fn resolve(
         .map(|l| format!("#L{}", l.line))
         .unwrap_or_default();
     Some(format!("{}{line}", page_of(&file)))
+}
+
+/// A page of the book by its own name (`errata.html`, `phase2.html#x`), not a repository path.
+fn is_book_page(dest: &str) -> bool {
+    let page = dest.split('#').next().unwrap_or(dest);
+    page.ends_with(".html") && !page.contains('/')
 }
 
 /// Make every file of the book.
@@ -144,8 +155,12 @@ pub fn build(root: &Path, data: &BookData) -> Built {
             nav.push((page_name(f), short_label(&title_of(src))));
         }
     }
+    nav.push(("derivations.html".into(), "Six derivations".into()));
+    nav.push(("animation.html".into(), "The fall, animated".into()));
     nav.push(("methods.html".into(), "Methods".into()));
     nav.push(("figures.html".into(), "Figures".into()));
+    nav.push(("glossary.html".into(), "Glossary".into()));
+    nav.push(("references.html".into(), "References".into()));
     nav.push(("about.html".into(), "About the checks".into()));
     let reg = registry();
     let results: BTreeMap<u32, _> = data
@@ -210,10 +225,10 @@ pub fn build(root: &Path, data: &BookData) -> Built {
     for f in &files {
         let name = page_name(f);
         let body = bodies.remove(f).unwrap_or_default();
-        let body = if f == "ERRATA.md" {
-            generated::errata_page(data, &home, &body, &mut problems)
-        } else {
-            body
+        let body = match f.as_str() {
+            "ERRATA.md" => generated::errata_page(data, &home, &body, &mut problems),
+            "problems.md" => super::problems::fold_solutions(&body),
+            _ => body,
         };
         let title = sources.get(f).map(|s| title_of(s)).unwrap_or_default();
         out.push((
@@ -221,10 +236,63 @@ pub fn build(root: &Path, data: &BookData) -> Built {
             page(&title, 0, &nav, &name, &body).into_bytes(),
         ));
     }
-    let index_body = generated::index_page(data, &home, bodies.get("README.md").map_or("", |s| s));
+    let fall = generated::full_fall(root);
+    let mut reader_problem = String::new();
+    let mut reader_out = Vec::new();
+    for d in super::reader_pages::documents(root, &mut problems) {
+        let link = |dest: &str, text: Option<&str>| {
+            resolve(root, super::reader_pages::FOLDER, dest, text, &code)
+        };
+        let hooks = Hooks {
+            display: &display,
+            link: &link,
+            equation: &equation,
+        };
+        let (body, p) = render(&d.file, &d.source, &hooks);
+        problems.extend(p);
+        match d.page {
+            Some(name) => reader_out.push((name, d.title, body)),
+            None => reader_problem = body,
+        }
+    }
+    let mut opening = String::new();
+    match &fall {
+        Ok((scene, o)) => match super::intro::answer(scene, o) {
+            Some(a) => {
+                opening.push_str(&reader_problem);
+                opening.push_str(&super::intro::answer_html(&a, scene));
+            }
+            None => problems.push(format!("{}: the run did not reach flat", scene.file)),
+        },
+        Err(e) => problems.push(e.clone()),
+    }
+    if opening.is_empty() {
+        opening.push_str(&reader_problem);
+    }
+    opening.push_str(super::intro::NEXT);
+    let index_body = generated::index_page(
+        data,
+        &home,
+        &opening,
+        bodies.get("README.md").map_or("", |s| s),
+    );
     out.push((
         "index.html".into(),
         page("Contents", 0, &nav, "index.html", &index_body).into_bytes(),
+    ));
+    for (name, title, body) in &reader_out {
+        out.push((name.clone(), page(title, 0, &nav, name, body).into_bytes()));
+    }
+    out.push((
+        "derivations.html".into(),
+        page(
+            "Six derivations",
+            0,
+            &nav,
+            "derivations.html",
+            &super::derivations::page(&data.results, &home),
+        )
+        .into_bytes(),
     ));
     out.push((
         "methods.html".into(),
@@ -238,7 +306,9 @@ pub fn build(root: &Path, data: &BookData) -> Built {
         .into_bytes(),
     ));
     let mut figures = generated::figure_files(&dir);
-    figures.extend(generated::fall_figures(root, &mut problems));
+    if let Ok((scene, o)) = &fall {
+        figures.extend(generated::fall_figures(scene, o));
+    }
     out.push((
         "figures.html".into(),
         page(
@@ -246,7 +316,28 @@ pub fn build(root: &Path, data: &BookData) -> Built {
             0,
             &nav,
             "figures.html",
-            &generated::figures_page(&figures),
+            &generated::figures_page(
+                &figures,
+                &[generated::WORK_PRECISION]
+                    .into_iter()
+                    .filter(|(f, _)| root.join("docs").join(f).is_file())
+                    .collect::<Vec<_>>(),
+            ),
+        )
+        .into_bytes(),
+    ));
+    match super::animation::svg(root) {
+        Ok(svg) => out.push((super::animation::FILE.into(), svg.into_bytes())),
+        Err(e) => problems.push(format!("animation.html: {e}")),
+    }
+    out.push((
+        "animation.html".into(),
+        page(
+            "The fall, animated",
+            0,
+            &nav,
+            "animation.html",
+            &super::animation::page(),
         )
         .into_bytes(),
     ));

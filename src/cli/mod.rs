@@ -2,6 +2,7 @@
 //! each with its clap options and a `run` that calls into verify, sim and report and turns
 //! their results into printed output and an exit code. Nothing below this module imports it.
 
+pub mod animate;
 pub mod book;
 pub mod diagram;
 pub mod errata;
@@ -50,6 +51,8 @@ enum Command {
     Book(book::BookArgs),
     /// The force diagram of a torque analysis about a point (A-E or any point) at a state, SVG.
     Diagram(diagram::DiagramArgs),
+    /// The fall of a scene from release to flat as an animated SVG, forces to scale.
+    Animate(animate::AnimateArgs),
 }
 
 /// Parse the process arguments and run the subcommand; with none, verify every equation and
@@ -90,6 +93,7 @@ pub fn run() -> ExitCode {
         }
         Some(Command::Verify(a)) => verify::run(a),
         Some(Command::Diagram(a)) => diagram::run(a),
+        Some(Command::Animate(a)) => animate::run(a),
         Some(Command::Errata(a)) => errata::run(a),
         Some(Command::Simulate(a)) => simulate::run(a),
         Some(Command::WorkPrecision(a)) => work_precision::run(a),

@@ -171,7 +171,7 @@ fn print_report(rep: &SceneReport) {
         println!("ode_solvers-*: the peers (--features peers), handed the exact t_s (no event location): θ there, time error 0 by construction, not on the Pareto front");
     }
     println!(
-        "observed order: least-squares slope of −ln(error) against ln(steps) over at least {} runs spanning at least {} decades of error, each with error in [floor, {:.0e}], at least {} steps in each phase (a full fall has two), steps not tied with another run and growing, error falling (floor: min({:.0e}, {} × the sweep's rounding level); see work_precision_fit). tolerance slope: of ln(error) against ln(tolerance) over the runs above the floor (1: proportional)",
+        "observed order: least-squares slope of −ln(error) against ln(steps) over at least {} runs spanning at least {} decades of error, each with error in [floor, {:.0e}], at least {} steps in each phase (a full fall has two), steps not tied with another run and growing, error falling (floor: min({:.0e}, {} × the sweep's rounding level); see work_precision::fit). tolerance slope: of ln(error) against ln(tolerance) over the runs above the floor (1: proportional)",
         crate::report::work_precision::fit::MIN_RUNS,
         crate::report::work_precision::fit::MIN_DECADES,
         crate::report::work_precision::fit::ASYMPTOTIC,

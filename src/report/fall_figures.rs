@@ -52,10 +52,27 @@ fn wall_force_zero(points: &[(f64, f64)]) -> Option<Mark> {
     })
 }
 
-/// The CSV and SVG files of a scene's trace (what its `[outputs]` ask for).
+/// "from rest at θ0 = 0.300 rad (17.19°)", or with θ̇0 when the start is not at rest.
+pub fn start_words(scene: &Scene) -> String {
+    let at = format!(
+        "θ0 = {:.3} rad ({:.2}°)",
+        scene.theta0,
+        scene.theta0.to_degrees()
+    );
+    if scene.rate0 == 0.0 {
+        format!("from rest at {at}")
+    } else {
+        format!("from {at}, θ̇0 = {} rad/s", scene.rate0)
+    }
+}
+
+/// The CSV and SVG files of a scene's trace (what its `[outputs]` ask for), each title saying
+/// where the fall starts ([`start_words`]).
 pub fn files(scene: &Scene, o: &Outcome) -> Vec<OutFile> {
     let mut v = Vec::new();
     let Some(trace) = &o.trace else { return v };
+    // Every title says where the fall starts: the figures differ by θ0 (and θ̇0) alone.
+    let start = start_words(scene);
     let series = |name: &str, f: &dyn Fn(&Sample) -> Option<(f64, f64)>| Series {
         name: name.into(),
         points: trace.iter().filter_map(f).collect(),
@@ -64,7 +81,7 @@ pub fn files(scene: &Scene, o: &Outcome) -> Vec<OutFile> {
         v.push(OutFile::text("trajectory.csv", csv_rows(trace, false)));
         let chart = Chart {
             spec: PlotSpec {
-                title: "The fall: θ and θ̇ against t".into(),
+                title: format!("The fall: θ and θ̇ against t, {start}"),
                 x_label: "t (s)".into(),
                 y_label: "θ (rad), θ̇ (rad/s)".into(),
                 ..Default::default()
@@ -93,7 +110,7 @@ pub fn files(scene: &Scene, o: &Outcome) -> Vec<OutFile> {
         t_marks.extend(wall_force_zero(&wall_phase(|p| p.t)));
         let t_chart = Chart {
             spec: PlotSpec {
-                title: "Contact forces against t".into(),
+                title: format!("Contact forces against t, {start}"),
                 x_label: "t (s)".into(),
                 y_label: "force (N)".into(),
                 hlines: vec![0.0],
@@ -115,7 +132,7 @@ pub fn files(scene: &Scene, o: &Outcome) -> Vec<OutFile> {
         th_marks.extend(wall_force_zero(&wall_phase(|p| p.theta)));
         let th_chart = Chart {
             spec: PlotSpec {
-                title: "Contact forces against θ".into(),
+                title: format!("Contact forces against θ, {start}"),
                 x_label: "θ (rad)".into(),
                 y_label: "force (N)".into(),
                 hlines: vec![0.0],

@@ -1,5 +1,6 @@
 //! Reports: the work-precision sweep, output files written all-or-nothing, SVG plots.
 
+pub mod animation;
 pub mod axis;
 pub mod campaign;
 pub mod chart;

@@ -41,13 +41,15 @@ pub fn slide(ladder: &Ladder, flat: &FlatState, t_end: f64) -> Slide {
     }
 }
 
-/// A sample of the trace while lying flat at time `t` (θ = π/2, θ̇ = 0, phase 3).
-pub fn lying_flat_sample(t: f64) -> Sample {
+/// A sample of the trace while lying flat at time `t` (θ = π/2, θ̇ = 0, phase 3), the centre
+/// at `centre_x`.
+pub fn lying_flat_sample(t: f64, centre_x: f64) -> Sample {
     Sample {
         phase: 3,
         t,
         theta: FRAC_PI_2,
         rate: 0.0,
+        centre_x,
         forces: None,
     }
 }

@@ -48,6 +48,9 @@ pub struct Sample {
     pub theta: f64,
     /// θ̇, rad/s.
     pub rate: f64,
+    /// X, the abscissa of the centre of mass, m: l sin θ (7) on the wall, the integrated X of
+    /// the floor phase after, the slide's X lying flat.
+    pub centre_x: f64,
     /// (F_w, F_f), N, when the forces were asked for.
     pub forces: Option<(f64, f64)>,
 }

@@ -104,6 +104,7 @@ mod tests {
             t,
             theta: t,
             rate: 0.0,
+            centre_x: 0.0,
             forces: None,
         }
     }

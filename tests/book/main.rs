@@ -7,4 +7,5 @@ mod docs;
 mod errata_doc;
 mod mathml;
 mod pages;
+mod problems;
 mod units_doc;

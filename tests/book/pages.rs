@@ -1,4 +1,4 @@
-//! `ladder book`: every display (1)-(90) and (P1)-(P5) is in the book as block MathML with the
+//! `ladder book`: every display (1)-(90), (P1)-(P5) and the problems' (P6)-(P13) is in the book as block MathML with the
 //! status, proof verdict and units verdict (of the print) that `ladder verify --json` gives, no
 //! raw LaTeX is left, every link and image resolves inside the book, and the errata page lists
 //! exactly the errata. The checker (tests/book_check) is shown to catch a planted wrong status,
@@ -47,7 +47,11 @@ fn book() -> &'static (PathBuf, serde_json::Value) {
 fn every_display_is_mathml_with_the_status_of_ladder_verify_and_every_link_resolves() {
     let (dir, json) = book();
     let expect = crate::check::expected(json);
-    assert_eq!(expect.displays.len(), 95, "(1)-(90) and (P1)-(P5)");
+    assert_eq!(
+        expect.displays.len(),
+        103,
+        "(1)-(90), (P1)-(P5) and the problems' (P6)-(P13)"
+    );
     assert_eq!(expect.errata.len(), 5);
     let problems = crate::check::check(dir, &expect);
     assert!(problems.is_empty(), "{}", problems.join("\n"));

@@ -1,5 +1,6 @@
 //! The `ladder` command as a user runs it: exit codes, stderr, files (`cargo test --test cli`).
 
+mod animate;
 mod broken_pipe;
 #[path = "../common/mod.rs"]
 mod common;

@@ -99,3 +99,27 @@ fn the_trajectory_is_drawn_with_float_coordinates() {
         &pts[..80]
     );
 }
+
+/// Each chart of a fall says where it starts (issue 39: "the fall plots do not say θ0"): the
+/// scene's θ0 = 0.3 rad, from rest; a chart of another start says its own θ0.
+#[test]
+fn every_fall_chart_says_its_theta0() {
+    for name in ["trajectory.svg", "forces_t.svg", "forces_theta.svg"] {
+        let (chart, _) = chart_of(name);
+        assert!(
+            chart
+                .spec
+                .title
+                .contains("from rest at θ0 = 0.300 rad (17.19°)"),
+            "{name}: {}",
+            chart.spec.title
+        );
+    }
+    let mut sc = scene::load(Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/full-fall.toml"
+    )))
+    .unwrap();
+    sc.theta0 = 0.5;
+    assert!(sliding_ladder::report::fall_figures::start_words(&sc).contains("θ0 = 0.500 rad"));
+}

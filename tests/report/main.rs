@@ -1,6 +1,7 @@
 //! The reports (`sliding_ladder::report`): work-precision, the reliability campaign, figures,
 //! force diagrams and long runs (`cargo test --test report`).
 
+mod animation;
 mod campaign;
 mod diagram;
 mod fall_figures;

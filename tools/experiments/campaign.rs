@@ -5,7 +5,7 @@
 //! end asked for: the command exits 1) and results outside their stated tolerance
 //! (`sliding_ladder::report::campaign::judge`). Refusals (exit 2, a plan-time error naming the
 //! field) are requests the tool says up front it cannot meet: counted apart, by field.
-//! Each scene runs under a watchdog (`campaign_judge::Watchdog`): one still running after the
+//! Each scene runs under a watchdog (`campaign::judge::Watchdog`): one still running after the
 //! budget is counted over budget and named on stderr at once, and the campaign goes on (a hang
 //! no step count sees used to stall a whole run: seed 1, scenes 800,000-899,999).
 //!
@@ -183,7 +183,7 @@ fn judged(text: &str, cap: (f64, f64), only: Option<&str>) -> (Verdict, f64) {
     (v, t.elapsed().as_secs_f64())
 }
 
-/// A worker's watchdog (`campaign_judge::Watchdog`): scenes run on a thread of their own.
+/// A worker's watchdog (`campaign::judge::Watchdog`): scenes run on a thread of their own.
 fn watchdog(a: &Args) -> Watchdog<String, (Verdict, f64)> {
     let (cap, only) = ((a.work_above, a.work_cap), a.contact.clone());
     Watchdog::new(move |text: String| judged(&text, cap, only.as_deref()))

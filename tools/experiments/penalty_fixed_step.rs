@@ -3,7 +3,7 @@
 //! κ = 1e6..1e11 and steps at h ω = 0.02..0.2 (ω = 2√κ, the plan allows up to 0.2). The
 //! reference is radau5 at tolerance 1e-13 from the same pre-loaded start; the miss is printed
 //! over h^p (p the method's order) and over the confirmation bound's integration terms
-//! (`penalty_confirm::separation_bound` without the model term, for both runs), which a miss
+//! (`penalty::confirm::separation_bound` without the model term, for both runs), which a miss
 //! must stay under.
 //!
 //! Before F14's fix Verlet fed both half kicks the mid-step velocity and missed by up to

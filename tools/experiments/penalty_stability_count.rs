@@ -3,7 +3,7 @@
 //! c ω t_s of them (ω = 2√κ + 4γ per √(l/g), t_s the separation time). This prints the
 //! measured steps / (ω t_s) for dopri5 and dop853 from θ0 = 0.0106 and 0.3 (θ̇0 = 4e-5) at
 //! τ = 1e-4 and 1e-6, κ = 1e6..1e11, γ = 0 and 10, and each method's largest, against which
-//! the constants c in `scene_work` are set (about 11 s in release).
+//! the constants c in `scene::work` are set (about 11 s in release).
 //!
 //! Run: `cargo run --release --example penalty_stability_count`.
 

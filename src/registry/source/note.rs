@@ -262,7 +262,17 @@ mod tests {
     fn the_embedded_note_reads_without_a_problem() {
         let note = Note::embedded();
         assert!(note.errors.is_empty(), "{:?}", note.errors);
-        assert!(note.sections.iter().all(|s| !s.checks.is_empty()));
+        // Every display of the note's chapters names its Rust checks; the problems' answers
+        // (equations/problems.md, issue 39) are checked from their markdown alone, by design.
+        assert!(note
+            .sections
+            .iter()
+            .filter(|s| !s.file.ends_with("/problems.md"))
+            .all(|s| !s.checks.is_empty()));
+        assert!(note
+            .sections
+            .iter()
+            .any(|s| s.file.ends_with("/problems.md")));
     }
 
     /// The misprints found from each erratum's two lines are the forms that were listed by hand

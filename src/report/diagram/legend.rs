@@ -90,6 +90,11 @@ pub(in crate::report) fn legend(out: &mut String, d: &Diagram, left: f64) {
         if let Some(terms) = split {
             put(out, &by_components(d, &terms), colour, 15, 28.0);
         }
+        if a.symbol == format!("F_{}", d.point) {
+            if let Some(words) = super::marks::acceleration_words(d) {
+                put(out, &format!("    {words}"), colour, 14, 24.0);
+            }
+        }
     }
     put(
         out,

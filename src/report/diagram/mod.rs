@@ -11,6 +11,7 @@
 //! (or, off the motion, failing). [`super::diagram::svg`] draws it.
 
 pub(super) mod legend;
+pub mod marks;
 pub mod svg;
 
 use crate::ladder::analysis::{torque_equation, AngularMomentum, ReferencePoint};
@@ -120,7 +121,8 @@ pub fn arrow_scale(d: &Diagram) -> f64 {
     }
 }
 
-/// The drawing's window in metres, (x0, x1, y0, y1): the points, P and every arrow, with a
+/// The drawing's window in metres, (x0, x1, y0, y1): the points, P, every arrow and the
+/// acceleration of P, with a
 /// margin for the labels (more on the left, where the point labels and the wall's hatching go).
 pub fn window(d: &Diagram) -> (f64, f64, f64, f64) {
     let s = arrow_scale(d);
@@ -128,6 +130,10 @@ pub fn window(d: &Diagram) -> (f64, f64, f64, f64) {
     for a in &d.arrows {
         pts.push(a.at);
         pts.push((a.at.0 + s * a.force.0, a.at.1 + s * a.force.1));
+        // The acceleration of P is drawn at P, m a_P long: the coordinate force turned round.
+        if a.symbol == format!("F_{}", d.point) {
+            pts.push((d.p.0 - s * a.force.0, d.p.1 - s * a.force.1));
+        }
     }
     pts.push(d.p);
     let (mut x0, mut x1, mut y0, mut y1) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);

@@ -57,7 +57,7 @@ pub fn scale_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
     let penalty = |sc: &mut Scene| {
         let l = sc.ladder;
         // κ = k l/(m g) = 1e4, formed as (1e4 m)(g/l) to stay within range; κ tol = 1e-9
-        // keeps an explicit method accurate (see `stability_stiff`).
+        // keeps an explicit method accurate (see `stability::stiff`).
         sc.contact = ContactModel::Penalty {
             stiffness: 1e4 * l.mass * (l.gravity / l.half_length),
             damping: 0.0,

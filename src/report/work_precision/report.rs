@@ -105,7 +105,7 @@ pub fn report(
         let fixed = measure(&sc, &["taylor"], once, |_| {})?;
         taylor_fixed.push(order_row(&fixed, "taylor", Some(p)));
     }
-    // The front of this crate's runs: the peers were handed t_s (see `work_precision_peers`).
+    // The front of this crate's runs: the peers were handed t_s (see `work_precision::peers`).
     let ours: Vec<Run> = runs
         .iter()
         .filter(|r| PEERS_OF.iter().all(|(p, _)| r.method != *p))
@@ -192,7 +192,7 @@ pub fn panel(rep: &SceneReport) -> (Chart, Vec<Series>) {
     } else {
         "θₛ and tₛ"
     };
-    // The peers have no events, so a scene that runs to flat has none (`work_precision_peers`).
+    // The peers have no events, so a scene that runs to flat has none (`work_precision::peers`).
     let no_peers = if rep.to_flat && cfg!(feature = "peers") {
         " (no peers: no floor phase)"
     } else {

@@ -249,12 +249,13 @@ impl Beyond {
         b.flat = Some(f);
         // A run to a later time goes on lying flat (module docs of `super::impact`).
         if let (End::Time(_), true) = (scene.end, end2.t < t_end) {
-            b.slide = Some(impact::slide(&scene.ladder, &f, t_end));
+            let s = impact::slide(&scene.ladder, &f, t_end);
             if let Some(tr) = trace {
-                for t in [f.time, t_end] {
-                    tr.offer(impact::lying_flat_sample(t));
+                for (t, x) in [(f.time, f.centre_x), (t_end, s.centre_x_end)] {
+                    tr.offer(impact::lying_flat_sample(t, x));
                 }
             }
+            b.slide = Some(s);
             b.last = (t_end, end2.y[0], 0.0);
         }
         Ok((b, floor))

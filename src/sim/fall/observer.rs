@@ -36,6 +36,7 @@ impl TraceObserver<'_> {
                 t,
                 theta,
                 rate,
+                centre_x,
                 forces: None,
             });
         }
@@ -60,7 +61,8 @@ impl Observer<2> for TraceObserver<'_> {
         }
     }
     fn observe(&mut self, t: f64, y: &[f64; 2]) {
-        self.record(t, y[0], y[1], 0.0);
+        // On the wall the centre is at x_cm = l sin θ (7).
+        self.record(t, y[0], y[1], self.ladder.half_length * y[0].sin());
     }
     fn wants_steps(&self) -> bool {
         self.impulse.is_some()

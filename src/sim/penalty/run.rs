@@ -146,7 +146,7 @@ pub fn separation(
     let first = attempt(contact, law, (theta0, rate0), method, control, max_steps);
     // Not believed (a zero outside the bound, or the foot lifting, which the rigid ladder's
     // floor force ≥ m g/4 rules out for κ ≥ 5): tried once more at τ/10 (the campaign's F11,
-    // F12; `penalty_confirm::retry_control`), the work of both runs counted.
+    // F12; `penalty::confirm::retry_control`), the work of both runs counted.
     let (Some(retry), true) = (retry_control(control), first.1) else {
         return first.0;
     };

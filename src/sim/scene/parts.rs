@@ -1,6 +1,6 @@
 //! The parts of a scene below its parsing ([`crate::sim::scene`]): where a run ends, the contact
-//! model, the limits, and the raw TOML tables. `scene_checks`,
-//! `scene_shape` and [`crate::sim::scene::output`] build on these, and `scene` on all of them.
+//! model, the limits, and the raw TOML tables. `scene::checks`,
+//! `scene::shape` and [`crate::sim::scene::output`] build on these, and `scene` on all of them.
 
 use serde::Deserialize;
 use toml::Spanned;
@@ -94,5 +94,5 @@ pub const MAX_STEP: f64 = 1.0;
 /// Longest end time accepted, in units of √(l/g).
 pub const MAX_END_TIME: f64 = 1e4;
 /// Hard limit on the steps of one phase; a scene that would need more is refused up front
-/// (`scene_work`).
+/// (`scene::work`).
 pub const MAX_STEPS: u64 = 10_000_000;

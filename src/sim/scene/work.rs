@@ -67,7 +67,7 @@
 //!   estimate rather than a region: hence the margin. Refused below
 //!   F_w0/τ = [`RESOLVED_WALL_FORCE`] = 40, a margin of 3.3, where a zero at the start would
 //!   lie outside the stated bound of the rigid separation angle θ_r
-//!   (`penalty_confirm::separation_bound` with N = 1 step). Near π/2, or pushed to the wall's
+//!   (`penalty::confirm::separation_bound` with N = 1 step). Near π/2, or pushed to the wall's
 //!   limit, F_w0 is small because the separation is near (θ_r ≈ θ0): an early zero is then
 //!   within what the tolerance promised (1,378 such runs with F_w0/τ < 20, all within the
 //!   bound), and those are not refused. radau5 is not held: it damps the vibration in every
@@ -147,7 +147,7 @@ pub fn wall_force_rate(theta: f64, rate: f64) -> f64 {
 
 /// The angle (rad) where a penalty run's integration starts from (θ0, θ̇0) (dimensionless) and
 /// the rigid wall force (m g) there: at the lead-in's hand-over for a tiny start
-/// (`sim::lead_in`), as `penalty_run::separation` does.
+/// (`sim::lead_in`), as `penalty::run::separation` does.
 pub fn starting_wall_force(theta0: f64, rate0: f64) -> (f64, f64) {
     let (_, theta, rate) = linear_lead_in(OMEGA2, theta0, rate0).unwrap_or((0.0, theta0, rate0));
     (theta, rigid_forces(theta, rate).0)

@@ -50,6 +50,29 @@ fn lines(svg: &str, class: &str) -> Vec<Line> {
         .collect()
 }
 
+/// The `data-offset` (px) of the arm labelled `symbol` that starts at `from`.
+fn offset(svg: &str, symbol: &str, from: (f64, f64)) -> (f64, f64) {
+    for el in svg.split("<line").skip(1) {
+        let get = |n: &str| {
+            el.split(&format!(" {n}=\""))
+                .nth(1)
+                .and_then(|r| r.split('"').next())
+                .map(str::to_string)
+        };
+        let x1: Option<f64> = get("x1").and_then(|v| v.parse().ok());
+        let y1: Option<f64> = get("y1").and_then(|v| v.parse().ok());
+        if get("class").as_deref() == Some("arm")
+            && get("data-symbol").as_deref() == Some(symbol)
+            && x1.zip(y1).is_some_and(|q| same(q, from))
+        {
+            let o = get("data-offset").expect("an arm says its offset");
+            let (a, b) = o.split_once(',').expect("x,y");
+            return (a.parse().unwrap(), b.parse().unwrap());
+        }
+    }
+    (0.0, 0.0)
+}
+
 /// Two points in px agree to the SVG's two decimals.
 fn same(p: (f64, f64), q: (f64, f64)) -> bool {
     (p.0 - q.0).abs() <= 0.006 && (p.1 - q.1).abs() <= 0.006
@@ -163,13 +186,21 @@ fn each_lever_arm_is_drawn_from_p_at_right_angles_to_its_force_with_its_length()
         let px_per_m = to_px(&d, (x0 + 1.0, y0)).0 - to_px(&d, (x0, y1)).0;
         for a in d.arrows.iter().filter(|a| a.arm > 1e-12) {
             // Some dashed arm from P is perpendicular to this force and as long as its arm.
-            let found = arms.iter().any(|(_, from, to)| {
+            // An arm drawn beside its true place (a dimension line) says by how much: the
+            // shift is at right angles to the arm and at most 3 levels of 11 px.
+            let found = arms.iter().any(|(sym, from, to)| {
                 let v = (to.0 - from.0, to.1 - from.1);
                 let len = v.0.hypot(v.1);
                 // The force in px: y flips.
                 let (fx, fy) = (a.force.0, -a.force.1);
                 let cos = (v.0 * fx + v.1 * fy) / (len * fx.hypot(fy));
-                same(*from, p) && cos.abs() < 1e-4 && (len / px_per_m - a.arm).abs() < 1e-4
+                let o = offset(&svg, sym, *from);
+                let along = (o.0 * v.0 + o.1 * v.1).abs() / len;
+                same((from.0 - o.0, from.1 - o.1), p)
+                    && along < 0.01
+                    && o.0.hypot(o.1) <= 33.01
+                    && cos.abs() < 1e-4
+                    && (len / px_per_m - a.arm).abs() < 1e-4
             });
             assert!(
                 found,

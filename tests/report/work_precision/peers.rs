@@ -1,5 +1,5 @@
 //! The peers in work-precision (issue 12, item 3; `cargo test --features peers --test
-//! work_precision_peers`): ode_solvers' DOP853 and Dopri5 are measured in the same run as this
+//! work_precision::peers`): ode_solvers' DOP853 and Dopri5 are measured in the same run as this
 //! crate's methods, their error falls with the tolerance, and the figure draws them dashed in
 //! their partner's colour. Without the feature the peers are absent (tested in
 //! `work_precision_figure.rs`).

@@ -28,7 +28,7 @@ const ONCE: Timing = Timing {
     max: 1,
 };
 
-/// The criterion on its scenes, with the fitting rule of `work_precision_fit` (at least
+/// The criterion on its scenes, with the fitting rule of `work_precision::fit` (at least
 /// five runs of at least 10 steps in every phase above the sweep's rounding floor, spanning two
 /// decades of error, fitted against steps). Every order reported is within 1 of 8, and one is
 /// reported where the range holds five runs: upright with a push and θ0 = 0.1 from rest. From

@@ -208,7 +208,7 @@ fn a_trace_samples_each_step_at_its_fifths() {
 }
 
 /// The wall impulse's quadrature (five-point Gauss-Legendre on pieces of each wall step,
-/// `fall_observer`) evaluates the wall force at least five times a wall step, and those
+/// `fall::observer`) evaluates the wall force at least five times a wall step, and those
 /// evaluations are counted: a fall to flat asking for the momentum balance counts at least
 /// 5 N_wall more than the same fall without it (the floor phase has no wall force to
 /// integrate). Mutation testing: the wall phase's count `+=` → `*=` (of a count that starts

@@ -321,7 +321,7 @@ fn a_push_near_the_limit_is_held_to_the_amplified_bound() {
 
 /// A tiny start's penalty run first follows the linearised motion to θ ≈ 1e-9 in closed form
 /// (`extreme::linear_lead_in`), and its separation time counts that lead-in (mutation testing:
-/// `time += lead` → `-=` in `penalty_run::attempt` went unseen, no test looked at a penalty
+/// `time += lead` → `-=` in `penalty::run::attempt` went unseen, no test looked at a penalty
 /// run's time). Reference: the rigid closed form (`sim::exact::PhaseOne`), independent of the
 /// penalty code. Error model, in units of √(l/g):
 /// * the model: the springs shift the motion after the lead-in by O(1/κ) per unit time; the
@@ -377,7 +377,7 @@ fn a_tiny_starts_penalty_separation_time_counts_its_lead_in() {
 /// 25 steps in, near θ0 = 0.3, some 0.57 rad before the rigid θ_r = 0.87. The bound is
 /// 4/(κ sin θ_r) + 10 N (h² + u) = 0.026 rad: refused. With h^p for the step's local error it
 /// would be 10 N h = 2.5 rad and the zero believed, a wrong answer with exit 0 (mutation
-/// testing: `p + 1` → `p * 1` in `penalty_run::attempt` went unseen, every fixed-step penalty
+/// testing: `p + 1` → `p * 1` in `penalty::run::attempt` went unseen, every fixed-step penalty
 /// test either resolved the springs or failed for another reason). The same integration
 /// without the check reports that zero.
 #[test]

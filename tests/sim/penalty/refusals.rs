@@ -52,7 +52,7 @@ fn run(method: &str, contact: Contact, theta0: f64, rate0: f64, tol: f64, cap: u
 
 /// dopri5 from θ0 = 1e-20 (F_w0 = 7e-10 m g at the lead-in's hand-over): at τ = 100 F_w0 the
 /// wall force crosses zero within the first steps, far from the rigid separation, and again
-/// at the second try's τ/10 = 10 F_w0 (`penalty_confirm::retry_control`; at τ = 10 F_w0 the
+/// at the second try's τ/10 = 10 F_w0 (`penalty::confirm::retry_control`; at τ = 10 F_w0 the
 /// second try, at F_w0, resolves κ = 100); at the plan's limit τ = F_w0/40 each run separates
 /// within the bound.
 #[test]
@@ -227,7 +227,7 @@ fn soft_springs_lift_the_foot_only_well_below_the_least_stiffness() {
     assert!(stiffest < SOFTEST_CONTACT / 2.0, "{stiffest}");
 }
 
-/// `penalty_run::separation` itself refuses a stiffness that is not a positive finite number
+/// `penalty::run::separation` itself refuses a stiffness that is not a positive finite number
 /// (NaN, ∞, 0, negative) and the equilibrium θ0 = θ̇0 = 0, before any step, as a start error
 /// naming the cause; the same start with a usable κ runs to its separation. (Mutation
 /// testing: the stiffness guard's `&&` → `||` went unseen: scenes refuse such κ earlier, so

@@ -39,7 +39,7 @@ fn the_slow_start_s_rates_are_the_derivatives_of_its_forces() {
     }
 }
 
-/// `scene_work::wall_force_rate` is the time derivative of the rigid wall force along (5) at
+/// `scene::work::wall_force_rate` is the time derivative of the rigid wall force along (5) at
 /// any (θ, θ̇), not only at θ = 0 where the penalty refusal asks for it (there θ̈ = 0 and the
 /// force's θ̇-derivative −2 θ̇ sin θ is 0, so mutation testing's Ω² + sin θ for Ω² sin θ in the
 /// dual number's θ̈ went unseen). Same reference and error model as above.

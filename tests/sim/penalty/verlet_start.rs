@@ -12,7 +12,7 @@
 //! implicit method; the model's own shift O(1/κ) is in both, so it cancels).
 //!
 //! Error model: the two runs differ by their integration errors, each bounded as the
-//! confirmation bound bounds it (`penalty_confirm::separation_bound` without its model term,
+//! confirmation bound bounds it (`penalty::confirm::separation_bound` without its model term,
 //! κ = ∞): 10 N (τ + u) max(1, 1/((9/4) sin²θ_r)) + 10 u, with τ = h³ for Verlet's N steps
 //! and τ = 1e-13 for radau5's. The mid-step pairing, written out below as the method it was,
 //! must break that bound from the same starts: that is the check failing on the defect.

@@ -1,7 +1,7 @@
 //! Every kind of bad scene, each with its exact message (issue 11, item 4): one line
 //! `file:line: [section] key: what is wrong; what is allowed`. The expected lines are written
 //! here by hand from the scene text (line numbers counted in `BASE`); the command-line side
-//! (exit 2, nothing on stdout or in `--out`) is held in `cli_scene_errors.rs`.
+//! (exit 2, nothing on stdout or in `--out`) is held in `tests/cli/simulate/scene_errors.rs`.
 
 use crate::common::{with, BASE, PENALTY};
 use sliding_ladder::sim::scene::output::Output;

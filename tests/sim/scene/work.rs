@@ -268,7 +268,7 @@ fn an_explicit_method_looser_than_the_starting_wall_force_is_refused() {
 /// it. dopri5 at τ = 1e-4 from θ̇0 = 1e-5 (Ḟ_w0/τ = 0.075) is refused naming the tolerance
 /// and the largest one, Ḟ_w0/75; that one is accepted and runs within the judge's bound for
 /// dopri5, as Ḟ_w0/3500 for dop853; the refused scene run anyway at τ = 1e-3 ends at a
-/// spurious zero (and so does its second try at 1e-4, `penalty_confirm::retry_control`);
+/// spurious zero (and so does its second try at 1e-4, `penalty::confirm::retry_control`);
 /// radau5 is accepted.
 #[test]
 fn a_push_from_zero_looser_than_the_wall_force_rate_is_refused() {
@@ -536,7 +536,7 @@ fn a_phase_of_exactly_the_most_steps_allowed_is_accepted() {
 /// A penalty scene's fixed step is converted to the model's time unit √(l/g) (h' = h/√(l/g)):
 /// at g = 4 (unit ½) the run takes the steps the plan estimates, t_s/h' up to the model's
 /// shift of the separation, 4/(κ sin θ_r) rad (`sim::penalty::confirm`), over θ̇_r, in steps
-/// (mutation testing: `h / unit` → `h · unit` in `penalty_scene::run` went unseen, every
+/// (mutation testing: `h / unit` → `h · unit` in `fall::penalty::run` went unseen, every
 /// fixed-step penalty test had l = g = 1; it takes four times the steps here).
 #[test]
 fn a_penalty_scenes_fixed_step_is_taken_in_the_models_time_unit() {
@@ -596,7 +596,7 @@ fn an_explicit_methods_step_count_is_proportional_to_the_span() {
 /// of 0.5 rad/s is 0.25 per √(g/l), and the separation lands where footnote 4 with the push
 /// puts it, cos θ_r = (2/3) cos θ0 + 4 l θ̇0²/(9 g), within the run's stated bound
 /// (`sim::penalty::confirm`: 4/(κ sin θ_r) + 10 N (τ + u) + 10 u). Mutation testing:
-/// `θ̇0 · unit` → `θ̇0 / unit` in `penalty_scene::run`, and the separation rate's way back to
+/// `θ̇0 · unit` → `θ̇0 / unit` in `fall::penalty::run`, and the separation rate's way back to
 /// SI, `θ̇_s / unit` → `θ̇_s · unit` and `θ̇_s % unit`, went unseen (l = g = 1 or no push in
 /// every penalty test); it pushes four times as fast, θ̇' = 1 > Ω √(cos θ0) = 0.85, so the
 /// wall would have to pull at once and the ladder is reported leaving at θ0, 0.54 rad early.

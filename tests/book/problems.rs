@@ -1,0 +1,163 @@
+//! The problems page (`equations/problems.md`, issue 39): at least eight exercises, each answer
+//! a numbered display that `ladder verify` checks like the note's own (verified, proved, units
+//! consistent; an answer that holds only on the motion fails off it), each with its worked
+//! solution folded in a `<details>` on the book's page. A wrong answer in the problems file
+//! (a copy, read with `--equations`) is flagged: `failed`, exit 1, the display named with its
+//! file and line, and `ladder book` exits 1 too.
+//!
+//! The answers' references are the three-particle model of the harness; the closed forms in the
+//! file were derived by hand from (5), (8), (10) and checked once with sympy (not by the crate).
+
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn ladder(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(args)
+        .output()
+        .expect("ladder runs")
+}
+
+/// The problems' answers, as `ladder verify` labels them.
+const ANSWERS: [&str; 8] = [
+    "(P6)", "(P7)", "(P8)", "(P9)", "(P10)", "(P11)", "(P12)", "(P13)",
+];
+
+/// A copy of `equations/` (with its figures) in a fresh temporary folder.
+fn copy_of_equations(tag: &str) -> PathBuf {
+    fn copy(from: &Path, to: &Path) {
+        std::fs::create_dir_all(to).expect("temp dir");
+        for e in std::fs::read_dir(from).expect("readable").flatten() {
+            let (src, dst) = (e.path(), to.join(e.file_name()));
+            if src.is_dir() {
+                copy(&src, &dst);
+            } else {
+                std::fs::copy(&src, &dst).expect("copy");
+            }
+        }
+    }
+    let dir = std::env::temp_dir().join(format!("ladder-problems-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    copy(&sliding_ladder::docs::default_dir(), &dir);
+    dir
+}
+
+fn row<'a>(v: &'a Value, label: &str) -> &'a Value {
+    v["extensions"]
+        .as_array()
+        .and_then(|a| a.iter().find(|r| r["label"] == label))
+        .unwrap_or_else(|| panic!("no row {label}"))
+}
+
+#[test]
+fn every_answer_is_checked_like_the_notes_displays_and_its_solution_is_folded() {
+    let out = ladder(&["verify", "--cases", "200", "--json"]);
+    let v: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    for label in ANSWERS {
+        let r = row(&v, label);
+        assert_eq!(r["status"], "verified", "{label}: {r}");
+        assert_eq!(r["proof"], "proved", "{label}: {r}");
+        assert!(
+            r["units"] == "consistent" || r["units"] == "dimensionless",
+            "{label}: {r}"
+        );
+        assert_eq!(r["exact_failures"], 0, "{label}");
+        assert!(
+            r["doc"]
+                .as_str()
+                .is_some_and(|d| d.starts_with("equations/problems.md:")),
+            "{label}: {r}"
+        );
+        if r["kind"] == "on-shell" {
+            assert_eq!(
+                r["off_motion"], "fails",
+                "{label}: holds off the motion: {r}"
+            );
+        }
+    }
+    // The page: every answer typeset with its status, every solution folded.
+    let book = std::env::temp_dir().join(format!("ladder-problems-book-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&book);
+    let b = ladder(&[
+        "book",
+        "--cases",
+        "50",
+        "--out",
+        book.to_str().expect("utf-8"),
+    ]);
+    assert!(b.status.success(), "{}", String::from_utf8_lossy(&b.stderr));
+    let page = std::fs::read_to_string(book.join("problems.html")).expect("problems.html");
+    let _ = std::fs::remove_dir_all(&book);
+    let problems = page.matches("<h2>Problem ").count();
+    let folded = page
+        .matches("<details class=\"solution\"><summary>Worked solution</summary>")
+        .count();
+    assert!(problems >= 8, "{problems} problems");
+    assert_eq!(folded, problems, "each problem's solution folded");
+    for n in 1006..=1013 {
+        assert!(
+            page.contains(&format!("data-number=\"{n}\" data-status=\"verified\"")),
+            "answer {n} not verified on the page"
+        );
+    }
+    assert!(!page.contains("<h4>Solution</h4>"), "an unfolded solution");
+}
+
+/// The wall force of Problem 4 with 3 cos θ − 1 for 3 cos θ − 2 (it would leave the wall at
+/// cos θ = 1/3), and the share of Problem 3 as T/3: both flagged, with file and line.
+#[test]
+fn a_wrong_answer_in_the_problems_file_is_flagged() {
+    let dir = copy_of_equations("wrong");
+    let file = dir.join("problems.md");
+    let good = std::fs::read_to_string(&file).expect("problems.md");
+    // (P9) comes before (P13), which ends the same way: only the first is planted.
+    let bad = good
+        .replacen(
+            r"\sin\theta(3\cos\theta - 2)
+$$",
+            r"\sin\theta(3\cos\theta - 1)
+$$",
+            1,
+        )
+        .replace(r"= \frac{T}{4}", r"= \frac{T}{3}");
+    assert_eq!(
+        bad.matches("3\\cos\\theta - 1").count(),
+        1,
+        "the plant of (P9)"
+    );
+    assert!(bad.contains(r"\frac{T}{3}"), "the plant of (P8)");
+    std::fs::write(&file, bad).expect("write");
+    let d = dir.to_str().expect("utf-8");
+    let out = ladder(&["verify", "--equations", d, "--cases", "100", "--json"]);
+    assert_eq!(out.status.code(), Some(1));
+    let v: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    for label in ["(P8)", "(P9)"] {
+        assert_eq!(row(&v, label)["status"], "failed", "{label}");
+    }
+    for label in ["(P6)", "(P7)", "(P10)", "(P11)", "(P12)", "(P13)"] {
+        assert_eq!(row(&v, label)["status"], "verified", "{label}");
+    }
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("(P8)") && err.contains("(P9)") && err.contains("problems.md:"),
+        "{err}"
+    );
+    let book = dir.with_extension("book");
+    let b = ladder(&[
+        "book",
+        "--equations",
+        d,
+        "--cases",
+        "50",
+        "--out",
+        book.to_str().expect("utf-8"),
+    ]);
+    assert_eq!(
+        b.status.code(),
+        Some(1),
+        "ladder book must flag the wrong answer"
+    );
+    let _ = std::fs::remove_dir_all(&book);
+    let _ = std::fs::remove_dir_all(&dir);
+}
