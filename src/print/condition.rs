@@ -126,16 +126,19 @@ pub fn force_free<S: Scalar>(sys: &mut System<S>) {
 /// force is a central force m_i μ_i x_i plus a pair force m_i λ_i (x_i − x_j) along the line to
 /// the next particle j (and from the last back to the first), equal and opposite on the two. A
 /// pair's two torques, −m_i λ_i x_i × x_j and −m_i λ_i x_j × x_i, cancel; a central force has
-/// none. μ_i = a_ix / x_ix and λ_i = a_iy / x_iy (rates T⁻² from the draw, so the dimensions hold
-/// and the forces stay polynomial over monomials: the symbolic proof runs on the same states).
+/// none. μ_i = a_ix / s_i and λ_i = a_iy / s_i with s_i = x_ix + x_iy + x_iz (rates T⁻² from the
+/// draw, so the dimensions hold; the symbolic proof runs on the same states).
 /// For two particles these are all the torque-free forces (they must lie in the plane of x_1,
 /// x_2); one particle can only have a central force.
 pub fn torque_free<S: Scalar>(sys: &mut System<S>) {
     let n = sys.particles.len();
     let x: Vec<Vec3<S>> = sys.particles.iter().map(|q| q.x.clone()).collect();
+    // A rate T⁻² from the draw: a component of a_i over the sum of x_i's components (a linear
+    // form, so the symbolic proof meets only linear denominators; nonzero on the ladder's
+    // particles, which sit on the axes).
     let rate = |q: &crate::system::Particle<S>, k: usize| {
-        let (a, x) = (q.a.components(), q.x.components());
-        a[k].clone() / x[k].clone()
+        let a = q.a.components();
+        a[k].clone() / (q.x.x.clone() + q.x.y.clone() + q.x.z.clone())
     };
     let mut f: Vec<Vec3<S>> = sys
         .particles

@@ -123,7 +123,7 @@ pub fn dimensioned_particles(sort: ParticleSample, n: usize) -> (System<Dim>, Po
     }
     values.extend((0..12).map(|i| motion(i / 3)));
     values.extend([d(0, 0, -1), d(0, 0, -2)]);
-    // The torque-free sampler takes its rates T⁻² as a_ix / x_ix, so its dimensions hold.
+    // The torque-free sampler takes its rates T⁻² as a component of a_i over a length.
     let (sys, p) = particle_system(sort, n, &values);
     (sys, p)
 }

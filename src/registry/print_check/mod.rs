@@ -275,6 +275,7 @@ mod motion;
 pub mod premises;
 pub mod prove;
 mod run;
+pub mod twins;
 pub mod units;
 pub use crate::registry::sample::PrintSample;
 pub use inject::{injections, run_injection, Injection, Outcome, Typo};

@@ -102,7 +102,11 @@ pub(super) fn read_paragraph(
                     read_premise(value, line, f);
                 }
             }
-            "States" => f.states = Some((value.trim_end_matches('.').to_string(), line)),
+            // The name, then (optionally) why in words.
+            "States" => {
+                let name = value.split_whitespace().next().unwrap_or("");
+                f.states = Some((name.trim_end_matches('.').to_string(), line));
+            }
             "Misprint" | "Corrected" | "Why" => read_erratum(name, value, line, f),
             "Points" => read_points(value, line, file),
             "Symbols" => {
