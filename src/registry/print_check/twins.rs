@@ -81,8 +81,9 @@ pub fn indistinguishable(e: &Equation) -> Vec<Twin> {
             };
             // Per-particle quantities mean particle 1 outside a Σ: no twin of anything.
             let per_particle = |q: &str| q.starts_with("particle_");
-            if theirs.quantity == mine.quantity
-                || theirs.key != other.key
+            // The same quantity under another name (x_P for x_C in A.1, where P is C) is a
+            // twin too; the entry itself under its own key is not.
+            if theirs.key != other.key
                 || per_particle(&theirs.quantity)
                 || per_particle(&mine.quantity)
                 || out
