@@ -25,11 +25,7 @@ pub fn condition_forms(latex: &str) -> Result<Vec<Expr>, String> {
 }
 
 /// The model of a drawn particle state with the display's whole-display premises imposed.
-pub(crate) fn premised<S: Scalar>(
-    e: &Equation,
-    sys: System<S>,
-    p: Point<S>,
-) -> Result<Model<S>, String> {
+pub fn premised<S: Scalar>(e: &Equation, sys: System<S>, p: Point<S>) -> Result<Model<S>, String> {
     let mut model = Model::particles(sys, p);
     for pr in e.premises.iter().filter(|p| p.source.whole_display()) {
         let Some(latex) = &pr.latex else { continue };
