@@ -130,6 +130,7 @@ pub fn print_chains_with(
             .collect()
     };
     let mut ours: Vec<Vec<Form>> = Vec::new();
+    let mut alone: Vec<Vec<Form>> = Vec::new();
     let mut milne_k = 0;
     let mut count = d.form_count();
     if continued.is_some() {
@@ -139,7 +140,12 @@ pub fn print_chains_with(
         // `premise ⇒ conclusion`: the conclusion is claimed where the premise holds; the
         // premise is claimed nowhere.
         let chain = match &st.implies {
-            Some(concl) => premises::under(&st.chain.forms, constant(forms(concl, st.milne))),
+            Some(concl) => {
+                // Each form of the premise a chain of its own: evaluated (shown, unit-checked,
+                // matched against the Rust forms), never held equal to anything.
+                alone.extend(forms(&st.chain, st.milne).into_iter().map(|f| vec![f]));
+                premises::under(&st.chain.forms, constant(forms(concl, st.milne)))
+            }
             None => constant(forms(&st.chain, st.milne)),
         };
         if st.milne && milne_k < ours.len() {
@@ -149,6 +155,8 @@ pub fn print_chains_with(
             ours.push(chain);
         }
     }
+    // After every statement, so that Milne's statement k still finds our statement k.
+    ours.extend(alone);
     Ok((count, ours))
 }
 
