@@ -11,6 +11,9 @@
 //! evaluates a derivative's operand in `S::Dual` at `D::Next`. The chain stops at depth 3 with an
 //! error, which keeps the instantiation finite (an unbounded `eval::<S>` → `eval::<S::Dual>` would
 //! not compile); (4) needs depth 2.
+//!
+//! An evaluation bar `…\Big|_{\mathbf{x}_P=0}` is a substitution ([`super::condition`]): the
+//! form is evaluated in the model changed so that the condition holds at this instant.
 
 use super::ast::Expr;
 use super::quantity::{eps, resolve, Lift, Model, Value};
@@ -59,15 +62,18 @@ impl<'t, S: Scalar> Ctx<'t, S> {
 
 /// Derivative depth: evaluates a derivative's operand one dual level up.
 pub trait Depth {
+    /// How many derivatives deep (0: the instant itself, where a condition can be imposed).
+    const LEVEL: u32;
     /// Evaluate `e` in the lifted context and return its ε part.
     fn derive<S: Scalar>(e: &Expr, ctx: &Ctx<S>, how: Lift) -> Result<Value<S>, String>;
 }
 
 macro_rules! depth {
-    ($d:ident, $next:ident) => {
+    ($d:ident, $next:ident, $level:expr) => {
         /// A derivative depth.
         pub struct $d;
         impl Depth for $d {
+            const LEVEL: u32 = $level;
             fn derive<S: Scalar>(e: &Expr, ctx: &Ctx<S>, how: Lift) -> Result<Value<S>, String> {
                 let lifted = ctx.lifted(how)?;
                 Ok(eps::<S>(eval::<S::Dual, $next>(e, &lifted)?))
@@ -75,12 +81,13 @@ macro_rules! depth {
         }
     };
 }
-depth!(D0, D1);
-depth!(D1, D2);
-depth!(D2, D3);
+depth!(D0, D1, 0);
+depth!(D1, D2, 1);
+depth!(D2, D3, 2);
 /// The deepest level: no further derivative.
 pub struct D3;
 impl Depth for D3 {
+    const LEVEL: u32 = 3;
     fn derive<S: Scalar>(_: &Expr, _: &Ctx<S>, _: Lift) -> Result<Value<S>, String> {
         Err("derivatives nested deeper than three".into())
     }
@@ -152,7 +159,13 @@ pub fn eval<S: Scalar, D: Depth>(e: &Expr, ctx: &Ctx<S>) -> Result<Value<S>, Str
             }
             acc.ok_or("a sum over no particles")?
         }
-        Expr::Deriv(a) => D::derive(a, ctx, Lift::Motion)?,
+        // d/dt[…]_{cond}: the rate at the instant where the condition holds.
+        Expr::Deriv(a) => match &**a {
+            Expr::At(inner, conds) => {
+                D::derive(inner, &at_condition::<S, D>(conds, ctx)?, Lift::Motion)?
+            }
+            _ => D::derive(a, ctx, Lift::Motion)?,
+        },
         Expr::Partial(a, wrt) => {
             let how = match quantity_of(wrt, ctx).as_deref() {
                 Some("theta") => Lift::Angle,
@@ -165,8 +178,42 @@ pub fn eval<S: Scalar, D: Depth>(e: &Expr, ctx: &Ctx<S>) -> Result<Value<S>, Str
             Ve(v) => Sc(v.z),
             Sc(_) => return Err("|_z of a scalar".into()),
         },
-        Expr::At(a, _) => ev(a)?,
+        Expr::At(a, conds) => eval::<S, D>(a, &at_condition::<S, D>(conds, ctx)?)?,
     })
+}
+
+/// The context with the condition of an evaluation bar imposed ([`super::condition`]): a
+/// substitution at the instant, so only at depth 0 (inside a derivative it would also freeze the
+/// rates the derivative reads).
+fn at_condition<'t, S: Scalar, D: Depth>(
+    conds: &[Expr],
+    ctx: &Ctx<'t, S>,
+) -> Result<Ctx<'t, S>, String> {
+    if D::LEVEL > 0 {
+        return Err("an evaluation bar inside d/dt (write it on the derivative)".into());
+    }
+    let model = super::condition::impose(
+        &ctx.model,
+        conds,
+        |k| quantity_of(k, ctx),
+        |f| eval::<S, D>(f, ctx),
+    )?;
+    Ok(Ctx {
+        model: std::rc::Rc::new(model),
+        section: ctx.section,
+        number: ctx.number,
+        milne: ctx.milne,
+        index: ctx.index,
+        table: ctx.table,
+    })
+}
+
+/// The model of `ctx` with the condition `forms[0] = forms[1] = …` imposed at this instant (an
+/// evaluation bar, or a premise of the display): [`super::condition::impose`].
+pub fn with_condition<S: Scalar>(forms: &[Expr], ctx: &Ctx<S>) -> Result<Model<S>, String> {
+    Ok(std::rc::Rc::unwrap_or_clone(
+        at_condition::<S, D0>(forms, ctx)?.model,
+    ))
 }
 
 fn quantity_of<S: Scalar>(key: &str, ctx: &Ctx<S>) -> Option<String> {

@@ -43,6 +43,7 @@
 //! repaired here: they are recorded as errata and must fail (`registry::print_check::misprints`).
 pub mod ast;
 pub mod clash;
+pub mod condition;
 pub mod eval;
 pub mod lexer;
 pub mod parser;

@@ -100,8 +100,9 @@ pub enum Model<S> {
         corners: [OnceCell<Point<S>>; 5],
     },
     /// A system of particles and a reference point P (and the centre of mass's motion, built on
-    /// first use).
-    Particles(System<S>, Point<S>, OnceCell<Point<S>>),
+    /// first use), and the lab point where the centre of mass is at the instant of evaluation
+    /// (Milne's G′, constant under d/dt).
+    Particles(System<S>, Point<S>, OnceCell<Point<S>>, Vec3<S>),
 }
 
 impl<S: Scalar> Model<S> {
@@ -118,7 +119,8 @@ impl<S: Scalar> Model<S> {
     }
     /// A particle system with a reference point.
     pub fn particles(sys: System<S>, p: Point<S>) -> Self {
-        Model::Particles(sys, p, OnceCell::new())
+        let g_now = sys.centre_of_mass();
+        Model::Particles(sys, p, OnceCell::new(), g_now)
     }
     pub(super) fn lifted(&self, how: Lift) -> Result<Model<S::Dual>, String> {
         Ok(match (self, how) {
@@ -157,12 +159,17 @@ impl<S: Scalar> Model<S> {
                     corners,
                 }
             }
-            (Model::Particles(sys, p, cm), Lift::Motion) => {
+            (Model::Particles(sys, p, cm, g_now), Lift::Motion) => {
                 let lifted_cm = OnceCell::new();
                 if let Some(c) = cm.get() {
                     let _ = lifted_cm.set(c.along_motion());
                 }
-                Model::Particles(sys.along_motion(), p.along_motion(), lifted_cm)
+                Model::Particles(
+                    sys.along_motion(),
+                    p.along_motion(),
+                    lifted_cm,
+                    g_now.constant(),
+                )
             }
             _ => return Err("∂/∂θ of a particle system".into()),
         })
@@ -238,7 +245,8 @@ fn whole<S: Scalar>(id: &str, index: Option<usize>, model: &Model<S>) -> Result<
     let point = |at: Option<&str>| -> Result<Point<S>, String> {
         match (model, at) {
             (_, Some("O")) => Ok(Point::fixed(Vec3::zero())),
-            (Model::Particles(_, _, cm), Some("cm")) => {
+            (Model::Particles(.., g_now), Some("Gnow")) => Ok(Point::fixed(g_now.clone())),
+            (Model::Particles(_, _, cm, _), Some("cm")) => {
                 Ok(cm.get_or_init(|| sys.cm_point()).clone())
             }
             (_, Some("cm")) => Ok(sys.cm_point()),
@@ -263,7 +271,7 @@ fn whole<S: Scalar>(id: &str, index: Option<usize>, model: &Model<S>) -> Result<
                     .get_or_init(|| Reference::Corner(c).motion(ladder, state))
                     .clone())
             }
-            (Model::Particles(_, p, _), Some("P") | None) => Ok(p.clone()),
+            (Model::Particles(_, p, ..), Some("P") | None) => Ok(p.clone()),
             (Model::Ladder { .. }, None) => Err(format!("{id} needs a point on the ladder")),
             (Model::Particles(..), Some(k)) => Err(format!("no point {k} in a particle system")),
         }

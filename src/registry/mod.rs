@@ -269,6 +269,8 @@ pub struct Equation {
     pub continues: Option<&'static str>,
     /// The states of its `*States:*` line, for a print checked alone.
     pub states: Option<sample::PrintSample>,
+    /// What it assumes, from `*Premises:*`.
+    pub premises: &'static [source::PremiseSpec],
     /// The markdown file of its section.
     pub file: &'static str,
     /// The line of its heading.

@@ -36,17 +36,19 @@ impl LadderSample {
 pub enum ParticleSample {
     /// Any particles, any moving point P.
     General,
-    /// P rides on the centre of mass.
+    /// P on the centre of mass at this instant and moving with it (v_P = v_cm; a_P free).
     PAtCm,
     /// P at rest (v_P = a_P = 0) somewhere.
     PFixed,
     /// P passing through the origin at this instant (x_P = 0), moving.
     PAtOrigin,
-    /// The centre of mass at the origin at this instant and P on it.
+    /// The centre of mass at the origin at this instant and P riding on it (the Rust checks of
+    /// (87), (88) compute L_cm as L_P with this P).
     CmAtOriginPAtCm,
     /// No total force: Σ m_i a_i = 0.
     ForceFree,
-    /// No total torque about the origin: every a_i parallel to x_i.
+    /// No total torque about the origin: the particles' torques cancel in sum
+    /// ([`crate::print::condition::torque_free`]).
     TorqueFree,
     /// A planar rigid body turning about the moving contact point P (rolling, eq. 42).
     RollingAboutP,
@@ -315,29 +317,29 @@ pub fn particle_system<S: Scalar>(
         particles,
         spin: spin_of,
     };
+    // Each sort changes a general draw only as its premise requires: a condition at an instant
+    // sets a position or velocity and leaves the rates above it free.
     match sort {
-        PAtCm => p = sys.cm_point(),
+        PAtCm => {
+            // P on the centre of mass now, moving with it (v_P = v_cm); a_P stays free.
+            p.x = sys.centre_of_mass();
+            p.v = sys.cm_velocity();
+        }
         PFixed => p = Point::fixed(p.x),
         PAtOrigin => p.x = Vec3::zero(),
         CmAtOriginPAtCm => {
+            // The centre of mass at the origin now, P riding on it: the Rust checks of (87),
+            // (88) take L_cm as L_P with this P (a device of theirs, not a premise: their
+            // prints are checked on general states, the bars imposed where printed).
             let cm = sys.centre_of_mass();
             for q in &mut sys.particles {
                 q.x = q.x.clone() - cm.clone();
             }
             p = sys.cm_point();
         }
-        ForceFree => {
-            let a_cm = sys.cm_acceleration();
-            for q in &mut sys.particles {
-                q.a = q.a.clone() - a_cm.clone();
-            }
-        }
-        TorqueFree => {
-            // a_i = λ_i x_i, with λ_i the first random component of a_i: x_i × m_i a_i = 0.
-            for q in &mut sys.particles {
-                q.a = q.x.scale(&q.a.x);
-            }
-        }
+        ForceFree => crate::print::condition::force_free(&mut sys),
+        // The particles' torques cancel in sum, not each.
+        TorqueFree => crate::print::condition::torque_free(&mut sys),
         _ => {}
     }
     (sys, p)

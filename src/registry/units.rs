@@ -123,14 +123,8 @@ pub fn dimensioned_particles(sort: ParticleSample, n: usize) -> (System<Dim>, Po
     }
     values.extend((0..12).map(|i| motion(i / 3)));
     values.extend([d(0, 0, -1), d(0, 0, -2)]);
-    let (mut sys, p) = particle_system(sort, n, &values);
-    if sort == ParticleSample::TorqueFree {
-        // The sampler makes a_i = λ_i x_i with λ_i a random number that it takes from a_i's
-        // first component (any value will do for the values); its dimension must be T⁻².
-        for q in &mut sys.particles {
-            q.a = q.x.scale(&d(0, 0, -2));
-        }
-    }
+    // The torque-free sampler takes its rates T⁻² as a component of a_i over a length.
+    let (sys, p) = particle_system(sort, n, &values);
     (sys, p)
 }
 

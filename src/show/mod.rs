@@ -18,6 +18,7 @@ pub mod at;
 pub mod checks;
 pub mod find;
 pub mod phase;
+pub mod premises;
 pub mod source;
 pub mod state;
 pub mod text;
@@ -70,6 +71,10 @@ pub struct Shown {
     pub unicode: String,
     /// Its symbols.
     pub symbols: Vec<SymbolInfo>,
+    /// What it assumes: its `*Premises:*` and the states its print is checked at.
+    pub premises: Vec<String>,
+    /// Symbols of it that no state of the display tells from another (edits invisible here).
+    pub indistinguishable: Vec<String>,
     /// The state the forms are evaluated at.
     pub state: state::Summary,
     /// For a general display: the ladder's point that plays P.
@@ -290,6 +295,8 @@ pub fn show(
         latex: e.latex(),
         unicode: unicode::unicode(e.latex()),
         symbols: symbol_infos(&e),
+        premises: premises::premise_lines(&e),
+        indistinguishable: premises::twin_lines(&e),
         state: point.summary.clone(),
         must_agree: assumption.is_none(),
         assumption,

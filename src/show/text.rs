@@ -123,6 +123,16 @@ pub fn render(s: &Shown) -> String {
         s.latex.split_whitespace().collect::<Vec<_>>().join(" ")
     );
     let _ = writeln!(o, "  reads:   {}", s.unicode);
+    for (k, line) in s.premises.iter().enumerate() {
+        let _ = writeln!(
+            o,
+            "  {} {line}",
+            if k == 0 { "assumes:" } else { "        " }
+        );
+    }
+    for line in &s.indistinguishable {
+        let _ = writeln!(o, "  blind:   {line}");
+    }
     let _ = writeln!(o, "\nsymbols (src/print/symbols.toml)");
     for y in &s.symbols {
         let milne = if y.milne { " (Milne)" } else { "" };

@@ -155,7 +155,8 @@ fn model<S: Scalar>(e: &Equation, l: &Ladder<S>, s: &State<S>) -> Result<Model<S
         Some(PrintSample::Ladder(..)) => Ok(Model::ladder(l.clone(), s.clone())),
         Some(PrintSample::Particles(sort)) => {
             let (sys, p) = ladder_particles(sort, l, s);
-            Ok(Model::particles(sys, p))
+            // The display's stated and prose premises, imposed as in its print check.
+            crate::registry::print_check::premises::premised(e, sys, p)
         }
         None => Err("no model for this display".into()),
     }
@@ -164,7 +165,19 @@ fn model<S: Scalar>(e: &Equation, l: &Ladder<S>, s: &State<S>) -> Result<Model<S
 /// The place a display is evaluated at (`None` for a display of the ladder itself).
 pub fn place_of(e: &Equation) -> Option<Place> {
     match print_sample(e) {
-        Some(PrintSample::Particles(sort)) => Some(place(sort)),
+        Some(PrintSample::Particles(sort)) => {
+            let mut at = place(sort);
+            let imposed: Vec<String> = e
+                .premises
+                .iter()
+                .filter(|p| p.source.whole_display())
+                .filter_map(|p| p.latex.as_deref().map(crate::print::unicode::unicode))
+                .collect();
+            if !imposed.is_empty() {
+                at.point = format!("{}, then {}", at.point, imposed.join(", "));
+            }
+            Some(at)
+        }
         _ => None,
     }
 }

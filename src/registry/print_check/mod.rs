@@ -5,9 +5,10 @@
 //!
 //! Per display: statements become chains; Milne's statement k joins our statement k (his names
 //! denote our quantities, so every form must agree); `X = \text{const}` is checked as
-//! d/dt X = 0; a premise and its conclusion (`\Rightarrow`) are both checked on the registry's
-//! sample, which is drawn so that the premise holds; an evaluation bar `|_{a=b}` adds the chain
-//! a = b (the sample must satisfy it). A form recorded as a misprint ([`misprints`]) must differ.
+//! d/dt X = 0; of `premise \Rightarrow conclusion` only the conclusion is claimed, on the states
+//! changed so that the premise holds ([`premises`]); an evaluation bar `|_{a=b}` is a
+//! substitution made by the evaluator ([`crate::print::condition`]), never a claim about the
+//! sample. A form recorded as a misprint ([`misprints`]) must differ.
 
 use super::{Chain, Equation, Role, Side};
 use crate::print::ast::{Chain as PChain, Expr};
@@ -129,29 +130,33 @@ pub fn print_chains_with(
             .collect()
     };
     let mut ours: Vec<Vec<Form>> = Vec::new();
+    let mut alone: Vec<Vec<Form>> = Vec::new();
     let mut milne_k = 0;
     let mut count = d.form_count();
     if continued.is_some() {
         count -= 1; // the continued form belongs to the display before
     }
     for st in &d.statements {
-        let mut chain = forms(&st.chain, st.milne);
-        let mut extra = Vec::new();
-        if let Some(concl) = &st.implies {
-            extra.push(constant(forms(concl, st.milne)));
-        }
-        chain = constant(chain);
-        for f in chain.iter() {
-            conditions(&f.expr, f.milne, &mut extra);
-        }
+        // `premise ⇒ conclusion`: the conclusion is claimed where the premise holds; the
+        // premise is claimed nowhere.
+        let chain = match &st.implies {
+            Some(concl) => {
+                // Each form of the premise a chain of its own: evaluated (shown, unit-checked,
+                // matched against the Rust forms), never held equal to anything.
+                alone.extend(forms(&st.chain, st.milne).into_iter().map(|f| vec![f]));
+                premises::under(&st.chain.forms, constant(forms(concl, st.milne)))
+            }
+            None => constant(forms(&st.chain, st.milne)),
+        };
         if st.milne && milne_k < ours.len() {
             ours[milne_k].extend(chain);
             milne_k += 1;
         } else {
             ours.push(chain);
         }
-        ours.extend(extra);
     }
+    // After every statement, so that Milne's statement k still finds our statement k.
+    ours.extend(alone);
     Ok((count, ours))
 }
 
@@ -164,36 +169,6 @@ fn constant(chain: Vec<Form>) -> Vec<Form> {
         c
     } else {
         chain
-    }
-}
-
-/// The chains a = b of every evaluation bar in a form.
-fn conditions(e: &Expr, milne: bool, out: &mut Vec<Vec<Form>>) {
-    use Expr::*;
-    match e {
-        At(a, conds) => {
-            out.push(
-                conds
-                    .iter()
-                    .map(|c| Form {
-                        expr: c.clone(),
-                        text: "evaluation condition".into(),
-                        role: Role::Printed,
-                        milne,
-                    })
-                    .collect(),
-            );
-            conditions(a, milne, out);
-        }
-        Neg(a) | Pow(a, _) | Sin(a) | Cos(a) | Sum(a) | Deriv(a) | Partial(a, _) | ZComp(a) => {
-            conditions(a, milne, out)
-        }
-        Add(a, b) | Sub(a, b) | Mul(a, b) | Div(a, b) | Cross(a, b) => {
-            conditions(a, milne, out);
-            conditions(b, milne, out);
-        }
-        Tuple(v) => v.iter().for_each(|x| conditions(x, milne, out)),
-        Int(_) | Sym(_) | Const => {}
     }
 }
 
@@ -305,8 +280,10 @@ pub(crate) fn form_text<'a>(chains: &'a [Vec<Form>], label: &str) -> &'a str {
 
 mod inject;
 mod motion;
+pub mod premises;
 pub mod prove;
 mod run;
+pub mod twins;
 pub mod units;
 pub use crate::registry::sample::PrintSample;
 pub use inject::{injections, run_injection, Injection, Outcome, Typo};

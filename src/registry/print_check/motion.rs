@@ -23,7 +23,7 @@ pub(super) fn degree(e: &Equation, chains: &[Vec<Form>], sample: PrintSample) ->
             // The degree grows with the particles: the most an exact point draws (8).
             let vars = vec![Degree::variable(); 8 * PER_PARTICLE + EXTRA];
             let (sys, p) = particle_system(sort, 8, &vars);
-            evaluate_chains(e, chains, Model::particles(sys, p), None)
+            super::premises::premised(e, sys, p).and_then(|m| evaluate_chains(e, chains, m, None))
         }
     };
     evaluated.map_or(0, |c| residual_degree(&c))

@@ -10,6 +10,7 @@
 //! its additive terms) symbolically: the transcription matches the print for all values of the
 //! variables, not only at the one exact point of [`super::check_print`].
 
+use super::premises::premised_parts;
 use super::{
     evaluate_chains, form_text, print_chains_with, print_sample, sample_check, term_chains, Form,
     PrintSample,
@@ -71,12 +72,23 @@ fn instances(e: &Equation, chains: &[Vec<Form>]) -> Result<Found, String> {
         PrintSample::Particles(sort) => {
             for n in PARTICLE_COUNTS {
                 let values = symbolic_particle_values(n);
-                let (sys, p) = particle_system(sort, n, &values);
+                let (sys, p) = premised_parts(e, particle_system(sort, n, &values))?;
                 let model = || Model::particles(sys.clone(), p.clone());
                 let print = evaluate_chains(e, chains, model(), None)?;
-                if let Some(Eval::Particles(_, f)) = rust {
+                if let Some(Eval::Particles(s, f)) = rust {
+                    // The Rust forms on their own check's states (which may assume more than
+                    // the print's premises), the print there too.
+                    let (sys, p, there) = if s == sort {
+                        (sys.clone(), p.clone(), print.clone())
+                    } else {
+                        let (sys, p) = premised_parts(e, particle_system(s, n, &values))?;
+                        let m = Model::particles(sys.clone(), p.clone());
+                        let there = evaluate_chains(e, chains, m, None)?;
+                        (sys, p, there)
+                    };
+                    let model = || Model::particles(sys.clone(), p.clone());
                     let rust = (f.symbolic)(&sys, &p);
-                    let mut values = flat(&print);
+                    let mut values = flat(&there);
                     if unmatched(&rust, &values, &None).is_some() {
                         // Per-particle statements: every form and term at each particle too
                         // (only when needed: every term at every particle is the slow part).

@@ -1,5 +1,6 @@
 //! Running a display's printed chains on the registry's samples.
 
+use super::premises::{premised, premised_parts};
 use super::{
     evaluate_chains, form_text, misprints, print_chains_with, term_chains, Form, PrintReport,
 };
@@ -37,6 +38,9 @@ pub fn check_print_with(
         }
     };
     rep.forms = count;
+    if let Ok(d) = crate::print::parser::parse_display(latex) {
+        rep.problems.extend(super::premises::disagreements(e, &d));
+    }
     let Some(sample) = print_sample(e) else {
         rep.unparsed
             .push("floor-phase displays are not in the note".into());
@@ -94,7 +98,7 @@ fn probe(
         PrintSample::Particles(sort) => {
             let raw = RawParticles::draw(rng);
             let ((sys, p), _) = crate::registry::sample::float_particles(sort, &raw);
-            evaluate_chains(e, chains, Model::particles(sys, p), None).map(|_| ())
+            evaluate_chains(e, chains, premised(e, sys, p)?, None).map(|_| ())
         }
     }
 }
@@ -124,8 +128,8 @@ fn float_pass(
                 let raw = RawParticles::draw(rng);
                 let ((sys, p), (sysb, pb)) = crate::registry::sample::float_particles(sort, &raw);
                 (
-                    evaluate_chains(e, chains, Model::particles(sys, p), None),
-                    evaluate_chains(e, chains, Model::particles(sysb, pb), None),
+                    premised(e, sys, p).and_then(|m| evaluate_chains(e, chains, m, None)),
+                    premised(e, sysb, pb).and_then(|m| evaluate_chains(e, chains, m, None)),
                 )
             }
         };
@@ -200,9 +204,24 @@ fn exact_pass(
             PrintSample::Particles(sort) => {
                 let (n, values) = crate::registry::check::exact_particle_draw(rng);
                 let (sys, p) = particle_system(sort, n, &values);
-                let m = Model::particles(sys.clone(), p.clone());
-                note(evaluate_chains(e, chains, m, None));
+                note(
+                    premised(e, sys.clone(), p.clone())
+                        .and_then(|m| evaluate_chains(e, chains, m, None)),
+                );
                 if first {
+                    // The Rust forms at a state of their own check's sort (which may assume
+                    // more than the print's premises), the print there too.
+                    let (n, sys, p) = match rust {
+                        Some(Eval::Particles(s, _)) if s != sort => {
+                            let (n, values) = crate::registry::check::exact_particle_draw(rng);
+                            let (sys, p) = particle_system(s, n, &values);
+                            (n, sys, p)
+                        }
+                        _ => (n, sys, p),
+                    };
+                    let Ok((sys, p)) = premised_parts(e, (sys, p)) else {
+                        continue;
+                    };
                     // Per-particle statements: the forms at every particle.
                     let with_terms = [chains.to_vec(), term_chains(chains)].concat();
                     for i in 0..n {
@@ -253,7 +272,8 @@ pub fn sample_check(e: &Equation) -> Option<&crate::registry::Check> {
     e.checks.first()
 }
 
-/// The states of a display's print: its `*States:*` line if it has one, else those of the
+/// The states of a display's print: its `*States:*` line if it has one, else for particles with
+/// a `*Premises:*` list general states (the premises imposed on them), else those of the
 /// registry check it is compared with ([`sample_check`]), else its kind's (on-shell: the motion;
 /// general, notation: any particles; else any motion of the ladder). `None` for the floor phase,
 /// which the print cannot evaluate.
@@ -262,8 +282,14 @@ pub fn print_sample(e: &Equation) -> Option<PrintSample> {
     if let Some(s) = e.states {
         return Some(s);
     }
+    // With its premises written down, a display of particles is checked on general states that
+    // satisfy them and nothing more ([`super::premises`]).
+    let general = !e.premises.is_empty();
     match sample_check(e).map(|c| c.eval) {
         Some(Eval::Ladder(s, _)) => Some(PrintSample::Ladder(s)),
+        Some(Eval::Particles(_, _)) if general => {
+            Some(PrintSample::Particles(ParticleSample::General))
+        }
         Some(Eval::Particles(s, _)) => Some(PrintSample::Particles(s)),
         Some(Eval::Floor(..)) => None,
         None => Some(match e.kind {

@@ -14,6 +14,8 @@ pub(super) enum ListNext {
     Rust,
     /// The symbols of `*Symbols:*`.
     Symbols,
+    /// The premises of `*Premises:*`.
+    Premises,
 }
 
 /// What a file declares for all its displays: points and symbols, and what was wrong with them.
@@ -35,6 +37,7 @@ pub(super) struct Fields {
     pub law: Option<(LawSpec, usize)>,
     pub erratum: Option<ErratumSpec>,
     pub states: Option<(String, usize)>,
+    pub premises: Vec<super::PremiseSpec>,
     pub errors: Vec<(usize, String)>,
 }
 
@@ -93,7 +96,17 @@ pub(super) fn read_paragraph(
                     read_check(value, line, f);
                 }
             }
-            "States" => f.states = Some((value.trim_end_matches('.').to_string(), line)),
+            "Premises" => {
+                next = ListNext::Premises;
+                if !value.is_empty() {
+                    read_premise(value, line, f);
+                }
+            }
+            // The name, then (optionally) why in words.
+            "States" => {
+                let name = value.split_whitespace().next().unwrap_or("");
+                f.states = Some((name.trim_end_matches('.').to_string(), line));
+            }
             "Misprint" | "Corrected" | "Why" => read_erratum(name, value, line, f),
             "Points" => read_points(value, line, file),
             "Symbols" => {
@@ -113,6 +126,14 @@ pub(super) fn read_paragraph(
         }
     }
     next
+}
+
+/// One item of `*Premises:*` ([`super::premises`]).
+pub(super) fn read_premise(raw: &str, line: usize, f: &mut Fields) {
+    match super::premises::read_premise(raw, line) {
+        Ok(p) => f.premises.push(p),
+        Err(e) => f.errors.push((line, e)),
+    }
 }
 
 /// `Q = ladder:1/4; R = lab:1/2,3/2`.

@@ -30,6 +30,8 @@
 //! * `*Misprint:*` is the printed form (or statement) that fails, `*Corrected:*` its correction;
 //!   the misprinted forms are those of the printed statement that the correction does not have.
 //! * `*Law:*` names the `=` that is the law of motion and says which law, in words.
+//! * `*Premises:*` (optional) lists what the display assumes, one item per premise:
+//!   `- bar|implies|stated|prose: $condition$ words` ([`premises`]).
 //! * `*States:*` (optional) names the states the print is evaluated at when no `*Rust:*` check
 //!   gives them: one of the names of [`super::fns::LADDER_SAMPLES`] or
 //!   [`super::fns::PARTICLE_SAMPLES`]; without it, the kind decides (on-shell: the motion;
@@ -49,10 +51,12 @@
 mod fields;
 mod note;
 mod parse;
+pub mod premises;
 mod symbols;
 
 pub use note::{current, misprinted_forms, use_note, Note};
 pub use parse::{parse_file, ParsedFile};
+pub use premises::PremiseSource;
 pub use symbols::point_id;
 
 use super::Kind;
@@ -165,6 +169,21 @@ pub struct Section {
     pub continues: Option<String>,
     /// The states of `*States:*`, by name, and its line.
     pub states: Option<(String, usize)>,
+    /// The premises of `*Premises:*`.
+    pub premises: Vec<PremiseSpec>,
+}
+
+/// One premise of a display ([`premises`]).
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
+pub struct PremiseSpec {
+    /// Where it comes from.
+    pub source: PremiseSource,
+    /// The condition, LaTeX (none for a premise in words only).
+    pub latex: Option<String>,
+    /// What it says, in words.
+    pub words: String,
+    /// Its line.
+    pub line: usize,
 }
 
 /// Collapse whitespace, so that line breaks in the markdown do not matter.

@@ -128,6 +128,15 @@ impl Note {
                     format!("{label}: the display cannot be read as LaTeX of the note: {reason}"),
                 ));
             }
+            for p in &s.premises {
+                let Some(latex) = &p.latex else { continue };
+                if let Err(reason) = crate::print::parser::parse_display(latex) {
+                    bad.push(err(
+                        p.line,
+                        format!("{label}: the premise ${latex}$ cannot be read: {reason}"),
+                    ));
+                }
+            }
             if let Some((name, line)) = &s.states {
                 if let Err(reason) = fns::print_states(name) {
                     bad.push(err(*line, format!("{label}: {reason}")));
@@ -232,6 +241,7 @@ fn equation(s: &'static Section) -> Equation {
             .states
             .as_ref()
             .and_then(|(n, _)| fns::print_states(n).ok()),
+        premises: &s.premises,
         file: &s.file,
         line: s.line,
     }

@@ -145,6 +145,7 @@ pub fn parse_file(file: &str, src: &str) -> ParsedFile {
             Event::Start(Tag::Item) if depth == 1 => match (list, open.as_mut()) {
                 (ListNext::Rust, Some(o)) => fields::read_check(raw, line, &mut o.fields),
                 (ListNext::Symbols, _) => fields::read_symbol(raw, line, &mut decls),
+                (ListNext::Premises, Some(o)) => fields::read_premise(raw, line, &mut o.fields),
                 _ => {}
             },
             Event::Start(_) if depth == 0 => list = ListNext::None,
@@ -250,6 +251,7 @@ fn close(o: Option<Open>, file: &str, parsed: &mut ParsedFile) {
         erratum: o.fields.erratum,
         continues: None,
         states: o.fields.states,
+        premises: o.fields.premises,
     });
 }
 

@@ -7,7 +7,7 @@ use crate::print::symbols::Entry;
 use crate::scalar::Dimension;
 
 /// Points the note names itself, which a file may not redefine.
-const NOTE_POINTS: [&str; 9] = ["A", "B", "C", "D", "E", "O", "P", "cm", "Cfixed"];
+const NOTE_POINTS: [&str; 10] = ["A", "B", "C", "D", "E", "O", "P", "cm", "Cfixed", "Gnow"];
 
 /// The id of a point of the ladder (`ladder:1/4`, 0 = C, 1 = D) or of the lab (`lab:1/2,3/2`, in
 /// units of l), or why it is neither.

@@ -2,6 +2,9 @@
 //! evaluated, proved and unit-checked.
 
 mod check;
+mod condition;
 mod inject;
+mod planted;
+mod premises;
 mod prove;
 mod units;

@@ -1,0 +1,152 @@
+//! Symbols a display's states cannot tell apart: a printed symbol and another of its section
+//! that take the same value at every state the print is checked at (its premises imposed). On the
+//! ladder several distinct quantities are equal at every state (I_A = I_C = I_D = I_E; x_P is
+//! x_C in A.1, where the note puts P at C), so writing one for the other changes what the note
+//! says and no value can see it; `ladder show` lists such pairs so a reader knows where the
+//! print check is blind.
+//!
+//! Two exact points (rationals, fixed seed) decide: distinct rational functions of the draw agree
+//! at a random point with probability at most degree/2⁶⁰ (Schwartz-Zippel), so a pair listed is
+//! equal on the model, not by chance. A symbol that is zero there is left out (every zero is
+//! "equal" to every other).
+
+use super::{print_chains, print_sample, PrintSample};
+use crate::print::ast::Expr;
+use crate::print::eval::{evaluate, Ctx};
+use crate::print::quantity::Model;
+use crate::print::symbols::lookup;
+use crate::registry::sample::{exact_ladder, particle_system};
+use crate::registry::Equation;
+use crate::scalar::Rational;
+use num_traits::Zero;
+use rand::SeedableRng;
+
+/// A printed symbol and another symbol of its section that no state of the display tells apart.
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
+pub struct Twin {
+    /// The printed symbol (canonical LaTeX).
+    pub printed: String,
+    /// The symbol equal to it at every state.
+    pub other: String,
+    /// Their quantities (different ids).
+    pub quantities: (String, String),
+}
+
+/// The pairs of symbols the display's states cannot tell apart.
+pub fn indistinguishable(e: &Equation) -> Vec<Twin> {
+    let (Ok((_, chains)), Some(sample)) = (print_chains(e.number, e.latex()), print_sample(e))
+    else {
+        return Vec::new();
+    };
+    let mut keys: Vec<(String, bool)> = Vec::new();
+    for f in chains.iter().flatten() {
+        symbols(&f.expr, f.milne, &mut keys);
+    }
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(37 ^ u64::from(e.number));
+    let models: Vec<std::rc::Rc<Model<Rational>>> = (0..2)
+        .filter_map(|_| model(e, sample, &mut rng))
+        .map(std::rc::Rc::new)
+        .collect();
+    let table = crate::registry::symbol_table();
+    let values = |key: &str, milne: bool| -> Option<Vec<Vec<Rational>>> {
+        let vals: Option<Vec<Vec<Rational>>> = models
+            .iter()
+            .map(|m| {
+                let ctx = Ctx {
+                    model: m.clone(),
+                    section: e.section,
+                    number: e.number,
+                    milne,
+                    index: None,
+                    table,
+                };
+                evaluate(&Expr::Sym(key.to_string()), &ctx)
+                    .ok()
+                    .map(|v| v.components())
+            })
+            .collect();
+        vals.filter(|v| v.iter().flatten().any(|x| !x.is_zero()))
+    };
+    let mut out: Vec<Twin> = Vec::new();
+    for (key, milne) in &keys {
+        let Some(mine) = lookup(table, key, e.section, e.number, *milne) else {
+            continue;
+        };
+        let Some(v) = values(key, *milne) else {
+            continue;
+        };
+        for other in table.iter().filter(|t| t.milne == *milne && &t.key != key) {
+            let Some(theirs) = lookup(table, &other.key, e.section, e.number, *milne) else {
+                continue;
+            };
+            // Per-particle quantities mean particle 1 outside a Σ: no twin of anything.
+            let per_particle = |q: &str| q.starts_with("particle_");
+            // The same quantity under another name (x_P for x_C in A.1, where P is C) is a
+            // twin too; the entry itself under its own key is not.
+            if theirs.key != other.key
+                || per_particle(&theirs.quantity)
+                || per_particle(&mine.quantity)
+                || out
+                    .iter()
+                    .any(|t| t.printed == other.key && &t.other == key)
+            {
+                continue;
+            }
+            if values(&other.key, *milne).as_ref() == Some(&v) {
+                let twin = Twin {
+                    printed: key.clone(),
+                    other: other.key.clone(),
+                    quantities: (mine.quantity.clone(), theirs.quantity.clone()),
+                };
+                if !out.contains(&twin) {
+                    out.push(twin);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// One exact state of the display's print, its premises imposed.
+fn model(
+    e: &Equation,
+    sample: PrintSample,
+    rng: &mut rand_chacha::ChaCha8Rng,
+) -> Option<Model<Rational>> {
+    match sample {
+        PrintSample::Ladder(sort) => {
+            let (l, s) = exact_ladder(sort, crate::registry::check::exact_ladder_draw(rng));
+            Some(Model::ladder(l, s))
+        }
+        PrintSample::Particles(sort) => {
+            let (n, values) = crate::registry::check::exact_particle_draw(rng);
+            let (sys, p) = particle_system(sort, n, &values);
+            super::premises::premised(e, sys, p).ok()
+        }
+    }
+}
+
+/// Every symbol of a form, with whether it is Milne's.
+fn symbols(e: &Expr, milne: bool, out: &mut Vec<(String, bool)>) {
+    use Expr::*;
+    match e {
+        Sym(k) => {
+            if !out.iter().any(|(x, m)| x == k && *m == milne) {
+                out.push((k.clone(), milne));
+            }
+        }
+        At(a, conds) => {
+            symbols(a, milne, out);
+            conds.iter().for_each(|c| symbols(c, milne, out));
+        }
+        Neg(a) | Pow(a, _) | Sin(a) | Cos(a) | Sum(a) | Deriv(a) | Partial(a, _) | ZComp(a) => {
+            symbols(a, milne, out)
+        }
+        Add(a, b) | Sub(a, b) | Mul(a, b) | Div(a, b) | Cross(a, b) => {
+            symbols(a, milne, out);
+            symbols(b, milne, out);
+        }
+        Tuple(v) => v.iter().for_each(|x| symbols(x, milne, out)),
+        Int(_) | Const => {}
+    }
+}

@@ -1,0 +1,170 @@
+//! The proof of absence (issue 37): each class of edit the print check used to miss is planted
+//! into a copy of the print (`equations/*.md`, the one file that holds each display) and
+//! `ladder verify --equations COPY` must flag exactly the planted displays, each with a reason
+//! naming the form; an edit no model can see is left unflagged and `ladder show` names the
+//! symbols that are indistinguishable there. A pristine copy is flagged nowhere.
+
+use crate::common::tmp_dir;
+use std::path::Path;
+use std::process::Command;
+
+/// (file, display, printed text, planted text, class).
+const PLANTS: [(&str, u32, &str, &str, &str); 5] = [
+    (
+        "B-milne.md",
+        84,
+        r"\mathbf{L}_{\text{cm}} = \mathbf{L}'_{\text{cm}}, \quad",
+        r"\mathbf{L}_P = \mathbf{L}'_{\text{cm}}, \quad",
+        "a subscript swap between quantities equal on the old sample (P riding on the cm)",
+    ),
+    (
+        "B-milne.md",
+        86,
+        r"\frac{d\mathbf{L}_P}{dt} \Big|_{\mathbf{x}_P=0} + \mathbf{v}_P",
+        r"\frac{d\mathbf{L}_P}{dt} + \mathbf{v}_P",
+        "a dropped evaluation bar",
+    ),
+    (
+        "B-milne.md",
+        70,
+        r"\mathbf{F} = 0 \Rightarrow \mathbf{P} = \text{const}",
+        r"\mathbf{F} = 0, \quad \mathbf{P} = \text{const}",
+        "an implication made a conjunction",
+    ),
+    (
+        "B-milne.md",
+        88,
+        r"\frac{d\mathbf{L}}{dt} \Big|_{\mathbf{x}_{\text{cm}}=0} =",
+        r"\frac{d\mathbf{L}}{dt} \Big|_{\mathbf{x}_P=\mathbf{x}_{\text{cm}}=0} =",
+        "a premise strengthened",
+    ),
+    (
+        "A1-method-1.md",
+        54,
+        "= m g l \\sin \\theta\n$$",
+        "= m g l \\cos \\theta\n$$",
+        "a typo in an erratum's correct side",
+    ),
+];
+
+/// Edits no model can see: the statement is unchanged under the display's premises.
+const INVISIBLE: [(&str, u32, &str, &str, &str); 2] = [
+    (
+        "02-point-a.md",
+        13,
+        "I_A = I_C = I_D",
+        "I_A = I_A = I_D",
+        "I_C",
+    ),
+    (
+        "A1-method-1.md",
+        49,
+        r"\mathbf{L}_C = \mathbf{L}_{\text{cm}} + (\mathbf{x}_{\text{cm}} - \mathbf{x}_P)",
+        r"\mathbf{L}_C = \mathbf{L}_{\text{cm}} + (\mathbf{x}_{\text{cm}} - \mathbf{x}_C)",
+        "x_C",
+    ),
+];
+
+fn copy_of_the_print(tag: &str) -> std::path::PathBuf {
+    let dir = tmp_dir("planted", tag);
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("equations");
+    for f in std::fs::read_dir(src).unwrap() {
+        let f = f.unwrap().path();
+        if f.extension().is_some_and(|x| x == "md") {
+            std::fs::copy(&f, dir.join(f.file_name().unwrap())).unwrap();
+        }
+    }
+    dir
+}
+
+fn plant(dir: &Path, file: &str, from: &str, to: &str) {
+    let p = dir.join(file);
+    let text = std::fs::read_to_string(&p).unwrap();
+    assert!(text.contains(from), "{file} has no '{from}'");
+    std::fs::write(&p, text.replacen(from, to, 1)).unwrap();
+}
+
+fn verify(dir: &Path) -> (Option<i32>, serde_json::Value, String) {
+    let o = Command::new(env!("CARGO_BIN_EXE_ladder"))
+        .args(["verify", "--json", "--equations"])
+        .arg(dir)
+        .output()
+        .unwrap();
+    let json = serde_json::from_slice(&o.stdout).expect("verify --json");
+    (
+        o.status.code(),
+        json,
+        String::from_utf8_lossy(&o.stderr).into(),
+    )
+}
+
+fn failed(json: &serde_json::Value) -> Vec<(u64, Vec<String>)> {
+    json["equations"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|r| r["status"] == "failed")
+        .map(|r| {
+            let problems = r["problems"].as_array().unwrap();
+            (
+                r["number"].as_u64().unwrap(),
+                problems
+                    .iter()
+                    .map(|p| p.as_str().unwrap().to_string())
+                    .collect(),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn every_planted_class_is_flagged_with_its_reason_and_nothing_else() {
+    let clean = copy_of_the_print("clean");
+    let (code, json, err) = verify(&clean);
+    assert_eq!(code, Some(0), "a pristine copy: {err}");
+    assert!(failed(&json).is_empty());
+
+    let dir = copy_of_the_print("all");
+    for (file, _, from, to, _) in PLANTS.iter().chain(&INVISIBLE) {
+        plant(&dir, file, from, to);
+    }
+    let (code, json, err) = verify(&dir);
+    assert_eq!(code, Some(1), "{err}");
+    let flagged = failed(&json);
+    let numbers: Vec<u64> = flagged.iter().map(|f| f.0).collect();
+    let mut planted: Vec<u64> = PLANTS.iter().map(|p| u64::from(p.1)).collect();
+    planted.sort_unstable();
+    assert_eq!(numbers, planted, "flagged exactly the planted displays");
+    for (_, n, _, _, class) in PLANTS {
+        let problems = &flagged.iter().find(|f| f.0 == u64::from(n)).unwrap().1;
+        // The reason names the form (or the premise) that changed.
+        assert!(
+            problems
+                .iter()
+                .any(|p| p.contains("form") || p.contains("premise")),
+            "({n}) {class}: {problems:?}"
+        );
+        assert!(err.contains(&format!("({n})")), "({n}) {class}: {err}");
+    }
+}
+
+#[test]
+fn an_edit_no_model_can_see_is_named_by_show() {
+    let dir = copy_of_the_print("invisible");
+    for (file, n, from, to, twin) in INVISIBLE {
+        plant(&dir, file, from, to);
+        let o = Command::new(env!("CARGO_BIN_EXE_ladder"))
+            .args(["show", &n.to_string(), "--equations"])
+            .arg(&dir)
+            .output()
+            .unwrap();
+        let out = String::from_utf8_lossy(&o.stdout);
+        let blind: Vec<&str> = out.lines().filter(|l| l.contains("blind:")).collect();
+        assert!(
+            blind
+                .iter()
+                .any(|l| l.contains(twin) && l.contains("invisible here")),
+            "({n}): {blind:?}"
+        );
+    }
+}
