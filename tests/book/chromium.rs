@@ -17,10 +17,10 @@
 //! Shown able to fail: a planted over-wide display, a planted hidden number and a display whose
 //! alignment classes are stripped (lines centred again) are each reported.
 
+use crate::built::book;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
-use std::sync::OnceLock;
 use std::time::{Duration, Instant};
 
 /// The measuring script: for every `.display` of a page, its formula's width against its box,
@@ -93,28 +93,6 @@ fn browser_or_skip(test: &str) -> Option<PathBuf> {
             None
         }
     }
-}
-
-/// The book, written once (100 float cases per check: layout does not depend on the count).
-fn book() -> &'static PathBuf {
-    static BOOK: OnceLock<PathBuf> = OnceLock::new();
-    BOOK.get_or_init(|| {
-        let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-            .join(format!("book-chromium-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        let out = Command::new(env!("CARGO_BIN_EXE_ladder"))
-            .args(["book", "--cases", "100", "--out"])
-            .arg(&dir)
-            .output()
-            .expect("ladder book runs");
-        assert!(
-            out.status.success(),
-            "ladder book failed: {}{}",
-            String::from_utf8_lossy(&out.stdout),
-            String::from_utf8_lossy(&out.stderr)
-        );
-        dir
-    })
 }
 
 /// The book's pages of prose and mathematics (not the Rust source pages), sorted.

@@ -1,6 +1,7 @@
 //! The book (`equations/*.md` and `ladder book`): its pages, its doc-as-test checks, the errata
 //! and units pages held against the code (`cargo test --test book`).
 
+mod built;
 mod check;
 mod chromium;
 mod docs;

@@ -9,34 +9,10 @@
 //!
 //! Both checks are shown to fail on a planted three-child `msup` and a planted visible `<!--`.
 
+use crate::built::book;
 use quick_xml::events::Event;
 use quick_xml::Reader;
 use std::path::{Path, PathBuf};
-use std::process::Command;
-use std::sync::OnceLock;
-
-/// The book, written once for all tests (100 float cases per check: the MathML does not
-/// depend on the count).
-fn book() -> &'static PathBuf {
-    static BOOK: OnceLock<PathBuf> = OnceLock::new();
-    BOOK.get_or_init(|| {
-        let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-            .join(format!("book-mathml-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        let out = Command::new(env!("CARGO_BIN_EXE_ladder"))
-            .args(["book", "--cases", "100", "--out"])
-            .arg(&dir)
-            .output()
-            .expect("ladder book runs");
-        assert!(
-            out.status.success(),
-            "ladder book failed: {}{}",
-            String::from_utf8_lossy(&out.stdout),
-            String::from_utf8_lossy(&out.stderr)
-        );
-        dir
-    })
-}
 
 /// How many child elements a MathML element takes, for those with a fixed count.
 fn arity(name: &str) -> Option<usize> {

@@ -9,37 +9,23 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::OnceLock;
 
-const CASES: &str = "100";
+use crate::built::CASES;
 
 fn ladder() -> Command {
     Command::new(env!("CARGO_BIN_EXE_ladder"))
 }
 
-/// The book and the JSON of `ladder verify`, made once for all tests (the two runs in parallel).
+/// The shared book and the JSON of `ladder verify` at the same number of cases, made once.
 fn book() -> &'static (PathBuf, serde_json::Value) {
     static BOOK: OnceLock<(PathBuf, serde_json::Value)> = OnceLock::new();
     BOOK.get_or_init(|| {
-        let dir =
-            Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("book-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
         let verify = ladder()
             .args(["verify", "--json", "--cases", CASES])
-            .output();
-        let build = ladder()
-            .args(["book", "--cases", CASES, "--out"])
-            .arg(&dir)
             .output()
-            .expect("ladder book runs");
-        let verify = verify.expect("ladder verify runs");
-        assert!(
-            build.status.success(),
-            "ladder book failed: {}{}",
-            String::from_utf8_lossy(&build.stdout),
-            String::from_utf8_lossy(&build.stderr)
-        );
+            .expect("ladder verify runs");
         assert!(verify.status.success(), "ladder verify failed");
         let json = serde_json::from_slice(&verify.stdout).expect("JSON from ladder verify");
-        (dir, json)
+        (crate::built::book().clone(), json)
     })
 }
 
