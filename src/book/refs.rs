@@ -21,24 +21,27 @@ fn reference(s: &str) -> Option<(u32, usize)> {
     Some((base + digits.parse::<u32>().ok()?, close + 2))
 }
 
+/// Keep `depth` as the nesting inside headings, links and code blocks, where text stays text
+/// (no link is made there: a heading's own number, a link's words, code).
+pub fn track_shield(ev: &Event<'_>, depth: &mut usize) {
+    match ev {
+        Event::Start(Tag::Heading { .. } | Tag::Link { .. } | Tag::CodeBlock(_)) => *depth += 1,
+        Event::End(TagEnd::Heading(_) | TagEnd::Link | TagEnd::CodeBlock) => {
+            *depth = depth.saturating_sub(1)
+        }
+        _ => {}
+    }
+}
+
 /// `events` with every reference in plain text turned into a link to `target(N)`, when known.
 pub fn link_references<'a>(
     events: Vec<Event<'a>>,
     target: &dyn Fn(u32) -> Option<String>,
 ) -> Vec<Event<'a>> {
     let mut out = Vec::with_capacity(events.len());
-    // Depth inside headings, links and code blocks, where text stays text.
     let mut shielded = 0usize;
     for ev in events {
-        match &ev {
-            Event::Start(Tag::Heading { .. } | Tag::Link { .. } | Tag::CodeBlock(_)) => {
-                shielded += 1
-            }
-            Event::End(TagEnd::Heading(_) | TagEnd::Link | TagEnd::CodeBlock) => {
-                shielded = shielded.saturating_sub(1)
-            }
-            _ => {}
-        }
+        track_shield(&ev, &mut shielded);
         let Event::Text(text) = &ev else {
             out.push(ev);
             continue;

@@ -25,15 +25,7 @@ pub fn link_terms(events: Vec<Event<'_>>) -> Vec<Event<'_>> {
     let mut out = Vec::with_capacity(events.len());
     let mut shielded = 0usize;
     for ev in events {
-        match &ev {
-            Event::Start(Tag::Heading { .. } | Tag::Link { .. } | Tag::CodeBlock(_)) => {
-                shielded += 1
-            }
-            Event::End(TagEnd::Heading(_) | TagEnd::Link | TagEnd::CodeBlock) => {
-                shielded = shielded.saturating_sub(1)
-            }
-            _ => {}
-        }
+        super::refs::track_shield(&ev, &mut shielded);
         let Event::Text(text) = &ev else {
             out.push(ev);
             continue;
