@@ -18,6 +18,7 @@
 //! alignment classes are stripped (lines centred again) are each reported.
 
 use crate::built::book;
+use crate::common::copy_dir;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -105,20 +106,6 @@ fn pages(dir: &Path) -> Vec<String> {
         .collect();
     v.sort();
     v
-}
-
-/// Copy the book's files (not its subfolders' source pages: figures are copied) into `to`.
-fn copy_book(from: &Path, to: &Path) {
-    let _ = std::fs::remove_dir_all(to);
-    std::fs::create_dir_all(to.join("figures")).unwrap();
-    for e in std::fs::read_dir(from).unwrap().flatten() {
-        if e.path().is_file() {
-            std::fs::copy(e.path(), to.join(e.file_name())).unwrap();
-        }
-    }
-    for e in std::fs::read_dir(from.join("figures")).unwrap().flatten() {
-        std::fs::copy(e.path(), to.join("figures").join(e.file_name())).unwrap();
-    }
 }
 
 /// Lay out `pages` of the book copy `dir` in Chromium and return the measurements by page.
@@ -258,7 +245,8 @@ fn every_display_fits_its_box_with_its_number_and_aligned_at_equals() {
         return;
     };
     let copy = book().with_file_name(format!("book-chromium-all-{}", std::process::id()));
-    copy_book(book(), &copy);
+    let _ = std::fs::remove_dir_all(&copy);
+    copy_dir(book(), &copy);
     let pages = pages(&copy);
     let results = measure(&browser, &copy, &pages);
     assert_eq!(results.len(), pages.len(), "not every page was measured");
@@ -287,7 +275,8 @@ fn a_planted_wide_display_hidden_number_or_centred_lines_is_caught() {
         return;
     };
     let copy = book().with_file_name(format!("book-chromium-plant-{}", std::process::id()));
-    copy_book(book(), &copy);
+    let _ = std::fs::remove_dir_all(&copy);
+    copy_dir(book(), &copy);
     let page = std::fs::read_to_string(copy.join("02-point-a.html")).unwrap();
     let plant = |name: &str, from: &str, to: &str| {
         let bad = page.replacen(from, to, 1);

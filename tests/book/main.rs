@@ -4,6 +4,8 @@
 mod built;
 mod check;
 mod chromium;
+#[path = "../common/mod.rs"]
+mod common;
 mod docs;
 mod errata_doc;
 mod mathml;

@@ -5,6 +5,7 @@
 //! wrong units verdict, broken link, raw LaTeX, missing formula and missing erratum. Both commands run with 100 float cases per check (the
 //! statuses do not depend on the count), which keeps this test to a few seconds.
 
+use crate::common::copy_dir;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::OnceLock;
@@ -113,18 +114,6 @@ fn planted(tag: &str, file: &str, edit: impl Fn(&str) -> String) -> Vec<String> 
     let problems = crate::check::check(&copy, &crate::check::expected(json));
     let _ = std::fs::remove_dir_all(&copy);
     problems
-}
-
-fn copy_dir(from: &Path, to: &Path) {
-    std::fs::create_dir_all(to).unwrap();
-    for e in std::fs::read_dir(from).unwrap().flatten() {
-        let p = e.path();
-        if p.is_dir() {
-            copy_dir(&p, &to.join(e.file_name()));
-        } else {
-            std::fs::copy(&p, to.join(e.file_name())).unwrap();
-        }
-    }
 }
 
 fn caught(problems: &[String], what: &str) {

@@ -8,8 +8,8 @@
 //! The answers' references are the three-particle model of the harness; the closed forms in the
 //! file were derived by hand from (5), (8), (10) and checked once with sympy (not by the crate).
 
+use crate::common::copy_of_equations;
 use serde_json::Value;
-use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 fn ladder(args: &[&str]) -> Output {
@@ -23,25 +23,6 @@ fn ladder(args: &[&str]) -> Output {
 const ANSWERS: [&str; 8] = [
     "(P6)", "(P7)", "(P8)", "(P9)", "(P10)", "(P11)", "(P12)", "(P13)",
 ];
-
-/// A copy of `equations/` (with its figures) in a fresh temporary folder.
-fn copy_of_equations(tag: &str) -> PathBuf {
-    fn copy(from: &Path, to: &Path) {
-        std::fs::create_dir_all(to).expect("temp dir");
-        for e in std::fs::read_dir(from).expect("readable").flatten() {
-            let (src, dst) = (e.path(), to.join(e.file_name()));
-            if src.is_dir() {
-                copy(&src, &dst);
-            } else {
-                std::fs::copy(&src, &dst).expect("copy");
-            }
-        }
-    }
-    let dir = std::env::temp_dir().join(format!("ladder-problems-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    copy(&sliding_ladder::docs::default_dir(), &dir);
-    dir
-}
 
 fn row<'a>(v: &'a Value, label: &str) -> &'a Value {
     v["extensions"]

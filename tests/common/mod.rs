@@ -4,7 +4,7 @@
 
 use proptest::prelude::*;
 use sliding_ladder::registry::sample::{RawLadder, RawParticles, EXTRA, PER_PARTICLE};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// Cases per property: at least 1000 (`PROPTEST_CASES` or `LADDER_CASES` raise it).
@@ -81,6 +81,30 @@ pub fn tmp_dir(tag: &str, name: &str) -> PathBuf {
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
+}
+
+/// Copy the folder `from` into `to`, subfolders included (`to` is created).
+pub fn copy_dir(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to).expect("a writable temp dir");
+    for e in std::fs::read_dir(from)
+        .expect("a readable folder")
+        .flatten()
+    {
+        let (src, dst) = (e.path(), to.join(e.file_name()));
+        if src.is_dir() {
+            copy_dir(&src, &dst);
+        } else {
+            std::fs::copy(&src, &dst).expect("copy");
+        }
+    }
+}
+
+/// A fresh copy of the crate's `equations/` (with its figures), `ladder-{tag}-{pid}-equations`
+/// under the system temp directory: a folder to edit and hand to `--equations`.
+pub fn copy_of_equations(tag: &str) -> PathBuf {
+    let dir = tmp_dir(tag, "equations");
+    copy_dir(&sliding_ladder::docs::default_dir(), &dir);
+    dir
 }
 
 /// What one `ladder simulate` run produced.

@@ -3,6 +3,7 @@
 //! derivation method and a new integrator (from outside the crate, through its public API).
 //! The first extension, a display in markdown alone, is `tests/note/registry/markdown_alone.rs`.
 
+use crate::common::copy_of_equations;
 use serde_json::Value;
 use sliding_ladder::ladder::analysis::{torque_equation, AngularMomentum, Reference};
 use sliding_ladder::ladder::{Ladder, State};
@@ -14,25 +15,6 @@ use sliding_ladder::sim::integrators::fixed::{FixedMethod, FixedStep};
 use sliding_ladder::sim::integrators::{eval, Ode, Stepper};
 use sliding_ladder::sim::rigid::{Ladder as Scene, WallPhase};
 use std::process::Command;
-
-/// A fresh copy of the crate's `equations/` (with its figures) under the system's temp dir.
-fn copy_of_equations(name: &str) -> std::path::PathBuf {
-    fn copy(from: &std::path::Path, to: &std::path::Path) {
-        std::fs::create_dir_all(to).expect("temp dir");
-        for e in std::fs::read_dir(from).expect("readable").flatten() {
-            let (src, dst) = (e.path(), to.join(e.file_name()));
-            if src.is_dir() {
-                copy(&src, &dst);
-            } else {
-                std::fs::copy(&src, &dst).expect("copy");
-            }
-        }
-    }
-    let dir = std::env::temp_dir().join(format!("ladder-ext-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    copy(&sliding_ladder::docs::default_dir(), &dir);
-    dir
-}
 
 /// A fixed point R of the lab, at (l/2, 3l/2), and the torque law about it (display (92)).
 /// Reference (sympy, docs/note-as-source.md): dL_R/dt − τ_R = −lm(3g sin θ − 4lθ̈)/3, zero on the

@@ -11,8 +11,8 @@
 //! so the display holds on the motion, and off it breaks at its 2nd `=` only (script:
 //! docs/note-as-source.md, "The reference for (91)").
 
+use crate::common::copy_of_equations;
 use serde_json::Value;
-use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 /// Display (91): the torque analysis about Q, a quarter of the way from C to D, in a chapter
@@ -41,25 +41,6 @@ at C arm l cos θ/2; the coordinate force −m a_Q at the centre of mass adds it
 
 *Kind:* on-shell
 "#;
-
-/// A fresh copy of the crate's `equations/` (with its figures) under the system's temp dir.
-fn copy_of_equations(name: &str) -> PathBuf {
-    fn copy(from: &Path, to: &Path) {
-        std::fs::create_dir_all(to).expect("temp dir");
-        for e in std::fs::read_dir(from).expect("readable").flatten() {
-            let (src, dst) = (e.path(), to.join(e.file_name()));
-            if src.is_dir() {
-                copy(&src, &dst);
-            } else {
-                std::fs::copy(&src, &dst).expect("copy");
-            }
-        }
-    }
-    let dir = std::env::temp_dir().join(format!("ladder-md-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    copy(&sliding_ladder::docs::default_dir(), &dir);
-    dir
-}
 
 fn ladder(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_ladder"))
