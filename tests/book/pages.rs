@@ -34,11 +34,13 @@ fn book() -> &'static (PathBuf, serde_json::Value) {
 fn every_display_is_mathml_with_the_status_of_ladder_verify_and_every_link_resolves() {
     let (dir, json) = book();
     let expect = crate::check::expected(json);
-    assert_eq!(
-        expect.displays.len(),
-        103,
-        "(1)-(90), (P1)-(P5) and the problems' (P6)-(P13)"
+    // Every display of the note (its numbering, (1)-(90), is the print's and does not grow),
+    // and beyond it whatever equations/ holds (no count of extensions pinned here).
+    assert!(
+        (1..=90).all(|n| expect.displays.contains_key(&n)),
+        "the book's JSON lacks a display of the note"
     );
+    assert!(expect.displays.len() > 90, "no display beyond the note");
     assert_eq!(expect.errata.len(), 5);
     let problems = crate::check::check(dir, &expect);
     assert!(problems.is_empty(), "{}", problems.join("\n"));
