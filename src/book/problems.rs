@@ -1,7 +1,9 @@
 //! The problems page (`equations/problems.md` → `problems.html`): each exercise's answer is a
 //! numbered display checked like the note's own, and its worked solution, written under a
 //! `#### Solution` heading in the markdown, is folded here into a `<details>` (no script) so a
-//! student can try first.
+//! student can try first. The harness's declarations of the answers' points and symbols
+//! (`*Points:*`, `*Symbols:*`: quantity ids and dimensions, for the checks) are folded too, under
+//! a plain list of what each symbol means ([`fold_declarations`]).
 
 /// The heading that starts a worked solution, as the markdown renderer writes it.
 const SOLUTION: &str = "<h4>Solution</h4>";
@@ -28,6 +30,40 @@ pub fn fold_solutions(html: &str) -> String {
     out
 }
 
+/// Where the rendered `*Points:*` paragraph and `*Symbols:*` list begin.
+const POINTS: &str = "<p><em>Points:</em>";
+const SYMBOLS: &str = "<p><em>Symbols:</em></p>";
+
+/// Fold the harness's declarations (`*Points:*` and the `*Symbols:*` list that follows it) into
+/// a `<details>`, and put before it, for a student, each symbol with its meaning alone (the list
+/// item's math and the words after its `[dimension]: `).
+pub fn fold_declarations(html: &str) -> String {
+    let (Some(start), Some(sym)) = (html.find(POINTS), html.find(SYMBOLS)) else {
+        return html.to_string();
+    };
+    let Some(end) = html[sym..].find("</ul>").map(|k| sym + k + "</ul>".len()) else {
+        return html.to_string();
+    };
+    let items: Vec<String> = html[sym..end]
+        .split("<li>")
+        .skip(1)
+        .filter_map(|li| {
+            let li = li.split("</li>").next()?;
+            let (math, rest) = li.split_once(" = <code>")?;
+            let meaning = rest.split_once("]: ").map(|(_, m)| m)?;
+            Some(format!("<li>{math}: {meaning}</li>"))
+        })
+        .collect();
+    format!(
+        "{}<p>The symbols of the answers:</p>\n<ul>\n{}\n</ul>\n<details class=\"harness\">\
+         <summary>How the checks read these symbols</summary>\n{}</details>{}",
+        &html[..start],
+        items.join("\n"),
+        &html[start..end],
+        &html[end..]
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -41,5 +77,20 @@ mod tests {
         assert!(f.contains("<summary>Worked solution</summary><p>a</p></details>\n<h2>P 2</h2>"));
         assert!(f.ends_with("<p>b</p></details>\n"));
         assert!(!f.contains(SOLUTION));
+    }
+
+    #[test]
+    fn fold_declarations_keeps_each_meaning_and_folds_the_ids() {
+        let html = "<p>intro</p>\n<p><em>Points:</em> Q = ladder:1/4</p>\n\
+                    <p><em>Symbols:</em></p>\n<ul>\n<li><math>x</math> = <code>position:Q.x</code> \
+                    [L]: abscissa of Q</li>\n</ul>\n<h2>Problem 1</h2>";
+        let f = fold_declarations(html);
+        assert!(f.starts_with("<p>intro</p>\n<p>The symbols of the answers:</p>"));
+        assert!(f.contains("<li><math>x</math>: abscissa of Q</li>"), "{f}");
+        let open = f.find("<details class=\"harness\">").expect("folded");
+        assert!(f.find("<code>position:Q.x</code>").expect("kept") > open);
+        assert!(f.ends_with("</details>\n<h2>Problem 1</h2>"), "{f}");
+        // A page without declarations is left as it is.
+        assert_eq!(fold_declarations("<p>x</p>"), "<p>x</p>");
     }
 }

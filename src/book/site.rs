@@ -227,7 +227,9 @@ pub fn build(root: &Path, data: &BookData) -> Built {
         let body = bodies.remove(f).unwrap_or_default();
         let body = match f.as_str() {
             "ERRATA.md" => generated::errata_page(data, &home, &body, &mut problems),
-            "problems.md" => super::problems::fold_solutions(&body),
+            "problems.md" => {
+                super::problems::fold_declarations(&super::problems::fold_solutions(&body))
+            }
             _ => body,
         };
         let title = sources.get(f).map(|s| title_of(s)).unwrap_or_default();

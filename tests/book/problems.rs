@@ -83,6 +83,24 @@ fn every_answer_is_checked_like_the_notes_displays_and_its_solution_is_folded() 
         );
     }
     assert!(!page.contains("<h4>Solution</h4>"), "an unfolded solution");
+    // The harness's ids (`position:Q.x`) are folded away from the student's reading, under a
+    // list of what each symbol means.
+    let open = page
+        .find("<details class=\"harness\">")
+        .expect("declarations folded");
+    let close = open + page[open..].find("</details>").expect("closed");
+    assert!(page[..open].contains("The symbols of the answers:"));
+    for id in [
+        "<code>position:",
+        "<code>velocity:",
+        "<code>kinetic_energy</code>",
+    ] {
+        assert!(page[open..close].contains(id), "{id} not declared");
+        assert!(
+            !page[..open].contains(id) && !page[close..].contains(id),
+            "{id} shown unfolded"
+        );
+    }
 }
 
 /// The wall force of Problem 4 with 3 cos θ − 1 for 3 cos θ − 2 (it would leave the wall at
@@ -141,4 +159,34 @@ $$",
     );
     let _ = std::fs::remove_dir_all(&book);
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The number written right after `key` on a page (up to the next space).
+fn number_after(page: &str, key: &str) -> f64 {
+    let at = page.find(key).unwrap_or_else(|| panic!("no '{key}'")) + key.len();
+    page[at..]
+        .split(' ')
+        .next()
+        .and_then(|w| w.parse().ok())
+        .unwrap_or_else(|| panic!("no number after '{key}'"))
+}
+
+/// Problem 6's solution quotes the landing speed of the simulated fall that the index reports:
+/// the figure typed in the markdown must be the one the index computes, and the closed form
+/// √((2/9) g l cos³ θ0) to the four decimals printed.
+#[test]
+fn problem_6_quotes_the_landing_speed_the_index_computes() {
+    let book = crate::built::book();
+    let read = |f: &str| std::fs::read_to_string(book.join(f)).expect("page");
+    let computed = number_after(&read("index.html"), "its centre moving at Ẋ = ");
+    let quoted = number_after(&read("problems.html"), "l = 1 m: Ẋ = ");
+    assert_eq!(quoted, computed, "the solution's figure is not the index's");
+    let closed = (2.0 / 9.0 * 9.81 * 0.3f64.cos().powi(3)).sqrt();
+    // Both pages print four decimals: the closed form lies within half a unit of the last.
+    assert!((closed - quoted).abs() <= 0.5e-4, "{closed} vs {quoted}");
+    // The check reads the figure it is given: another speed is refused.
+    assert_ne!(
+        number_after("moving at Ẋ = 1.3788 m/s", "moving at Ẋ = "),
+        computed
+    );
 }

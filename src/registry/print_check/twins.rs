@@ -50,8 +50,9 @@ pub fn indistinguishable(e: &Equation) -> Vec<Twin> {
     let table = crate::registry::symbol_table();
     // Each symbol's values are computed once: the pair loop below asks for a table entry's
     // values once per printed symbol, and a value at an exact point costs big-integer gcds.
-    let memo: std::cell::RefCell<std::collections::HashMap<(String, bool), Option<Vec<Vec<Rational>>>>> =
-        Default::default();
+    let memo: std::cell::RefCell<
+        std::collections::HashMap<(String, bool), Option<Vec<Vec<Rational>>>>,
+    > = Default::default();
     let values = |key: &str, milne: bool| -> Option<Vec<Vec<Rational>>> {
         if let Some(v) = memo.borrow().get(&(key.to_string(), milne)) {
             return v.clone();
@@ -73,7 +74,8 @@ pub fn indistinguishable(e: &Equation) -> Vec<Twin> {
             })
             .collect();
         let vals = vals.filter(|v| v.iter().flatten().any(|x| !x.is_zero()));
-        memo.borrow_mut().insert((key.to_string(), milne), vals.clone());
+        memo.borrow_mut()
+            .insert((key.to_string(), milne), vals.clone());
         vals
     };
     let mut out: Vec<Twin> = Vec::new();
