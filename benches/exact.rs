@@ -1,7 +1,7 @@
 //! Cost of the exact phase-one solution: `PhaseOne::new` + `separation()` for several starts,
 //! `separation()` alone, θ(t), t(θ); and, as a peer in the same run, the textbook separation
 //! time F(ψ_s|m)/Ω from `ellip::ellipf` for a start from rest (which loses digits near the
-//! separatrix, see src/sim/exact/mod.rs). Run: `cargo bench --bench exact`.
+//! separatrix, see src/sim/exact/mod.rs). Run: `cargo bench --features bench --bench exact`.
 use criterion::{criterion_group, criterion_main, Criterion};
 use sliding_ladder::sim::exact::PhaseOne;
 use std::hint::black_box;

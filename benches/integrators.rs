@@ -7,8 +7,8 @@
 //! separation with event location is timed too, beside one closed-form evaluation, and the whole
 //! fall to flat (reference: the closed-form separation time plus the floor phase's duration
 //! by quadrature of its energy integral, `exact::flat`; the Taylor method at 1e-16 is compared
-//! with it on stderr). Run: `cargo bench --bench integrators`; only the Taylor
-//! comparisons of issue 13: `cargo bench --bench integrators -- at-1e-12`, which ends with a
+//! with it on stderr). Run: `cargo bench --features bench --bench integrators`; only the Taylor
+//! comparisons of issue 13: `cargo bench --features bench --bench integrators -- at-1e-12`, which ends with a
 //! table of the medians of that run and their ratios to the Taylor method (with the load
 //! average: on a shared machine only ratios within one run are comparable).
 

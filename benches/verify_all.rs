@@ -2,8 +2,8 @@
 //! points, the print, the symbolic proofs), the docs, the methods and the floor-phase extension,
 //! as `ladder verify` runs them (two worker threads), for the default configuration (1000 float
 //! states, 3 exact points per check) and the target of issue 10 (10,000 float states, 100 exact
-//! points; goal ≤ 10 s). Run: `cargo bench --bench verify_all` (about 10 runs of each; only the
-//! target: `cargo bench --bench verify_all -- target`). `proofs_only` is every symbolic proof
+//! points; goal ≤ 10 s). Run: `cargo bench --features bench --bench verify_all` (about 10 runs of each; only the
+//! target: `cargo bench --features bench --bench verify_all -- target`). `proofs_only` is every symbolic proof
 //! (each check of the 95 displays and each printed form, one thread) without the sampled checks:
 //! its median divided by 95 is the time per proof. The machine is shared: quote the median and
 //! the load (`uptime`) it was measured under.

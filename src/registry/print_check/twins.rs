@@ -32,6 +32,9 @@ pub struct Twin {
     pub quantities: (String, String),
 }
 
+/// A symbol's components at each exact state (`None`: it does not evaluate, or is zero there).
+type Values = Option<Vec<Vec<Rational>>>;
+
 /// The pairs of symbols the display's states cannot tell apart.
 pub fn indistinguishable(e: &Equation) -> Vec<Twin> {
     let (Ok((_, chains)), Some(sample)) = (print_chains(e.number, e.latex()), print_sample(e))
@@ -50,10 +53,9 @@ pub fn indistinguishable(e: &Equation) -> Vec<Twin> {
     let table = crate::registry::symbol_table();
     // Each symbol's values are computed once: the pair loop below asks for a table entry's
     // values once per printed symbol, and a value at an exact point costs big-integer gcds.
-    let memo: std::cell::RefCell<
-        std::collections::HashMap<(String, bool), Option<Vec<Vec<Rational>>>>,
-    > = Default::default();
-    let values = |key: &str, milne: bool| -> Option<Vec<Vec<Rational>>> {
+    let memo: std::cell::RefCell<std::collections::HashMap<(String, bool), Values>> =
+        Default::default();
+    let values = |key: &str, milne: bool| -> Values {
         if let Some(v) = memo.borrow().get(&(key.to_string(), milne)) {
             return v.clone();
         }
