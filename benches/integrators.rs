@@ -23,16 +23,18 @@ use sliding_ladder::sim::integrators::dop853::Dop853;
 use sliding_ladder::sim::integrators::dopri5::Dopri5;
 use sliding_ladder::sim::integrators::taylor::Taylor;
 use sliding_ladder::sim::integrators::{Control, Stepper};
-use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+use sliding_ladder::sim::rigid::WallPhase;
+
+use sliding_ladder::ladder::Ladder;
 use sliding_ladder::sim::scene::{End, Scene};
 use sliding_ladder::sim::units::Units;
 use std::hint::black_box;
 use std::time::Duration;
 
-const LADDER: Ladder = Ladder {
-    mass: 1.0,
-    half_length: 1.0,
-    gravity: 9.81,
+const LADDER: Ladder<f64> = Ladder {
+    m: 1.0,
+    l: 1.0,
+    g: 9.81,
 };
 /// (name, θ0, θ̇0)
 const SCENES: [(&str, f64, f64); 3] = [

@@ -64,7 +64,7 @@ pub fn simulate(scene_path: &Path, json: bool, out: Option<&Path>) -> ExitCode {
     // A floor phase whose top went through the wall is not the model's motion (exit 1).
     let inside = outcome
         .floor_report
-        .and_then(|r| top_inside_wall(&r, scene.ladder.half_length));
+        .and_then(|r| top_inside_wall(&r, scene.ladder.l));
     if let Some(why) = &inside {
         eprintln!("error: {}: {why}", scene.file);
     }

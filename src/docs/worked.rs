@@ -36,7 +36,7 @@ pub fn example_state(on_motion: bool) -> (Ladder<f64>, State<f64>) {
     if on_motion {
         st.accel = angular_acceleration(&ladder, &st);
         // d/dt of (5): Ω² cos θ θ̇ (only derivatives of θ̈-dependent quantities need it).
-        st.jerk = ladder.capital_omega_squared() * cos * st.rate;
+        st.jerk = ladder.big_omega2() * cos * st.rate;
     }
     (ladder, st)
 }

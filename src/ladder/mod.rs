@@ -26,8 +26,8 @@ pub mod torque;
 
 use crate::scalar::Scalar;
 
-/// The ladder's parameters.
-#[derive(Clone, Debug)]
+/// The ladder's parameters: in f64 for the simulator, in any [`Scalar`] for the checks.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ladder<T> {
     /// Mass m.
     pub m: T,
@@ -46,9 +46,10 @@ impl<T: Scalar> Ladder<T> {
             g: T::constant(self.g.clone()),
         }
     }
-    /// Ω² = 3g/(4l), the rate constant of the equation of motion (5).
-    pub fn capital_omega_squared(&self) -> T {
-        T::ratio(3, 4) * self.g.clone() / self.l.clone()
+    /// Ω² = 3g/(4l), the rate constant of the equation of motion (5), formed as 3g/(4l) (in f64
+    /// the simulator's rounding).
+    pub fn big_omega2(&self) -> T {
+        T::int(3) * self.g.clone() / (T::int(4) * self.l.clone())
     }
 }
 

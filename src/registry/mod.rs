@@ -188,10 +188,10 @@ pub enum Fns {
     Floor(FloorFns),
 }
 
-/// The table entry of a chain function: `named_fns!(Ladder, eq25)` is `("eq25", Fns::Ladder(..))`.
+/// The table entry of a chain function: `named_fns!(Ladder<f64>, eq25)` is `("eq25", Fns::Ladder(..))`.
 #[macro_export]
 macro_rules! named_fns {
-    (Ladder, $f:ident) => {
+    (Ladder<f64>, $f:ident) => {
         (
             stringify!($f),
             $crate::registry::Fns::Ladder($crate::ladder_fns!($f)),

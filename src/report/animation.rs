@@ -73,8 +73,8 @@ pub fn frames(scene: &Scene, o: &Outcome) -> Result<Animation, String> {
         }
     }
     let separation = frames.iter().position(|s| s.phase >= 2);
-    let l = scene.ladder.half_length;
-    let weight = scene.ladder.mass * scene.ladder.gravity;
+    let l = scene.ladder.l;
+    let weight = scene.ladder.m * scene.ladder.g;
     let biggest = frames
         .iter()
         .filter_map(|s| s.forces)
@@ -193,9 +193,9 @@ impl Animation {
 pub fn svg(scene: &Scene, o: &Outcome) -> Result<String, String> {
     let a = frames(scene, o)?;
     let lad = &scene.ladder;
-    let l = lad.half_length;
+    let l = lad.l;
     let k = a.metres_per_newton;
-    let weight = lad.mass * lad.gravity;
+    let weight = lad.m * lad.g;
     let shown = |f: f64| f.abs() * k * a.px_per_metre >= 1.0;
     let mut out = String::new();
     let _ = write!(

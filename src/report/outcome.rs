@@ -194,7 +194,7 @@ pub fn summary(scene: &Scene, o: &Outcome) -> String {
             "  floor phase  min F_f = {} N (> 0: no lift-off)   min top clearance = {:.3e} m ({})\n",
             sig(r.floor_force_min, 10),
             r.top_clearance_min,
-            if top_inside_wall(&r, scene.ladder.half_length).is_none() { "the top never returns to the wall" } else { "TOP INSIDE THE WALL: not the model's motion" }
+            if top_inside_wall(&r, scene.ladder.l).is_none() { "the top never returns to the wall" } else { "TOP INSIDE THE WALL: not the model's motion" }
         );
     }
     if let Some(e) = o.momentum_error {

@@ -255,7 +255,7 @@ fn complete<S: Scalar>(
         }
         None => {
             st.accel = angular_acceleration(&ladder, &st);
-            st.jerk = jerk.unwrap_or_else(|| ladder.capital_omega_squared() * cos * rate);
+            st.jerk = jerk.unwrap_or_else(|| ladder.big_omega2() * cos * rate);
         }
     }
     (ladder, st)

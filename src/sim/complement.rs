@@ -21,8 +21,10 @@
 use super::event::{Direction, Event};
 use super::integrators::taylor::{separation_factor_on, value_and_rate_on, Series};
 use super::integrators::Ode;
-use super::rigid::{event_safe_step, Ladder};
+use super::rigid::event_safe_step;
+
 use super::run::Observer;
+use crate::ladder::Ladder;
 use num_dual::DualNum;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 
@@ -49,7 +51,7 @@ pub struct ComplementWall {
 
 impl ComplementWall {
     /// The complement wall phase of `ladder`.
-    pub fn new(ladder: &Ladder) -> Self {
+    pub fn new(ladder: &Ladder<f64>) -> Self {
         let big_omega2 = ladder.big_omega2();
         ComplementWall {
             big_omega2,
@@ -151,8 +153,8 @@ pub fn floor_theta_acceleration<D: DualNum<Primitive = f64> + Copy>(
 
 /// The floor force of phase 2 (`floor::floor_force`) from (φ, φ̇):
 /// F_f = m (g − l (cos φ θ̈ + sin φ φ̇²)).
-pub fn floor_force(ladder: &Ladder, phi: f64, rate: f64) -> f64 {
-    let (m, l, g) = (ladder.mass, ladder.half_length, ladder.gravity);
+pub fn floor_force(ladder: &Ladder<f64>, phi: f64, rate: f64) -> f64 {
+    let (m, l, g) = (ladder.m, ladder.l, ladder.g);
     let acc = floor_theta_acceleration(g / l, phi, rate);
     let (s, c) = phi.sin_cos();
     m * (g - l * (c * acc + s * rate * rate))
@@ -168,11 +170,11 @@ pub struct ComplementFloor {
 
 impl ComplementFloor {
     /// The complement floor phase of `ladder`.
-    pub fn new(ladder: &Ladder) -> Self {
+    pub fn new(ladder: &Ladder<f64>) -> Self {
         ComplementFloor {
-            g_over_l: ladder.gravity / ladder.half_length,
+            g_over_l: ladder.g / ladder.l,
             big_omega: ladder.big_omega2().sqrt(),
-            half_length: ladder.half_length,
+            half_length: ladder.l,
         }
     }
 }
@@ -199,8 +201,8 @@ impl Ode<4> for ComplementFloor {
 
 /// Phase-2 start in the complement from the separation (φ_s, θ̇_s): X = l cos φ (= l sin θ),
 /// φ̇ = −θ̇, Ẋ = l sin φ θ̇ (eq. (7), `floor::state_at_separation`).
-pub fn floor_state_at_separation(ladder: &Ladder, phi: f64, rate: f64) -> [f64; 4] {
-    let l = ladder.half_length;
+pub fn floor_state_at_separation(ladder: &Ladder<f64>, phi: f64, rate: f64) -> [f64; 4] {
+    let l = ladder.l;
     [phi, l * phi.cos(), -rate, l * phi.sin() * rate]
 }
 
@@ -256,17 +258,16 @@ mod tests {
     #[test]
     fn the_lift_off_value_is_the_floor_force_of_the_floor_phase() {
         let ladder = Ladder {
-            mass: 3.0,
-            half_length: 0.7,
-            gravity: 9.81,
+            m: 3.0,
+            l: 0.7,
+            g: 9.81,
         };
         let u = f64::EPSILON / 2.0;
         for (phi, rate) in [(1.2, -0.4), (0.6, 2.5), (0.05, 4.0), (1e-3, 0.1)] {
             let got = floor_force(&ladder, phi, rate);
             let want = super::super::floor::floor_force(&ladder, FRAC_PI_2 - phi, -rate);
-            let acc = floor_theta_acceleration(ladder.gravity / ladder.half_length, phi, rate);
-            let scale =
-                ladder.mass * (ladder.gravity + ladder.half_length * (acc.abs() + rate * rate));
+            let acc = floor_theta_acceleration(ladder.g / ladder.l, phi, rate);
+            let scale = ladder.m * (ladder.g + ladder.l * (acc.abs() + rate * rate));
             assert!(
                 (got - want).abs() <= 16.0 * u * scale,
                 "φ = {phi}, φ̇ = {rate}: {got} against {want}"
@@ -281,14 +282,14 @@ mod tests {
     #[test]
     fn the_start_in_theta_is_the_complement_s_start() {
         let ladder = Ladder {
-            mass: 2.0,
-            half_length: 0.6,
-            gravity: 9.81,
+            m: 2.0,
+            l: 0.6,
+            g: 9.81,
         };
         for (theta, rate) in [(0.84, 1.1), (1.2, 0.3), (0.3, 2.0)] {
             let got = super::super::floor::state_at_separation(&ladder, theta, rate);
             let want = floor_to_theta(&floor_state_at_separation(&ladder, complement(theta), rate));
-            let bound = 8.0 * f64::EPSILON * ladder.half_length * (rate.abs() + 1.0);
+            let bound = 8.0 * f64::EPSILON * ladder.l * (rate.abs() + 1.0);
             for i in 0..4 {
                 assert!(
                     (got[i] - want[i]).abs() <= bound,
@@ -318,9 +319,9 @@ mod tests {
     #[test]
     fn the_complement_equations_are_the_wall_equations() {
         let sys = ComplementWall::new(&Ladder {
-            mass: 1.0,
-            half_length: 1.0,
-            gravity: 9.81,
+            m: 1.0,
+            l: 1.0,
+            g: 9.81,
         });
         let (theta, rate) = (1.2f64, 0.7f64);
         let y = [complement(theta), -rate];

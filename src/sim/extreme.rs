@@ -21,10 +21,12 @@ use super::integrators::{Control, Stats, Stepper};
 pub use super::lead_in::{linear_lead_in, LINEAR_AMPLITUDE};
 use super::near_release::{self, NearRelease};
 use super::outcome::SeparationState;
-use super::rigid::{separation_factor, Ladder, WallPhase};
+use super::rigid::{separation_factor, WallPhase};
+
 use super::run::{integrate_phase, Observer, RunError};
 use super::scene::MAX_END_TIME;
 use super::start_margin::Lean;
+use crate::ladder::Ladder;
 
 /// How the wall phase from a start ends.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -51,7 +53,7 @@ impl Event<2> for Factor {
 /// The wall phase of `ladder` from (θ0, θ̇0) with `method` at `control` (in the ladder's own
 /// seconds), at most `max_steps` steps. Returns how it ends and the integrator's counters.
 pub fn wall_release(
-    ladder: &Ladder,
+    ladder: &Ladder<f64>,
     theta0: f64,
     rate0: f64,
     method: &str,
@@ -74,7 +76,7 @@ pub fn wall_release(
         return Ok((WallRelease::AtOnce, Stats::default()));
     }
     // The longest fall the scenes allow (1e4 s at l = g = 1 m, s⁻²), in this ladder's units.
-    let t_end = MAX_END_TIME * (ladder.half_length / ladder.gravity).sqrt();
+    let t_end = MAX_END_TIME * (ladder.l / ladder.g).sqrt();
     if let Some(d) = margin {
         let model = NearRelease::new(big_omega2, Lean::Theta(theta0), rate0, d);
         let mut stepper = AnyStepper::new(method, control, 0.0, [0.0, 0.0])

@@ -11,7 +11,9 @@
 //! State layout for the integrators: `[θ, X, θ̇, Ẋ]`.
 
 use super::integrators::Ode;
-use super::rigid::{event_safe_step, Ladder};
+use super::rigid::event_safe_step;
+
+use crate::ladder::Ladder;
 use num_dual::DualNum;
 
 /// Phase-2 equation of motion: θ̈ = sin θ (g/l − cos θ θ̇²) / (sin² θ + 1/3).
@@ -32,15 +34,15 @@ pub fn centre_acceleration_x() -> f64 {
 
 /// Floor force while only the floor holds: F_f = m (g − l sin θ θ̈ − l cos θ θ̇²), from
 /// F_f − m g = m ÿ with y = l cos θ. Lift-off would be F_f < 0.
-pub fn floor_force(ladder: &Ladder, theta: f64, rate: f64) -> f64 {
-    let (m, l, g) = (ladder.mass, ladder.half_length, ladder.gravity);
+pub fn floor_force(ladder: &Ladder<f64>, theta: f64, rate: f64) -> f64 {
+    let (m, l, g) = (ladder.m, ladder.l, ladder.g);
     let acc = angular_acceleration(g / l, theta, rate);
     m * (g - l * (theta.sin() * acc + theta.cos() * rate * rate))
 }
 
 /// Energy in phase 2: E = ½ m Ẋ² + ½ m l² (sin² θ + 1/3) θ̇² + m g l cos θ.
-pub fn energy(ladder: &Ladder, theta: f64, rate: f64, centre_velocity_x: f64) -> f64 {
-    let (m, l, g) = (ladder.mass, ladder.half_length, ladder.gravity);
+pub fn energy(ladder: &Ladder<f64>, theta: f64, rate: f64, centre_velocity_x: f64) -> f64 {
+    let (m, l, g) = (ladder.m, ladder.l, ladder.g);
     let s = theta.sin();
     0.5 * m * centre_velocity_x.powi(2)
         + 0.5 * m * l * l * (s * s + 1.0 / 3.0) * rate * rate
@@ -48,13 +50,13 @@ pub fn energy(ladder: &Ladder, theta: f64, rate: f64, centre_velocity_x: f64) ->
 }
 
 /// Abscissa of the top C: X − l sin θ (the wall is x = 0; the top is clear of it when > 0).
-pub fn top_x(ladder: &Ladder, theta: f64, centre_x: f64) -> f64 {
-    centre_x - ladder.half_length * theta.sin()
+pub fn top_x(ladder: &Ladder<f64>, theta: f64, centre_x: f64) -> f64 {
+    centre_x - ladder.l * theta.sin()
 }
 
 /// Phase-2 state at separation from the wall phase's (θ, θ̇): X = l sin θ, Ẋ = l cos θ θ̇ (eq. 7).
-pub fn state_at_separation(ladder: &Ladder, theta: f64, rate: f64) -> [f64; 4] {
-    let l = ladder.half_length;
+pub fn state_at_separation(ladder: &Ladder<f64>, theta: f64, rate: f64) -> [f64; 4] {
+    let l = ladder.l;
     [theta, l * theta.sin(), rate, l * theta.cos() * rate]
 }
 
@@ -68,11 +70,11 @@ pub struct FloorPhase {
 
 impl FloorPhase {
     /// The floor phase of `ladder`.
-    pub fn new(ladder: &Ladder) -> Self {
+    pub fn new(ladder: &Ladder<f64>) -> Self {
         FloorPhase {
-            g_over_l: ladder.gravity / ladder.half_length,
+            g_over_l: ladder.g / ladder.l,
             big_omega: ladder.big_omega2().sqrt(),
-            half_length: ladder.half_length,
+            half_length: ladder.l,
         }
     }
 }

@@ -20,24 +20,24 @@
 //! end; the wall is behind the ladder, which moves away from it, Ẋ ≥ 0).
 
 use super::outcome::{FlatState, Sample, Slide};
-use super::rigid::Ladder;
+use crate::ladder::Ladder;
 use std::f64::consts::FRAC_PI_2;
 
 /// The vertical impulses (P_C, P_D) of the perfectly inelastic impact at θ = π/2 with angular
 /// rate `rate` (module docs), N·s.
-pub fn impulses(ladder: &Ladder, rate: f64) -> (f64, f64) {
-    let p = ladder.mass * ladder.half_length * rate;
+pub fn impulses(ladder: &Ladder<f64>, rate: f64) -> (f64, f64) {
+    let p = ladder.m * ladder.l * rate;
     (2.0 / 3.0 * p, p / 3.0)
 }
 
 /// The slide after the ladder lay flat at `flat`, up to `t_end` (module docs).
-pub fn slide(ladder: &Ladder, flat: &FlatState, t_end: f64) -> Slide {
-    let l = ladder.half_length;
+pub fn slide(ladder: &Ladder<f64>, flat: &FlatState, t_end: f64) -> Slide {
+    let l = ladder.l;
     Slide {
         impact_time: flat.time,
         centre_velocity_x: flat.centre_velocity_x,
         centre_x_end: flat.centre_x + flat.centre_velocity_x * (t_end - flat.time),
-        energy_lost: 2.0 / 3.0 * l * flat.rate * flat.rate / ladder.gravity,
+        energy_lost: 2.0 / 3.0 * l * flat.rate * flat.rate / ladder.g,
     }
 }
 
@@ -55,18 +55,18 @@ pub fn lying_flat_sample(t: f64, centre_x: f64) -> Sample {
 }
 
 /// The floor force at the foot D while lying flat: m g/2 (module docs).
-pub fn lying_flat_floor_force(ladder: &Ladder) -> f64 {
-    0.5 * ladder.mass * ladder.gravity
+pub fn lying_flat_floor_force(ladder: &Ladder<f64>) -> f64 {
+    0.5 * ladder.m * ladder.g
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    const LADDER: Ladder = Ladder {
-        mass: 3.0,
-        half_length: 0.7,
-        gravity: 9.81,
+    const LADDER: Ladder<f64> = Ladder {
+        m: 3.0,
+        l: 0.7,
+        g: 9.81,
     };
 
     /// The impulses satisfy the two impulse-momentum laws of the rod and leave both ends at
@@ -76,9 +76,9 @@ mod tests {
     #[test]
     fn the_impulses_stop_both_ends_and_push_up() {
         let ladder = Ladder {
-            mass: 3.0,
-            half_length: 0.75,
-            gravity: 9.81,
+            m: 3.0,
+            l: 0.75,
+            g: 9.81,
         };
         let (m, l, w) = (3.0, 0.75, 2.0);
         let (pc, pd) = impulses(&ladder, w);
@@ -106,7 +106,7 @@ mod tests {
             centre_velocity_y: -0.7 * 2.3,
         };
         let s = slide(&LADDER, &flat, 3.25);
-        let (m, l, g) = (LADDER.mass, LADDER.half_length, LADDER.gravity);
+        let (m, l, g) = (LADDER.m, LADDER.l, LADDER.g);
         let kinetic =
             0.5 * m * (l * flat.rate).powi(2) + 0.5 * (m * l * l / 3.0) * flat.rate.powi(2);
         let u = f64::EPSILON;

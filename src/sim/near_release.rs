@@ -39,9 +39,11 @@
 use super::event::{Direction, Event};
 use super::integrators::taylor::{sin_cos_coefficient, Series, MAX_ORDER};
 use super::integrators::{Ode, Stepper};
-use super::rigid::{event_safe_step, taylor_event_safe_step, Ladder};
+use super::rigid::{event_safe_step, taylor_event_safe_step};
+
 use super::run::{integrate_phase, Observer, PhaseEnd, RunError};
 use super::start_margin::{start_margin, Lean};
+use crate::ladder::Ladder;
 use num_dual::DualNum;
 
 /// Least κ = Ω² cos θ0 / D0 at which the wall phase runs in the deviation form.
@@ -57,7 +59,7 @@ pub fn applies(big_omega2: f64, cos0: f64, rate0: f64) -> bool {
 
 /// D0 = Ω² cos θ0 − θ̇0² of `ladder` (s⁻²) to f64's precision when the start is near the
 /// release push ([`applies`]), else None (the f64 factor is then good to a few ulps).
-pub fn near_margin(ladder: &Ladder, lean: Lean, rate0: f64) -> Option<f64> {
+pub fn near_margin(ladder: &Ladder<f64>, lean: Lean, rate0: f64) -> Option<f64> {
     applies(ladder.big_omega2(), lean.cos(), rate0).then(|| start_margin(ladder, lean, rate0))
 }
 

@@ -5,25 +5,8 @@
 //! State layout for the integrators: `[θ, θ̇]`.
 
 use super::integrators::Ode;
+use crate::ladder::Ladder;
 use num_dual::DualNum;
-
-/// The ladder of the note: mass m, half length l (the ladder is 2l long), gravity g.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Ladder {
-    /// m, kg.
-    pub mass: f64,
-    /// l, m (half the ladder's length; the centre of mass is at distance l from either end).
-    pub half_length: f64,
-    /// g, m/s².
-    pub gravity: f64,
-}
-
-impl Ladder {
-    /// Ω² = 3g/(4l), the coefficient of eq. (5).
-    pub fn big_omega2(&self) -> f64 {
-        3.0 * self.gravity / (4.0 * self.half_length)
-    }
-}
 
 /// Eq. (5): θ̈ = (3g/4l) sin θ = Ω² sin θ.
 pub fn angular_acceleration<D: DualNum<Primitive = f64> + Copy>(big_omega2: f64, theta: D) -> D {
@@ -39,24 +22,20 @@ pub fn separation_factor(big_omega2: f64, theta: f64, rate: f64) -> f64 {
 }
 
 /// Eq. (14) on the motion (5): the wall force F_w = m l sin θ (Ω² cos θ − θ̇²), along +x at C.
-pub fn wall_force(ladder: &Ladder, theta: f64, rate: f64) -> f64 {
-    ladder.mass
-        * ladder.half_length
-        * theta.sin()
-        * separation_factor(ladder.big_omega2(), theta, rate)
+pub fn wall_force(ladder: &Ladder<f64>, theta: f64, rate: f64) -> f64 {
+    ladder.m * ladder.l * theta.sin() * separation_factor(ladder.big_omega2(), theta, rate)
 }
 
 /// Eq. (15) on the motion (5): the floor force F_f = m g − m l (sin θ θ̈ + cos θ θ̇²), along +y at D.
-pub fn floor_force(ladder: &Ladder, theta: f64, rate: f64) -> f64 {
+pub fn floor_force(ladder: &Ladder<f64>, theta: f64, rate: f64) -> f64 {
     let acc = angular_acceleration(ladder.big_omega2(), theta);
-    ladder.mass
-        * (ladder.gravity - ladder.half_length * (theta.sin() * acc + theta.cos() * rate * rate))
+    ladder.m * (ladder.g - ladder.l * (theta.sin() * acc + theta.cos() * rate * rate))
 }
 
 /// Eqs. (2)-(3): E = T + V = (2/3) m l² θ̇² + m g l cos θ.
-pub fn energy(ladder: &Ladder, theta: f64, rate: f64) -> f64 {
-    let (m, l) = (ladder.mass, ladder.half_length);
-    2.0 / 3.0 * m * l * l * rate * rate + m * ladder.gravity * l * theta.cos()
+pub fn energy(ladder: &Ladder<f64>, theta: f64, rate: f64) -> f64 {
+    let (m, l) = (ladder.m, ladder.l);
+    2.0 / 3.0 * m * l * l * rate * rate + m * ladder.g * l * theta.cos()
 }
 
 /// Footnote 4, generalised to a start with θ̇0 ≠ 0 by the energy integral (9):
@@ -75,7 +54,7 @@ pub struct WallPhase {
 
 impl WallPhase {
     /// The wall phase of `ladder`.
-    pub fn new(ladder: &Ladder) -> Self {
+    pub fn new(ladder: &Ladder<f64>) -> Self {
         let big_omega2 = ladder.big_omega2();
         WallPhase {
             big_omega2,

@@ -19,7 +19,7 @@
 //! rationals but no arbitrary-precision cosine (rug and malachite are LGPL with C builds);
 //! twenty lines of series. It costs tens of microseconds, paid only near the release push.
 
-use super::rigid::Ladder;
+use crate::ladder::Ladder;
 use crate::scalar::Rational;
 use num_bigint::BigInt;
 use num_traits::{One, ToPrimitive, Zero};
@@ -88,8 +88,8 @@ fn fixed_series(x: f64, o: u64) -> Rational {
 
 /// D0 = Ω² cos θ0 − θ̇0² of `ladder` (in its own units, s⁻²) for the start `lean`, `rate0`:
 /// exact rationals rounded once (module docs). NaN for a non-finite input.
-pub fn start_margin(ladder: &Ladder, lean: Lean, rate0: f64) -> f64 {
-    let (g, l) = (ladder.gravity, ladder.half_length);
+pub fn start_margin(ladder: &Ladder<f64>, lean: Lean, rate0: f64) -> f64 {
+    let (g, l) = (ladder.g, ladder.l);
     let angle = match lean {
         Lean::Theta(t) | Lean::Phi(t) => t,
     };
@@ -104,7 +104,7 @@ pub fn start_margin(ladder: &Ladder, lean: Lean, rate0: f64) -> f64 {
 
 /// The same margin formed in f64, Ω² cos θ0 − θ̇0²: what the run used before (kept for the
 /// tests that show its error).
-pub fn start_margin_f64(ladder: &Ladder, lean: Lean, rate0: f64) -> f64 {
+pub fn start_margin_f64(ladder: &Ladder<f64>, lean: Lean, rate0: f64) -> f64 {
     ladder.big_omega2() * lean.cos() - rate0 * rate0
 }
 
@@ -115,10 +115,10 @@ mod tests {
     use super::*;
     use std::f64::consts::FRAC_PI_2;
 
-    const UNIT: Ladder = Ladder {
-        mass: 1.0,
-        half_length: 1.0,
-        gravity: 1.0,
+    const UNIT: Ladder<f64> = Ladder {
+        m: 1.0,
+        l: 1.0,
+        g: 1.0,
     };
 
     /// The fixed-point cosine and sine/x against f64's (libm, within an ulp): the series is
@@ -153,9 +153,9 @@ mod tests {
     #[test]
     fn the_margin_in_si_and_leaning_matches_mpmath() {
         let si = Ladder {
-            mass: 1.0,
-            half_length: 0.7,
-            gravity: 9.81,
+            m: 1.0,
+            l: 0.7,
+            g: 9.81,
         };
         for (ladder, lean, w, want) in [
             (

@@ -12,8 +12,9 @@
 
 use super::floor;
 use super::outcome::Sample;
-use super::rigid::{self, Ladder};
+use super::rigid;
 
+use crate::ladder::Ladder;
 /// A trace keeps at least this many samples (when offered as many) and fewer than twice it.
 pub const TRACE_CAP: usize = 10_000;
 
@@ -72,7 +73,7 @@ impl Kept {
     /// (eqs. (14), (15) on the wall, the floor phase's normal force after it, m g/2 at the foot
     /// once the ladder lies flat, phase 3: `super::impact`), in the ladder's units; returns them
     /// with the force evaluations spent.
-    pub(super) fn finish(mut self, ladder: &Ladder, forces: bool) -> (Vec<Sample>, u64) {
+    pub(super) fn finish(mut self, ladder: &Ladder<f64>, forces: bool) -> (Vec<Sample>, u64) {
         if let Some((s, false)) = self.last {
             self.samples.push(s);
         }
@@ -119,9 +120,9 @@ mod tests {
             }
         }
         let ladder = Ladder {
-            mass: 1.0,
-            half_length: 1.0,
-            gravity: 1.0,
+            m: 1.0,
+            l: 1.0,
+            g: 1.0,
         };
         k.finish(&ladder, false).0
     }
@@ -162,9 +163,9 @@ mod tests {
             k.offer(sample(1, 1e-6 * i as f64));
         }
         let ladder = Ladder {
-            mass: 2.0,
-            half_length: 0.5,
-            gravity: 9.81,
+            m: 2.0,
+            l: 0.5,
+            g: 9.81,
         };
         let (v, evals) = k.finish(&ladder, true);
         assert_eq!(evals, 2 * v.len() as u64);

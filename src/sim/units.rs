@@ -2,7 +2,7 @@
 //! [`super::scaled`] for why and for the conversions of a run). Below the scene, which limits
 //! steps and end times in them.
 
-use super::rigid::Ladder;
+use crate::ladder::Ladder;
 
 /// The scene's units in SI: T = √(l/g) (s), l (m), m g (N).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -16,19 +16,19 @@ pub struct Units {
 }
 
 /// The ladder with m = l = g = 1 (Ω² = 3/4), the one every rigid scene is run with.
-pub const UNIT_LADDER: Ladder = Ladder {
-    mass: 1.0,
-    half_length: 1.0,
-    gravity: 1.0,
+pub const UNIT_LADDER: Ladder<f64> = Ladder {
+    m: 1.0,
+    l: 1.0,
+    g: 1.0,
 };
 
 impl Units {
     /// The units of `ladder` (l/g stays within f64's range for l, g in 1e-30..1e30).
-    pub fn of(ladder: &Ladder) -> Units {
+    pub fn of(ladder: &Ladder<f64>) -> Units {
         Units {
-            time: (ladder.half_length / ladder.gravity).sqrt(),
-            length: ladder.half_length,
-            force: ladder.mass * ladder.gravity,
+            time: (ladder.l / ladder.g).sqrt(),
+            length: ladder.l,
+            force: ladder.m * ladder.g,
         }
     }
 }
@@ -40,9 +40,9 @@ mod tests {
     #[test]
     fn units_of_a_ladder() {
         let u = Units::of(&Ladder {
-            mass: 2.0,
-            half_length: 4.0,
-            gravity: 16.0,
+            m: 2.0,
+            l: 4.0,
+            g: 16.0,
         });
         assert_eq!(
             u,
@@ -57,9 +57,9 @@ mod tests {
     #[test]
     fn extreme_units_stay_finite() {
         let u = Units::of(&Ladder {
-            mass: 1e30,
-            half_length: 1e30,
-            gravity: 1e-30,
+            m: 1e30,
+            l: 1e30,
+            g: 1e-30,
         });
         assert!((u.time / 1e30 - 1.0).abs() < 1e-15, "{u:?}");
         assert_eq!(u.force, 1.0);

@@ -112,7 +112,7 @@ fn separates_where(c0: &Q, k: i64) -> bool {
         let claimed = l.m.clone()
             * l.l.clone()
             * s.sin.clone()
-            * l.capital_omega_squared()
+            * l.big_omega2()
             * (Q::int(3) * s.cos.clone() - Q::int(k) * c0.clone());
         wall_force_from_rest_at(l, s, c0) == claimed
     })

@@ -172,7 +172,7 @@ pub fn prose_units() -> Vec<ProseUnits> {
         reference("x_cm × m v_cm of the particles", orbital),
         printed("−m l² θ̇", -(m.clone() * sq(&len) * w.clone())),
     ]]);
-    let footnote = footnote_4(&l, &s, l.capital_omega_squared());
+    let footnote = footnote_4(&l, &s, l.big_omega2());
     // sec. 2.2: L'_C = I_C θ̇.
     let c = Reference::Corner(Corner::C);
     let rigid = judge_chains(&[vec![

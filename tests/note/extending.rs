@@ -13,7 +13,7 @@ use sliding_ladder::scalar::Scalar;
 use sliding_ladder::sim::exact::PhaseOne;
 use sliding_ladder::sim::integrators::fixed::{FixedMethod, FixedStep};
 use sliding_ladder::sim::integrators::{eval, Ode, Stepper};
-use sliding_ladder::sim::rigid::{Ladder as Scene, WallPhase};
+use sliding_ladder::sim::rigid::WallPhase;
 use std::process::Command;
 
 /// A fixed point R of the lab, at (l/2, 3l/2), and the torque law about it (display (92)).
@@ -156,10 +156,10 @@ impl<const PLANTED: bool, const N: usize> FixedMethod<N> for Heun<PLANTED> {
 /// |θ(T) − θ_exact(T)| for the fall from θ0 = 0.3 at rest, g/l = 4/3 (Ω² = 1), T = 1 (before the
 /// ladder leaves the wall), with step h.
 fn error_at_end<M: FixedMethod<2>>(h: f64) -> f64 {
-    let scene = Scene {
-        mass: 1.0,
-        half_length: 0.75,
-        gravity: 1.0,
+    let scene = Ladder {
+        m: 1.0,
+        l: 0.75,
+        g: 1.0,
     };
     let exact = PhaseOne::new(0.3, 0.0, scene.big_omega2()).expect("a fall");
     let end = 1.0;

@@ -140,7 +140,7 @@ fn full_fall() -> (String, f64, (f64, f64, f64)) {
     (
         svg(&scene, &o).expect("drawn"),
         scene.theta0,
-        (lad.mass, lad.half_length, lad.gravity),
+        (lad.m, lad.l, lad.g),
     )
 }
 

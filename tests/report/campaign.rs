@@ -2,12 +2,12 @@
 //! draw covers the whole domain and writes scenes the parser reads back exactly, the flat-time
 //! reference agrees with a tight integration, and the judge rejects wrong results.
 
+use sliding_ladder::ladder::Ladder;
 use sliding_ladder::report::campaign::judge::{non_finite, out_of_tolerance, Problem};
 use sliding_ladder::report::campaign::{draw, draw_first, methods as scene_methods, selected};
 use sliding_ladder::sim::exact::flat::floor_duration;
 use sliding_ladder::sim::fall::{self, Outcome};
 use sliding_ladder::sim::integrators::Control;
-use sliding_ladder::sim::rigid::Ladder;
 use sliding_ladder::sim::scene::output::Output;
 use sliding_ladder::sim::scene::{parse, ContactModel, End, Scene};
 use std::collections::BTreeSet;
@@ -76,9 +76,9 @@ fn scene(theta0: f64, tol: f64, end: End, outputs: Vec<Output>) -> Scene {
     Scene {
         file: "(campaign test)".into(),
         ladder: Ladder {
-            mass: 2.0,
-            half_length: 0.5,
-            gravity: 9.81,
+            m: 2.0,
+            l: 0.5,
+            g: 9.81,
         },
         theta0,
         phi0: None,

@@ -2,24 +2,24 @@
 //! (src/sim/constrained.rs), and what a rigid scene does not build.
 
 use proptest::prelude::*;
+use sliding_ladder::ladder::Ladder;
 use sliding_ladder::sim::constrained::{self, Constrained};
 use sliding_ladder::sim::extreme::{wall_release, WallRelease};
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::integrators::Control;
 use sliding_ladder::sim::penalty::run::separation;
 use sliding_ladder::sim::penalty::{self, Contact, Law};
-use sliding_ladder::sim::rigid::Ladder;
 use sliding_ladder::sim::scene;
 use std::f64::consts::FRAC_PI_2;
 
-const UNIT: Ladder = Ladder {
-    mass: 1.0,
-    half_length: 1.0,
-    gravity: 1.0,
+const UNIT: Ladder<f64> = Ladder {
+    m: 1.0,
+    l: 1.0,
+    g: 1.0,
 };
 const U: f64 = f64::EPSILON / 2.0;
 
-fn dop853(ladder: &Ladder, theta0: f64, rate0: f64) -> (WallRelease, u64) {
+fn dop853(ladder: &Ladder<f64>, theta0: f64, rate0: f64) -> (WallRelease, u64) {
     let (r, st) = wall_release(
         ladder,
         theta0,
@@ -33,8 +33,8 @@ fn dop853(ladder: &Ladder, theta0: f64, rate0: f64) -> (WallRelease, u64) {
 }
 
 /// Footnote 4 with the energy integral: cos θ_s = 2/3 cos θ0 + 4 l θ̇0²/(9 g).
-fn theory_cos(l: &Ladder, theta0: f64, rate0: f64) -> f64 {
-    2.0 / 3.0 * theta0.cos() + 4.0 * l.half_length * rate0 * rate0 / (9.0 * l.gravity)
+fn theory_cos(l: &Ladder<f64>, theta0: f64, rate0: f64) -> f64 {
+    2.0 / 3.0 * theta0.cos() + 4.0 * l.l * rate0 * rate0 / (9.0 * l.g)
 }
 
 #[test]
@@ -167,7 +167,7 @@ proptest! {
         theta0 in prop_oneof![Just(0.0), Just(1e-12), 0.0..FRAC_PI_2, Just(FRAC_PI_2 - 1e-9)],
         r in prop_oneof![Just(0.0), Just(1e-15), 0.0..2.0f64, Just(1.0)],
     ) {
-        let ladder = Ladder { mass: 10f64.powf(em), half_length: 10f64.powf(el), gravity: 10f64.powf(eg) };
+        let ladder = Ladder { m: 10f64.powf(em), l: 10f64.powf(el), g: 10f64.powf(eg) };
         let rate0 = r * ladder.big_omega2().sqrt();
         let (res, st) = wall_release(&ladder, theta0, rate0, "dop853", Control::Tolerance(1e-10), 100_000).unwrap();
         match res {
@@ -256,10 +256,10 @@ fn extreme_rows_are_judged_on_the_worst_of_an_ulp_ensemble() {
     }
 }
 
-const UNIT_LADDER: Ladder = Ladder {
-    mass: 1.0,
-    half_length: 1.0,
-    gravity: 1.0,
+const UNIT_LADDER: Ladder<f64> = Ladder {
+    m: 1.0,
+    l: 1.0,
+    g: 1.0,
 };
 
 /// A wall phase needs a positive finite Ω² and a finite start: each of those that is not
@@ -270,7 +270,7 @@ const UNIT_LADDER: Ladder = Ladder {
 #[test]
 fn a_wall_phase_needs_a_positive_finite_omega_and_a_finite_start() {
     let run = |gravity: f64, theta0: f64, rate0: f64| {
-        let ladder = Ladder { gravity, ..UNIT };
+        let ladder = Ladder { g: gravity, ..UNIT };
         wall_release(
             &ladder,
             theta0,
@@ -315,11 +315,7 @@ fn the_printed_separation_cosine_is_the_energy_integral() {
         (2.5, 9.81, 0.1, 0.7),
         (0.4, 1.6, 1.2, 0.2),
     ] {
-        let ladder = Ladder {
-            half_length: l,
-            gravity: g,
-            ..UNIT
-        };
+        let ladder = Ladder { l, g, ..UNIT };
         let got = separation_cosine(ladder.big_omega2(), theta0, rate0);
         let want = theory_cos(&ladder, theta0, rate0);
         assert!((got - want).abs() <= 8.0 * U * want, "{got} against {want}");

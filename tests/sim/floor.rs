@@ -7,22 +7,24 @@ use sliding_ladder::report::work_precision::scene_at;
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::floor;
 use sliding_ladder::sim::integrators::Control;
-use sliding_ladder::sim::rigid::{self, Ladder};
+use sliding_ladder::sim::rigid;
+
+use sliding_ladder::ladder::Ladder;
 use sliding_ladder::sim::scene::output::Output;
 use sliding_ladder::sim::scene::End;
 
-const LADDER: Ladder = Ladder {
-    mass: 1.3,
-    half_length: 0.7,
-    gravity: 9.81,
+const LADDER: Ladder<f64> = Ladder {
+    m: 1.3,
+    l: 0.7,
+    g: 9.81,
 };
 
 /// dE/dt along the floor-phase motion, by lifting (θ, θ̇) to dual numbers along the motion
 /// (θ → θ + θ̇ε, θ̇ → θ̇ + θ̈ε, Ẋ constant), with θ̈ from `floor::angular_acceleration` plus `bump`.
 fn energy_rate(theta: f64, rate: f64, vx: f64, bump: f64) -> f64 {
-    let g_over_l = LADDER.gravity / LADDER.half_length;
+    let g_over_l = LADDER.g / LADDER.l;
     let acc = floor::angular_acceleration(g_over_l, theta, rate) + bump;
-    let (m, l, g) = (LADDER.mass, LADDER.half_length, LADDER.gravity);
+    let (m, l, g) = (LADDER.m, LADDER.l, LADDER.g);
     let th = Dual64::new(theta, rate);
     let w = Dual64::new(rate, acc);
     let s = th.sin();
@@ -36,7 +38,7 @@ fn energy_rate(theta: f64, rate: f64, vx: f64, bump: f64) -> f64 {
 /// Scale of the cancelling terms: m l² θ̇ θ̈ ~ m g l θ̇, so allow 16 ulps of m g l (|θ̇| + 1).
 #[test]
 fn phase2_equation_conserves_energy_and_a_perturbed_one_does_not() {
-    let scale = LADDER.mass * LADDER.gravity * LADDER.half_length;
+    let scale = LADDER.m * LADDER.g * LADDER.l;
     for &(theta, rate) in &[(0.2, 0.5), (0.9, 2.1), (1.3, 3.0), (1.55, 0.1)] {
         let tol = 16.0 * f64::EPSILON * scale * (rate + 1.0);
         assert!(energy_rate(theta, rate, 0.8, 0.0).abs() <= tol);
@@ -51,7 +53,7 @@ fn phase2_continues_phase1_at_separation() {
     let w2 = LADDER.big_omega2();
     for theta in [0.5, 0.84, 1.2] {
         let rate = (w2 * f64::cos(theta)).sqrt();
-        let a2 = floor::angular_acceleration(LADDER.gravity / LADDER.half_length, theta, rate);
+        let a2 = floor::angular_acceleration(LADDER.g / LADDER.l, theta, rate);
         let a1: f64 = rigid::angular_acceleration(w2, theta);
         assert!(
             (a2 - a1).abs() <= 8.0 * f64::EPSILON * a1.abs(),
@@ -59,7 +61,7 @@ fn phase2_continues_phase1_at_separation() {
         );
         let f2 = floor::floor_force(&LADDER, theta, rate);
         let f1 = rigid::floor_force(&LADDER, theta, rate);
-        let mg = LADDER.mass * LADDER.gravity;
+        let mg = LADDER.m * LADDER.g;
         assert!(
             (f2 - f1).abs() <= 16.0 * f64::EPSILON * mg
                 && (f1 - mg / 4.0).abs() <= 16.0 * f64::EPSILON * mg
@@ -109,7 +111,7 @@ fn the_whole_fall_conserves_and_stays_on_the_floor() {
         );
         // The momentum balance (tests/sim/fall/momentum_balance.rs): 4 (10 N τ + 4u) √(g/l)·l.
         let n = (o.work.wall.steps + o.work.floor.unwrap().steps) as f64;
-        let p_scale = (LADDER.gravity * LADDER.half_length).sqrt();
+        let p_scale = (LADDER.g * LADDER.l).sqrt();
         let p_bound = 4.0 * (10.0 * n * 1e-14 + 4.0 * f64::EPSILON) * p_scale;
         assert!(
             o.momentum_error.unwrap() <= p_bound,
@@ -133,12 +135,12 @@ fn the_whole_fall_conserves_and_stays_on_the_floor() {
 fn flat_state_from_conservation_laws() {
     let o = full_fall(0.3, 0.0);
     let (s, f) = (o.separation.unwrap(), o.flat.unwrap());
-    let l = LADDER.half_length;
+    let l = LADDER.l;
     assert!(
         (f.centre_velocity_x - l * s.angle.cos() * s.rate).abs()
             <= 1e-15 * f.centre_velocity_x.abs() * 4.0
     );
-    let (m, g) = (LADDER.mass, LADDER.gravity);
+    let (m, g) = (LADDER.m, LADDER.g);
     let lhs = 0.5 * m * f.centre_velocity_x.powi(2) + 2.0 / 3.0 * m * l * l * f.rate.powi(2);
     let rhs = m * g * l * 0.3f64.cos();
     assert!((lhs - rhs).abs() <= 1e-13 * rhs, "{lhs} vs {rhs}");
@@ -154,9 +156,9 @@ fn flat_state_from_conservation_laws() {
 fn the_floor_phase_measures_errors_in_its_own_scales() {
     use sliding_ladder::sim::integrators::Ode;
     let ladder = Ladder {
-        mass: 1.0,
-        half_length: 2.0,
-        gravity: 24.0, // Ω² = 3g/(4l) = 9: Ω = 3
+        m: 1.0,
+        l: 2.0,
+        g: 24.0, // Ω² = 3g/(4l) = 9: Ω = 3
     };
     let sys = floor::FloorPhase::new(&ladder);
     // The simulator's floor phase in the complement, (φ, X, φ̇, Ẋ), measures the same way
@@ -182,7 +184,7 @@ fn the_floor_phase_measures_errors_in_its_own_scales() {
 /// + m g l cos θ → − went unseen: every run that asked for the energy ended flat, cos θ = 0).
 #[test]
 fn the_floor_energy_is_the_bodys_and_a_run_ending_on_the_floor_keeps_it() {
-    let (m, l, g) = (LADDER.mass, LADDER.half_length, LADDER.gravity);
+    let (m, l, g) = (LADDER.m, LADDER.l, LADDER.g);
     for (theta, rate, vx) in [(0.2, 0.5, 0.8), (0.9, 2.1, -0.3), (1.4, 3.0, 1.7)] {
         let y = Dual64::new(theta, rate).cos() * l;
         let body = 0.5 * m * (vx * vx + y.eps * y.eps)

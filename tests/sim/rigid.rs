@@ -8,20 +8,14 @@
 //! Error model: each side is a few roundings of terms of size m l (Ω² + θ̇²) and m g: 8 ulps of
 //! their sum.
 
-use sliding_ladder::ladder::{forces, Ladder as NoteLadder, State};
-use sliding_ladder::sim::rigid::{self, Ladder};
-
+use sliding_ladder::ladder::{forces, Ladder, State};
+use sliding_ladder::sim::rigid;
 #[test]
 fn the_simulator_s_forces_are_eqs_14_and_15_on_the_motion_for_any_units() {
     let ladders = [(2.0, 3.0, 5.0), (1e3, 1e-2, 9.81), (7e-20, 4e15, 1e-8)];
     let states = [(0.3, 0.0), (1.0, -0.7), (1.4, 2.5)];
     for (m, l, g) in ladders {
-        let sim = Ladder {
-            mass: m,
-            half_length: l,
-            gravity: g,
-        };
-        let note = NoteLadder { m, l, g };
+        let ladder: Ladder<f64> = Ladder { m, l, g };
         for (theta, rate_per_t) in states {
             let rate = rate_per_t * (g / l).sqrt();
             let accel = 3.0 * g / (4.0 * l) * f64::sin(theta);
@@ -35,12 +29,12 @@ fn the_simulator_s_forces_are_eqs_14_and_15_on_the_motion_for_any_units() {
             let size = m * l * (accel.abs() + rate * rate) + m * g;
             let bound = 8.0 * f64::EPSILON * size;
             let (w, f) = (
-                forces::wall_force(&note, &st),
-                forces::floor_force(&note, &st),
+                forces::wall_force(&ladder, &st),
+                forces::floor_force(&ladder, &st),
             );
             let (sw, sf) = (
-                rigid::wall_force(&sim, theta, rate),
-                rigid::floor_force(&sim, theta, rate),
+                rigid::wall_force(&ladder, theta, rate),
+                rigid::floor_force(&ladder, theta, rate),
             );
             assert!(
                 (sw - w).abs() <= bound,

@@ -166,11 +166,13 @@ fn the_taylor_rate_is_the_derivative_of_its_interpolant() {
 }
 
 fn rate_is_the_derivative_of_the_interpolant(mut stepper: impl Stepper<2>) {
-    use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+    use sliding_ladder::sim::rigid::WallPhase;
+
+    use sliding_ladder::ladder::Ladder;
     let ladder = Ladder {
-        mass: 1.0,
-        half_length: 1.0,
-        gravity: 1.0,
+        m: 1.0,
+        l: 1.0,
+        g: 1.0,
     };
     let sys = WallPhase::new(&ladder);
     for _ in 0..3 {

@@ -3,17 +3,17 @@
 //! (mutation testing of `src/sim`: NewtonFailed's time divided by T went unseen, since no run of
 //! the tests makes radau5's Newton iteration fail on a scaled scene).
 
+use sliding_ladder::ladder::Ladder;
 use sliding_ladder::sim::integrators::StepError;
-use sliding_ladder::sim::rigid::Ladder;
 use sliding_ladder::sim::run::RunError;
 use sliding_ladder::sim::scaled::Units;
 
 /// l = 4 m, g = 1 m/s²: T = 2 s exactly, so each conversion is exact (a power of two).
 fn units() -> Units {
     Units::of(&Ladder {
-        mass: 3.0,
-        half_length: 4.0,
-        gravity: 1.0,
+        m: 3.0,
+        l: 4.0,
+        g: 1.0,
     })
 }
 

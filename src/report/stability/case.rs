@@ -1,8 +1,8 @@
 //! One case of the stability report ([`crate::report::stability`]) and its verdict: the types every
 //! group of cases (stiff, extreme, scale) builds, below the report that gathers them.
 
+use crate::ladder::Ladder;
 use crate::sim::integrators::Control;
-use crate::sim::rigid::Ladder;
 use crate::sim::scene::output::Output;
 use crate::sim::scene::{ContactModel, End, Scene};
 use serde::Serialize;
@@ -114,15 +114,15 @@ pub const U: f64 = f64::EPSILON / 2.0;
 pub const TOL: f64 = 1e-13;
 
 /// The unit ladder m = l = g = 1.
-pub const UNIT: Ladder = Ladder {
-    mass: 1.0,
-    half_length: 1.0,
-    gravity: 1.0,
+pub const UNIT: Ladder<f64> = Ladder {
+    m: 1.0,
+    l: 1.0,
+    g: 1.0,
 };
 
 /// A built-in rigid scene of the report: dop853 at [`TOL`] from (θ0, θ̇0) to `end`.
 pub fn built_in_scene(
-    ladder: Ladder,
+    ladder: Ladder<f64>,
     theta0: f64,
     rate0: f64,
     end: End,

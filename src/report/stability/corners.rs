@@ -4,7 +4,9 @@
 
 use crate::report::stability::case::{blank, built_in_scene as scene, Case, TOL, UNIT};
 use crate::sim::fall;
-use crate::sim::rigid::{floor_force, Ladder};
+use crate::sim::rigid::floor_force;
+
+use crate::ladder::Ladder;
 use crate::sim::scene::output::Output;
 use crate::sim::scene::{ContactModel, End, Scene};
 use std::time::Instant;
@@ -14,8 +16,8 @@ fn scaled(sc: &Scene) -> Result<([f64; 4], u64, u64), String> {
     let o = fall::run(sc, 1_000_000).map_err(|e| e.to_string())?;
     let s = o.separation.ok_or("no separation")?;
     let l = &sc.ladder;
-    let unit = (l.half_length / l.gravity).sqrt();
-    let f = floor_force(l, s.angle, s.rate) / (l.mass * l.gravity);
+    let unit = (l.l / l.g).sqrt();
+    let f = floor_force(l, s.angle, s.rate) / (l.m * l.g);
     let w = o.work.wall;
     Ok((
         [s.angle, s.time / unit, s.rate * unit, f],
@@ -59,7 +61,7 @@ pub fn scale_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
         // κ = k l/(m g) = 1e4, formed as (1e4 m)(g/l) to stay within range; κ tol = 1e-9
         // keeps an explicit method accurate (see `stability::stiff`).
         sc.contact = ContactModel::Penalty {
-            stiffness: 1e4 * l.mass * (l.gravity / l.half_length),
+            stiffness: 1e4 * l.m * (l.g / l.l),
             damping: 0.0,
         };
     };
@@ -68,11 +70,7 @@ pub fn scale_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
     let penalty_reference = scaled(&unit_penalty);
     for (m, l, g, with_penalty) in corners {
         tick("scale", 1);
-        let ladder = Ladder {
-            mass: m,
-            half_length: l,
-            gravity: g,
-        };
+        let ladder = Ladder { m, l, g };
         let mut c = blank(
             "scale",
             format!("m={m:e} l={l:e} g={g:e}"),

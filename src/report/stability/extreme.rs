@@ -296,7 +296,7 @@ pub fn extreme_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
         "θ = 0 throughout, no separation".into(),
     );
     let mut sc = scene(UNIT, 0.0, 0.0, End::Time(100.0), vec![Output::FinalState]);
-    sc.ladder.gravity = 9.81;
+    sc.ladder.g = 9.81;
     let t = Instant::now();
     match fall::run(&sc, 100_000) {
         Ok(o) => {

@@ -1,11 +1,11 @@
 //! The `long` group of `ladder stability`: 1e7 steps of a scene that asks only for its final
 //! state, against the exact reference, with the process's peak memory flat.
 
+use crate::ladder::Ladder;
 use crate::report::stability::case::{blank, built_in_scene as scene, Case, Verdict, U};
 use crate::sim::exact::PhaseOne;
 use crate::sim::fall;
 use crate::sim::integrators::Control;
-use crate::sim::rigid::Ladder;
 use crate::sim::scene::output::Output;
 use crate::sim::scene::{End, Scene};
 use std::time::Instant;
@@ -22,9 +22,9 @@ pub fn peak_rss_kb() -> Option<u64> {
 pub fn memory_scene(seconds: f64) -> Scene {
     let mut sc = scene(
         Ladder {
-            mass: 1.0,
-            half_length: 1e4,
-            gravity: 9.81,
+            m: 1.0,
+            l: 1e4,
+            g: 9.81,
         },
         0.3,
         0.0,

@@ -12,11 +12,11 @@
 //!   scene's own units (`sim::scaled`), where both scenes are one problem, so they may differ by
 //!   the rounding of T = √(l/g) and of t T / T only: 4 u relative.
 
+use crate::ladder::Ladder;
 use crate::report::campaign::pick_method;
 use crate::report::stability::case::{blank, Case, U};
 use crate::sim::fall;
 use crate::sim::integrators::{is_adaptive, names, Control};
-use crate::sim::rigid::Ladder;
 use crate::sim::scene::output::Output;
 use crate::sim::scene::{ContactModel, End, Scene};
 use rand::{Rng, SeedableRng};
@@ -26,7 +26,7 @@ use std::time::Instant;
 /// Cases in the sweep.
 pub const SWEEP_CASES: usize = 24;
 
-fn flat_scene(ladder: Ladder, theta0: f64, method: &str, tol: f64) -> Scene {
+fn flat_scene(ladder: Ladder<f64>, theta0: f64, method: &str, tol: f64) -> Scene {
     Scene {
         file: "(built in: stability sweep)".into(),
         ladder,
@@ -43,20 +43,20 @@ fn flat_scene(ladder: Ladder, theta0: f64, method: &str, tol: f64) -> Scene {
 }
 
 /// One case of the sweep.
-fn sweep_case(ladder: Ladder, theta0: f64, method: &str, tol: f64) -> Case {
+fn sweep_case(ladder: Ladder<f64>, theta0: f64, method: &str, tol: f64) -> Case {
     let mut c = blank(
         "sweep",
         format!(
             "to flat, θ0={theta0:.3} m={:.1e} l={:.1e} g={:.1e}",
-            ladder.mass, ladder.half_length, ladder.gravity
+            ladder.m, ladder.l, ladder.g
         ),
         format!("{method} tol {tol:.1e}"),
         "cos θ_s = 2/3 cos θ0; flat time/√(l/g) as at m=l=1, g=9.81".into(),
     );
     let unit = Ladder {
-        mass: 1.0,
-        half_length: 1.0,
-        gravity: 9.81,
+        m: 1.0,
+        l: 1.0,
+        g: 9.81,
     };
     let t = Instant::now();
     let run = fall::run(&flat_scene(ladder, theta0, method, tol), fall::MAX_STEPS);
@@ -75,7 +75,7 @@ fn sweep_case(ladder: Ladder, theta0: f64, method: &str, tol: f64) -> Case {
     };
     c.steps = o.work.wall.steps + o.work.floor.map_or(0, |w| w.steps);
     c.rhs_evals = o.work.wall.rhs_evals + o.work.floor.map_or(0, |w| w.rhs_evals);
-    let time_unit = |l: &Ladder| (l.half_length / l.gravity).sqrt();
+    let time_unit = |l: &Ladder<f64>| (l.l / l.g).sqrt();
     let (tau, tau1) = (f.time / time_unit(&ladder), rf.time / time_unit(&unit));
     c.value = format!("θ_s = {:.12}, t_flat/√(l/g) = {tau:.15}", s.angle);
     let cs = 2.0 / 3.0 * theta0.cos();
@@ -107,9 +107,9 @@ pub fn sweep_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
             tick("sweep", 1);
             let mut e = || 10f64.powf(rng.gen_range(-30.0..30.0));
             let ladder = Ladder {
-                mass: e(),
-                half_length: e(),
-                gravity: e(),
+                m: e(),
+                l: e(),
+                g: e(),
             };
             let theta0 = rng.gen_range(0.01..1.5);
             let tol = 10f64.powf(rng.gen_range(-12.0..-4.0));

@@ -19,11 +19,11 @@ pub mod peers;
 pub mod report;
 
 use super::work_precision::fit::Point;
+use crate::ladder::Ladder;
 use crate::sim::exact::flat::floor_duration;
 use crate::sim::exact::{separation_cos, PhaseOne, Separation};
 use crate::sim::fall;
 use crate::sim::integrators::{card, is_adaptive, Control};
-use crate::sim::rigid::Ladder;
 use crate::sim::scene::output::Output;
 use crate::sim::scene::{End, Scene};
 use serde::Serialize;
@@ -136,9 +136,9 @@ pub fn scene_at(theta0: f64, rate0: f64) -> Scene {
     Scene {
         file: format!("(built in: θ0 = {theta0}, θ̇0 = {rate0})"),
         ladder: Ladder {
-            mass: 1.0,
-            half_length: 1.0,
-            gravity: 9.81,
+            m: 1.0,
+            l: 1.0,
+            g: 9.81,
         },
         theta0,
         phi0: None,
@@ -222,7 +222,7 @@ pub fn flat_reference(base: &Scene, sep: &Separation) -> Result<f64, String> {
     if !(cos_s > 0.0 && cos_s <= 1.0) {
         return Err(format!("no floor phase from cos θ_s = {cos_s}"));
     }
-    let unit = (ladder.half_length / ladder.gravity).sqrt();
+    let unit = (ladder.l / ladder.g).sqrt();
     Ok(sep.time + floor_duration(cos_s) * unit)
 }
 

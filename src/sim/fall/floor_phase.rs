@@ -2,13 +2,13 @@
 //! in φ = π/2 − θ ([`crate::sim::complement`]), watching the floor force for a lift-off. Beyond the
 //! note: its sec. 2.1 stops at the separation (footnote 4).
 
+use crate::ladder::Ladder;
 use crate::sim::complement;
 use crate::sim::event::{Direction, Event};
 use crate::sim::fall::observer::{TraceObserver, SAMPLES_PER_STEP};
 use crate::sim::integrators::AnyStepper;
 use crate::sim::integrators::{Stats, Stepper};
 use crate::sim::outcome::{FloorReport, Plan, SeparationState};
-use crate::sim::rigid::Ladder;
 use crate::sim::run::{integrate_phase, PhaseEnd, RunError};
 use crate::sim::scene::Scene;
 use crate::sim::trace::Kept;
@@ -17,7 +17,7 @@ use std::cell::Cell;
 /// Lift-off: the floor force falls through zero (checked inside steps too: it could dip and
 /// recover within one step).
 pub(in crate::sim) struct LiftOffEvent {
-    pub(in crate::sim) ladder: Ladder,
+    pub(in crate::sim) ladder: Ladder<f64>,
     pub(in crate::sim) evals: Cell<u64>,
 }
 impl Event<4> for LiftOffEvent {

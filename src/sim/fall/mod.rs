@@ -21,12 +21,14 @@ use super::near_release;
 pub use super::outcome::{
     FlatState, FloorReport, Outcome, Plan, Sample, SeparationState, Slide, Work,
 };
-use super::rigid::{self, Ladder};
+use super::rigid;
+
 use super::run::{Observer, RunError};
 use super::scene::{ContactModel, End, Scene, MAX_END_TIME};
 use super::start_margin::Lean;
 use super::trace::Kept;
 use super::units::Units;
+use crate::ladder::Ladder;
 
 /// Default hard limit on steps per phase (the scene checks refuse a scene that needs more).
 pub use super::scene::parts::MAX_STEPS;
@@ -80,7 +82,7 @@ fn run_rigid(
 ) -> Result<Outcome, RunError> {
     let plan = Plan::of(scene);
     let ladder = scene.ladder;
-    let (m, l, g) = (ladder.mass, ladder.half_length, ladder.gravity);
+    let (m, l, g) = (ladder.m, ladder.l, ladder.g);
     let mut trace = plan.trace.then(Kept::default);
     let mut work = Work::default();
     let t_end = match scene.end {
@@ -244,7 +246,7 @@ impl Beyond {
             rate: y[2],
             centre_x: y[1],
             centre_velocity_x: y[3],
-            centre_velocity_y: -scene.ladder.half_length * y[0].sin() * y[2],
+            centre_velocity_y: -scene.ladder.l * y[0].sin() * y[2],
         };
         b.flat = Some(f);
         // A run to a later time goes on lying flat (module docs of `super::impact`).
@@ -266,7 +268,7 @@ impl Beyond {
 /// end = separation), from (θ, θ̇) = `y` at `t0` after a lead-in, with the start's margin.
 fn exact_outcome(
     plan: Plan,
-    ladder: &Ladder,
+    ladder: &Ladder<f64>,
     t0: f64,
     y: [f64; 2],
     margin: Option<f64>,
@@ -301,7 +303,7 @@ fn exact_outcome(
 /// The kept samples of a trace with their forces when asked, counted in `work`.
 fn finished(
     trace: Option<Kept>,
-    ladder: &Ladder,
+    ladder: &Ladder<f64>,
     forces: bool,
     work: &mut Work,
 ) -> Option<Vec<Sample>> {

@@ -5,7 +5,9 @@
 use crate::sim::floor;
 use crate::sim::minimum::minimum_on;
 use crate::sim::outcome::{FloorReport, Sample};
-use crate::sim::rigid::{self, Ladder};
+use crate::sim::rigid;
+
+use crate::ladder::Ladder;
 use crate::sim::run::Observer;
 use crate::sim::trace::Kept;
 use std::cell::Cell;
@@ -15,7 +17,7 @@ pub(in crate::sim) const SAMPLES_PER_STEP: usize = 4;
 
 /// The observer of both phases: trace samples, floor monitors, the wall's impulse.
 pub(in crate::sim) struct TraceObserver<'a> {
-    pub(in crate::sim) ladder: Ladder,
+    pub(in crate::sim) ladder: Ladder<f64>,
     pub(in crate::sim) phase: u8,
     pub(in crate::sim) trace: Option<&'a mut Kept>,
     pub(in crate::sim) monitor: Option<FloorReport>,
@@ -62,7 +64,7 @@ impl Observer<2> for TraceObserver<'_> {
     }
     fn observe(&mut self, t: f64, y: &[f64; 2]) {
         // On the wall the centre is at x_cm = l sin θ (7).
-        self.record(t, y[0], y[1], self.ladder.half_length * y[0].sin());
+        self.record(t, y[0], y[1], self.ladder.l * y[0].sin());
     }
     fn wants_steps(&self) -> bool {
         self.impulse.is_some()
@@ -196,9 +198,9 @@ mod tests {
     /// and its error against m l Δ(cos θ θ̇) (eq. (7): m Ẍ = F_w, an independent reference).
     fn impulse_error(theta0: f64, rate0: f64, c: f64, split: bool) -> f64 {
         let ladder = Ladder {
-            mass: 1.0,
-            half_length: 1.0,
-            gravity: 4.0 / 3.0,
+            m: 1.0,
+            l: 1.0,
+            g: 4.0 / 3.0,
         };
         let exact = PhaseOne::new(theta0, rate0, 1.0).unwrap();
         let ts = exact.separation().unwrap().time;
@@ -254,9 +256,9 @@ mod tests {
     fn observer(t0: f64, impulse: bool, monitor: bool) -> TraceObserver<'static> {
         TraceObserver {
             ladder: Ladder {
-                mass: 1.0,
-                half_length: 1.0,
-                gravity: 4.0 / 3.0,
+                m: 1.0,
+                l: 1.0,
+                g: 4.0 / 3.0,
             },
             phase: 1,
             trace: None,

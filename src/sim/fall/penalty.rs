@@ -15,7 +15,7 @@ pub fn run(scene: &Scene, k: f64, c: f64, max_steps: u64) -> Result<Outcome, Run
     let ladder = scene.ladder;
     let contact = Contact::from_dimensional(&ladder, k, c);
     // The time unit √(l/g): dimensionless t' = t / unit, θ̇' = θ̇ · unit.
-    let unit = (ladder.half_length / ladder.gravity).sqrt();
+    let unit = (ladder.l / ladder.g).sqrt();
     let control = match scene.control {
         Some(Control::Fixed(h)) => Control::Fixed(h / unit),
         Some(tol) => tol,

@@ -71,9 +71,9 @@ impl Ode<4> for CubicRate {
 #[test]
 fn the_lift_off_watch_finds_a_dip_inside_one_step() {
     let ladder = Ladder {
-        mass: 1.0,
-        half_length: 1.0,
-        gravity: 1.0,
+        m: 1.0,
+        l: 1.0,
+        g: 1.0,
     };
     let phi = 0.5f64;
     let threshold = (1.0 / phi.sin()).sqrt();

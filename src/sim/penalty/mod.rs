@@ -62,7 +62,9 @@ pub mod start;
 use super::integrators::Ode;
 use super::penalty::start::slow_forces;
 pub use super::penalty::start::OMEGA2;
-use super::rigid::{event_safe_step, Ladder};
+use super::rigid::event_safe_step;
+
+use crate::ladder::Ladder;
 use num_dual::DualNum;
 use std::cell::Cell;
 
@@ -94,8 +96,8 @@ impl Contact {
     /// The dimensionless contact of `ladder` with stiffness `k` (N/m) and damping `c` (N·s/m).
     /// Quotients are formed pairwise so that no intermediate product of extreme m, l, g, k
     /// overflows.
-    pub fn from_dimensional(ladder: &Ladder, k: f64, c: f64) -> Contact {
-        let (m, l, g) = (ladder.mass, ladder.half_length, ladder.gravity);
+    pub fn from_dimensional(ladder: &Ladder<f64>, k: f64, c: f64) -> Contact {
+        let (m, l, g) = (ladder.m, ladder.l, ladder.g);
         Contact {
             kappa: (k / m) * (l / g),
             gamma: (c / m) * (l / g).sqrt(),

@@ -10,9 +10,9 @@
 //! 1e-3..10 √κ) lifted off up to κ = 2.50 and never above (none in 5,700 runs with
 //! κ = 2.5..10). A scene needs κ ≥ [`SOFTEST_CONTACT`] = 5, a margin of 2.
 
+use crate::ladder::Ladder;
 use crate::sim::integrators::{card, is_adaptive, names, Control, TABLE};
 use crate::sim::penalty::{Contact, KAPPA_RANGE};
-use crate::sim::rigid::Ladder;
 use crate::sim::scene::errors::{Ctx, SceneError};
 use crate::sim::scene::output::Output;
 use crate::sim::scene::parts::{
@@ -26,7 +26,7 @@ pub const SOFTEST_CONTACT: f64 = 5.0;
 pub(in crate::sim) fn check_contact(
     cx: &Ctx,
     c: &RawContact,
-    ladder: &Ladder,
+    ladder: &Ladder<f64>,
 ) -> Result<ContactModel, SceneError> {
     match c.model.get_ref().as_str() {
         "rigid" => {

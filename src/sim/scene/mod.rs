@@ -17,7 +17,6 @@ pub mod work;
 use self::output::Output;
 use self::start::{check_theta_only, start_angle};
 use super::integrators::Control;
-use super::rigid::Ladder;
 pub use super::scene::checks::SOFTEST_CONTACT;
 use super::scene::checks::{
     check_contact, check_end, check_integrator, check_outputs, check_penalty,
@@ -29,6 +28,7 @@ pub use super::scene::parts::{ContactModel, End, MAX_END_TIME, MAX_STEP, MIN_STE
 use super::scene::shape::{check_shape, value_error};
 use super::scene::work::check_work;
 use super::units::Units;
+use crate::ladder::Ladder;
 use std::path::Path;
 
 /// A validated scene.
@@ -37,7 +37,7 @@ pub struct Scene {
     /// The file it came from.
     pub file: String,
     /// m, l, g.
-    pub ladder: Ladder,
+    pub ladder: Ladder<f64>,
     /// θ0, rad (for a start given as `angle_from_floor`, the nearest f64 below π/2).
     pub theta0: f64,
     /// φ0 = π/2 − θ0, rad, when the scene gave the start as `angle_from_floor` (exact; θ0
@@ -103,19 +103,19 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
     // scaled by √(l/g) and forces by m g over that whole range (`ladder stability`).
     let positive = |x: f64| (1e-30..=1e30).contains(&x);
     let ladder = Ladder {
-        mass: cx.number(
+        m: cx.number(
             &l.mass,
             "ladder.mass",
             positive,
             "a number > 0 (kg) in [1e-30, 1e30]",
         )?,
-        half_length: cx.number(
+        l: cx.number(
             &l.half_length,
             "ladder.half_length",
             positive,
             "a number > 0 (m) in [1e-30, 1e30]",
         )?,
-        gravity: cx.number(
+        g: cx.number(
             &l.gravity,
             "ladder.gravity",
             positive,
@@ -151,7 +151,7 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
     // Past √(g/(l cos θ0)) the floor would have to pull at the start of the floor phase too
     // (its force there is m l (g/l − cos θ0 θ̇0²)/(3 sin² θ0 + 1), `sim::fall::floor_phase`): the
     // ladder would fly, which no phase of this model follows.
-    let fly = ladder.gravity / (ladder.half_length * start.cos_theta0());
+    let fly = ladder.g / (ladder.l * start.cos_theta0());
     if !penalty && end != End::Separation && rate0 * rate0 >= fly {
         return Err(cx.err(Some(s.angular_velocity.span()), "start.angular_velocity", format!(
             "{rate0} rad/s is too fast: past sqrt(3g cos θ0 / 4l) the top leaves the wall at once, and past sqrt(g / (l cos θ0)) = {} the foot would leave the floor too, which this model does not follow; allowed: below that, or end.at = \"separation\"",

@@ -90,6 +90,7 @@
 //!   spurious zeros and 3 took more than 1e6 steps; `tests/sim/penalty/refusals.rs` sweeps it
 //!   again.
 
+use crate::ladder::Ladder;
 use crate::sim::exact::{flat::floor_duration, PhaseOne};
 use crate::sim::integrators::card::PenaltyFit;
 use crate::sim::integrators::{card, Control, TABLE};
@@ -98,7 +99,6 @@ use crate::sim::penalty::confirm::{rigid_separation_angle, separation_bound};
 use crate::sim::penalty::plan::too_close_to_flat;
 use crate::sim::penalty::start::{rigid_forces, OMEGA2};
 use crate::sim::penalty::Contact;
-use crate::sim::rigid::Ladder;
 use crate::sim::scene::errors::{Ctx, SceneError};
 use crate::sim::scene::parts::{ContactModel, End, RawIntegrator, MAX_STEPS};
 use crate::sim::units::Units;
@@ -193,7 +193,7 @@ fn separation_time(theta0: f64, rate0: f64, unit: f64) -> f64 {
 }
 
 /// The contact's fastest rate ω = 2√κ + 4γ per √(l/g), and κ, γ (None for rigid contact).
-fn vibration(ladder: &Ladder, contact: ContactModel) -> Option<(f64, f64, f64)> {
+fn vibration(ladder: &Ladder<f64>, contact: ContactModel) -> Option<(f64, f64, f64)> {
     let ContactModel::Penalty { stiffness, damping } = contact else {
         return None;
     };
@@ -205,7 +205,7 @@ fn vibration(ladder: &Ladder, contact: ContactModel) -> Option<(f64, f64, f64)> 
 /// adaptive method's steps follow its tolerance alone): a fixed step's span over the step; an
 /// explicit adaptive method on penalty springs [`explicit_penalty_steps`].
 pub fn phase_steps(
-    ladder: &Ladder,
+    ladder: &Ladder<f64>,
     (theta0, rate0): (f64, f64),
     method: &str,
     control: Control,
@@ -245,7 +245,7 @@ pub fn phase_steps(
 pub(in crate::sim) fn check_work(
     cx: &Ctx,
     i: &RawIntegrator,
-    ladder: &Ladder,
+    ladder: &Ladder<f64>,
     start: (f64, f64),
     method: &str,
     control: Option<Control>,

@@ -63,7 +63,7 @@ fn symbol_dimensions() -> BTreeMap<&'static str, Dim> {
         ("m", l.m.clone()),
         ("l", l.l.clone()),
         ("g", l.g.clone()),
-        ("Ω²", l.capital_omega_squared()),
+        ("Ω²", l.big_omega2()),
         ("x_cm, y_cm", cm_position(&l, &s).x + cm_position(&l, &s).y),
         ("v_cm", cm_velocity(&l, &s).x),
         ("a_cm", cm_acceleration(&l, &s).y),

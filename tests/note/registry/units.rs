@@ -245,7 +245,7 @@ fn an_errata_witness_that_disagrees_does_not_hold() {
 fn footnote_4_fails_with_a_planted_wrong_big_omega_squared() {
     use sliding_ladder::verify::units::footnote_4;
     let (l, s) = dimensioned_ladder(LadderSample::Kinematic);
-    let right = footnote_4(&l, &s, l.capital_omega_squared());
+    let right = footnote_4(&l, &s, l.big_omega2());
     assert_eq!(right.verdict(), (Units::Consistent, None));
     let wrong = footnote_4(&l, &s, Dim::ratio(3, 4) * l.g.clone());
     let (units, detail) = wrong.verdict();

@@ -132,11 +132,13 @@ fn equation_of_motion_check_fails_for_wrong_modulus() {
 /// testing: l² → l/l went unseen; the runs use the scene's own units, where l = 1.)
 #[test]
 fn the_wall_phase_energy_is_constant_along_the_exact_motion() {
-    use sliding_ladder::sim::rigid::{energy, Ladder};
+    use sliding_ladder::sim::rigid::energy;
+
+    use sliding_ladder::ladder::Ladder;
     let ladder = Ladder {
-        mass: 2.0,
-        half_length: 3.0,
-        gravity: 9.81,
+        m: 2.0,
+        l: 3.0,
+        g: 9.81,
     };
     let omega2 = 0.75 * 9.81 / 3.0;
     let motion = PhaseOne::new(0.3, 0.4, omega2).unwrap();

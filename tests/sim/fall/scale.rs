@@ -17,15 +17,15 @@
 //! `PROPTEST_CASES` sets the number of random scenes (default 64, about a second in release).
 
 use proptest::prelude::*;
+use sliding_ladder::ladder::Ladder;
 use sliding_ladder::sim::fall::{self, Outcome};
 use sliding_ladder::sim::integrators::{is_adaptive, names, Control};
-use sliding_ladder::sim::rigid::Ladder;
 use sliding_ladder::sim::scene::output::Output;
 use sliding_ladder::sim::scene::{ContactModel, End, Scene};
 
 const U: f64 = f64::EPSILON / 2.0;
 
-fn scene(ladder: Ladder, theta0: f64, rate0: f64, method: &str, tol: f64) -> Scene {
+fn scene(ladder: Ladder<f64>, theta0: f64, rate0: f64, method: &str, tol: f64) -> Scene {
     Scene {
         file: "(scale sweep)".into(),
         ladder,
@@ -49,8 +49,8 @@ fn scene(ladder: Ladder, theta0: f64, rate0: f64, method: &str, tol: f64) -> Sce
 
 /// cos θ_s from the energy integral, written out (footnote 4 with a push):
 /// 2/3 cos θ0 + 4 l θ̇0² / (9 g).
-fn theory_cosine(ladder: &Ladder, theta0: f64, rate0: f64) -> f64 {
-    2.0 / 3.0 * theta0.cos() + 4.0 * ladder.half_length * rate0 * rate0 / (9.0 * ladder.gravity)
+fn theory_cosine(ladder: &Ladder<f64>, theta0: f64, rate0: f64) -> f64 {
+    2.0 / 3.0 * theta0.cos() + 4.0 * ladder.l * rate0 * rate0 / (9.0 * ladder.g)
 }
 
 /// The angle error and its bound 10 N τ max(θ_s, 1) + 8 u, N the wall phase's steps.
@@ -68,8 +68,8 @@ fn adaptive() -> Vec<&'static str> {
     names().filter(|m| is_adaptive(m)).collect()
 }
 
-fn unit_time(l: &Ladder) -> f64 {
-    (l.half_length / l.gravity).sqrt()
+fn unit_time(l: &Ladder<f64>) -> f64 {
+    (l.l / l.g).sqrt()
 }
 
 proptest! {
@@ -86,11 +86,11 @@ proptest! {
         let methods = adaptive();
         let method = methods[k % methods.len()];
         let tol = 10f64.powf(et);
-        let ladder = Ladder { mass: 10f64.powf(em), half_length: 10f64.powf(el), gravity: 10f64.powf(eg) };
-        let unit = Ladder { mass: 1.0, half_length: 1.0, gravity: 9.81 };
+        let ladder = Ladder { m: 10f64.powf(em), l: 10f64.powf(el), g: 10f64.powf(eg) };
+        let unit = Ladder { m: 1.0, l: 1.0, g: 9.81 };
         let (sc, sc1) = (scene(ladder, theta0, 0.0, method, tol), scene(unit, theta0, 0.0, method, tol));
         let o = fall::run(&sc, fall::MAX_STEPS);
-        prop_assert!(o.is_ok(), "{method} τ {tol:e} m {:e} l {:e} g {:e}: {:?}", ladder.mass, ladder.half_length, ladder.gravity, o.err());
+        prop_assert!(o.is_ok(), "{method} τ {tol:e} m {:e} l {:e} g {:e}: {:?}", ladder.m, ladder.l, ladder.g, o.err());
         let (o, o1) = (o.unwrap(), fall::run(&sc1, fall::MAX_STEPS).unwrap());
         let (err, bound) = angle_error_and_bound(&sc, &o, tol);
         prop_assert!(err <= bound, "{method} τ {tol:e}: cos θ_s off by {err:e} > {bound:e}");
@@ -100,9 +100,9 @@ proptest! {
         // The floor-phase monitors in units of m g and l: one product on the way out and one
         // quotient here, 4 ulps. (Mutation testing: `· l` → `/ l` for the clearance went unseen.)
         let (r, r1) = (o.floor_report.unwrap(), o1.floor_report.unwrap());
-        let (f, f1) = (r.floor_force_min / (ladder.mass * ladder.gravity), r1.floor_force_min / (unit.mass * unit.gravity));
+        let (f, f1) = (r.floor_force_min / (ladder.m * ladder.g), r1.floor_force_min / (unit.m * unit.g));
         prop_assert!((f - f1).abs() <= 4.0 * U * f1.abs(), "floor_force_min / (m g) {f} vs {f1}");
-        let (c, c1) = (r.top_clearance_min / ladder.half_length, r1.top_clearance_min / unit.half_length);
+        let (c, c1) = (r.top_clearance_min / ladder.l, r1.top_clearance_min / unit.l);
         prop_assert!((c - c1).abs() <= 4.0 * U * c1.abs(), "top_clearance_min / l {c} vs {c1}");
     }
 
@@ -116,7 +116,7 @@ proptest! {
         let methods = adaptive();
         let method = methods[k % methods.len()];
         let tol = 10f64.powf(et);
-        let ladder = Ladder { mass: 1.0, half_length: 10f64.powf(el), gravity: 10f64.powf(eg) };
+        let ladder = Ladder { m: 1.0, l: 10f64.powf(el), g: 10f64.powf(eg) };
         let rate0 = f * (ladder.big_omega2() * theta0.cos()).sqrt();
         // θ0 = θ̇0 = 0 is the equilibrium (the scene check refuses it).
         prop_assume!(theta0 > 0.0 || rate0 > 0.0);
@@ -134,9 +134,9 @@ proptest! {
 #[test]
 fn the_sweep_checks_can_fail() {
     let ladder = Ladder {
-        mass: 1e10,
-        half_length: 1e28,
-        gravity: 1e-5,
+        m: 1e10,
+        l: 1e28,
+        g: 1e-5,
     };
     for method in adaptive() {
         for (tol, off) in [(1e-4, 0.02), (1e-12, 1e-6)] {
@@ -226,15 +226,15 @@ fn steps_and_end_times_in_the_scenes_own_units() {
 fn the_traces_forces_are_eqs_14_15_in_si() {
     use sliding_ladder::sim::{rigid, scene};
     let ladder = Ladder {
-        mass: 2.0,
-        half_length: 3.0,
-        gravity: 9.81,
+        m: 2.0,
+        l: 3.0,
+        g: 9.81,
     };
     let text = "[ladder]\nmass = 2.0\nhalf_length = 3.0\ngravity = 9.81\n[start]\nangle = 0.3\nangular_velocity = 0.0\n[contact]\nmodel = \"rigid\"\n[integrator]\nmethod = \"dop853\"\ntolerance = 1e-10\n[end]\nat = \"separation\"\n[outputs]\nwant = [\"forces\"]\n";
     let o = fall::run(&scene::parse("forces.toml", text).unwrap(), fall::MAX_STEPS).unwrap();
     let trace = o.trace.unwrap();
     assert!(trace.len() > 10, "{} samples", trace.len());
-    let scale = ladder.mass * ladder.gravity;
+    let scale = ladder.m * ladder.g;
     for p in &trace {
         let (w, f) = p.forces.expect("forces asked");
         let want = (

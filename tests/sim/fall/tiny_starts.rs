@@ -184,14 +184,14 @@ fn an_end_within_the_lead_in_is_the_linear_motion() {
 /// The plan's estimate of the wall phase's length in seconds (`phase_steps` for a fixed rk4
 /// step h at g = 9.81, times h) from (θ0, θ̇0 in rad/s); its floor phase's steps must be 0.
 fn estimated_wall_time(theta0: f64, rate0: f64) -> f64 {
+    use sliding_ladder::ladder::Ladder;
     use sliding_ladder::sim::integrators::Control;
-    use sliding_ladder::sim::rigid::Ladder;
     use sliding_ladder::sim::scene::work::phase_steps;
     use sliding_ladder::sim::scene::{ContactModel, End};
     let ladder = Ladder {
-        mass: 1.0,
-        half_length: 1.0,
-        gravity: G,
+        m: 1.0,
+        l: 1.0,
+        g: G,
     };
     let h = 1e-3;
     let [wall, floor] = phase_steps(

@@ -8,13 +8,15 @@ use sliding_ladder::sim::exact::PhaseOne;
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::integrators::dop853::Dop853;
 use sliding_ladder::sim::integrators::{Control, Ode, Stepper};
-use sliding_ladder::sim::rigid::{self, Ladder, WallPhase};
+use sliding_ladder::sim::rigid::{self, WallPhase};
+
+use sliding_ladder::ladder::Ladder;
 use sliding_ladder::sim::run::{integrate_phase, Observer};
 
-const LADDER: Ladder = Ladder {
-    mass: 1.0,
-    half_length: 1.0,
-    gravity: 9.81,
+const LADDER: Ladder<f64> = Ladder {
+    m: 1.0,
+    l: 1.0,
+    g: 9.81,
 };
 
 fn separation(theta0: f64, rate0: f64, method: &str, control: Control) -> fall::SeparationState {
@@ -312,11 +314,11 @@ fn the_separation_rate_is_reported_in_si() {
 fn the_flat_state_is_reported_in_si() {
     use sliding_ladder::sim::scene::output::Output;
     let mut sc = scene_at(0.3, 0.0);
-    sc.ladder.half_length = 2.0;
+    sc.ladder.l = 2.0;
     sc.control = Some(Control::Tolerance(1e-14));
     sc.end = sliding_ladder::sim::scene::End::Flat;
     sc.outputs = vec![Output::FlatTime, Output::SeparationAngle];
-    let (l, g) = (sc.ladder.half_length, sc.ladder.gravity);
+    let (l, g) = (sc.ladder.l, sc.ladder.g);
     let o = fall::run(&sc, fall::MAX_STEPS).unwrap();
     let (s, f) = (o.separation.unwrap(), o.flat.unwrap());
     let vx = l * s.angle.cos() * s.rate;

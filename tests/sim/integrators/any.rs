@@ -7,14 +7,15 @@
 use sliding_ladder::sim::integrators::taylor::Taylor;
 use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Stepper};
-use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+use sliding_ladder::sim::rigid::WallPhase;
 
+use sliding_ladder::ladder::Ladder;
 #[test]
 fn a_taylor_any_stepper_hands_on_its_series_and_trig_and_others_have_none() {
     let sys = WallPhase::new(&Ladder {
-        mass: 1.0,
-        half_length: 1.0,
-        gravity: 1.0,
+        m: 1.0,
+        l: 1.0,
+        g: 1.0,
     });
     let (t0, y0, tol) = (0.0, [0.3, 0.1], 1e-12);
     let mut own = Taylor::new(t0, y0, tol);

@@ -81,11 +81,13 @@ fn the_last_step_lands_on_the_stop_exactly() {
 #[test]
 fn a_taylor_step_takes_in_a_sliver_before_the_stop() {
     use sliding_ladder::sim::integrators::taylor::Taylor;
-    use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+    use sliding_ladder::sim::rigid::WallPhase;
+
+    use sliding_ladder::ladder::Ladder;
     let sys = WallPhase::new(&Ladder {
-        mass: 1.0,
-        half_length: 1.0,
-        gravity: 1.0,
+        m: 1.0,
+        l: 1.0,
+        g: 1.0,
     });
     let (t0, y0, tol) = (0.5, [0.3, 0.1], 1e-12);
     // The step the method takes from this state towards a far stop.
@@ -111,11 +113,13 @@ fn a_taylor_step_takes_in_a_sliver_before_the_stop() {
 #[test]
 fn a_taylor_step_below_the_rounding_of_t_is_refused() {
     use sliding_ladder::sim::integrators::taylor::Taylor;
-    use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+    use sliding_ladder::sim::rigid::WallPhase;
+
+    use sliding_ladder::ladder::Ladder;
     let sys = WallPhase::new(&Ladder {
-        mass: 1.0,
-        half_length: 1.0,
-        gravity: 1.0,
+        m: 1.0,
+        l: 1.0,
+        g: 1.0,
     });
     let mut st = Taylor::new(1e20, [0.3, 0.1], 1e-12);
     let r = st.step(&sys, 2e20);

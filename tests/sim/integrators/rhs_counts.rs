@@ -53,11 +53,13 @@ fn each_method_counts_every_right_hand_side_it_evaluates() {
 #[test]
 fn verlet_evaluates_the_wall_phase_once_a_step() {
     use sliding_ladder::sim::complement::ComplementWall;
-    use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+    use sliding_ladder::sim::rigid::WallPhase;
+
+    use sliding_ladder::ladder::Ladder;
     let ladder = Ladder {
-        mass: 1.0,
-        half_length: 1.0,
-        gravity: 1.0,
+        m: 1.0,
+        l: 1.0,
+        g: 1.0,
     };
     fn count<S: Ode<2>>(sys: &S, y0: [f64; 2]) -> (u64, u64) {
         let mut st = AnyStepper::new("verlet", Control::Fixed(0.01), 0.0, y0).unwrap();

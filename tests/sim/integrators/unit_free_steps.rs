@@ -19,7 +19,9 @@
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{is_adaptive, names, Control, Stepper};
-use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+use sliding_ladder::sim::rigid::WallPhase;
+
+use sliding_ladder::ladder::Ladder;
 use sliding_ladder::sim::scene::output::Output;
 use sliding_ladder::sim::scene::{ContactModel, End, Scene};
 
@@ -51,25 +53,25 @@ fn differ(prints: &[Footprint], ulps: f64) -> Option<String> {
     })
 }
 
-fn scales() -> Vec<Ladder> {
+fn scales() -> Vec<Ladder<f64>> {
     let mut all = vec![Ladder {
-        mass: 1.0,
-        half_length: 1.0,
-        gravity: 9.81,
+        m: 1.0,
+        l: 1.0,
+        g: 9.81,
     }];
     for k in 0..8 {
         let e = |bit: u32| if k >> bit & 1 == 1 { 1e30 } else { 1e-30 };
         all.push(Ladder {
-            mass: e(0),
-            half_length: e(1),
-            gravity: e(2),
+            m: e(0),
+            l: e(1),
+            g: e(2),
         });
     }
     all
 }
 
-fn scene(ladder: Ladder, theta0: f64, method: &str, end: End) -> Scene {
-    let unit = (ladder.half_length / ladder.gravity).sqrt();
+fn scene(ladder: Ladder<f64>, theta0: f64, method: &str, end: End) -> Scene {
+    let unit = (ladder.l / ladder.g).sqrt();
     let control = match method {
         "exact" => None,
         m if is_adaptive(m) => Some(Control::Tolerance(1e-10)),
@@ -93,7 +95,7 @@ fn scene(ladder: Ladder, theta0: f64, method: &str, end: End) -> Scene {
 
 /// The footprint of `scene` run as `ladder simulate` runs it.
 fn simulated(scene: &Scene) -> Footprint {
-    let unit = (scene.ladder.half_length / scene.ladder.gravity).sqrt();
+    let unit = (scene.ladder.l / scene.ladder.g).sqrt();
     let o = fall::run(scene, fall::MAX_STEPS).expect("runs");
     let s = o.separation.expect("separates");
     let floor = o.work.floor.unwrap_or_default();
@@ -139,12 +141,12 @@ fn every_phase_takes_the_same_steps_at_every_scale() {
 /// θ and the steps taken when `method` integrates the wall phase of `ladder` from θ0 = 0.3 at
 /// rest to t = 2 T (a time in the floor phase: the wall phase's equation continues there),
 /// with its steps and the stop time in units of `step_scale` seconds.
-fn wall_phase_in(ladder: &Ladder, method: &str, step_scale: f64) -> Result<Footprint, String> {
-    let unit = (ladder.half_length / ladder.gravity).sqrt();
+fn wall_phase_in(ladder: &Ladder<f64>, method: &str, step_scale: f64) -> Result<Footprint, String> {
+    let unit = (ladder.l / ladder.g).sqrt();
     // The model in units of `step_scale`: Ω² s², time running in step_scale seconds.
     let s = step_scale;
     let model = WallPhase::new(&Ladder {
-        half_length: ladder.half_length / (s * s),
+        l: ladder.l / (s * s),
         ..*ladder
     });
     let control = match is_adaptive(method) {
@@ -177,17 +179,17 @@ fn wall_phase_in(ladder: &Ladder, method: &str, step_scale: f64) -> Result<Footp
 /// number of steps or evaluations.
 #[test]
 fn an_absolute_step_scale_is_caught() {
-    let ladders: Vec<Ladder> = [-100, 0, 100]
+    let ladders: Vec<Ladder<f64>> = [-100, 0, 100]
         .map(|e: i32| Ladder {
-            mass: 1.0,
-            half_length: 2f64.powi(e),
-            gravity: 1.0,
+            m: 1.0,
+            l: 2f64.powi(e),
+            g: 1.0,
         })
         .to_vec();
     for method in names() {
         let in_units: Vec<Footprint> = ladders
             .iter()
-            .map(|l| wall_phase_in(l, method, (l.half_length / l.gravity).sqrt()))
+            .map(|l| wall_phase_in(l, method, (l.l / l.g).sqrt()))
             .collect::<Result<_, _>>()
             .unwrap_or_else(|e| panic!("{method} in units of T: {e}"));
         assert_eq!(differ(&in_units, 0.0), None, "{method} in units of T");

@@ -9,7 +9,9 @@ use sliding_ladder::sim::integrators::taylor::{
     floor_series, reciprocals, wall_series, FloorScratch, Taylor,
 };
 use sliding_ladder::sim::integrators::{Control, Stepper};
-use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+use sliding_ladder::sim::rigid::WallPhase;
+
+use sliding_ladder::ladder::Ladder;
 use sliding_ladder::sim::scene::End;
 
 type Q = Rational;
@@ -194,10 +196,10 @@ fn floor_coefficients_satisfy_the_law_of_motion_exactly() {
     assert!(bad.iter().any(|r| !r.is_zero()));
 }
 
-const LADDER: Ladder = Ladder {
-    mass: 1.0,
-    half_length: 1.0,
-    gravity: 9.81,
+const LADDER: Ladder<f64> = Ladder {
+    m: 1.0,
+    l: 1.0,
+    g: 9.81,
 };
 
 /// |θ(h) − exact| after one step of order p from θ0 = 0.3 at rest.

@@ -11,8 +11,9 @@ use sliding_ladder::sim::floor::{state_at_separation, FloorPhase};
 use sliding_ladder::sim::integrators::taylor::Taylor;
 use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::{Control, Ode, Stepper};
-use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+use sliding_ladder::sim::rigid::WallPhase;
 
+use sliding_ladder::ladder::Ladder;
 const TOL: f64 = 1e-12;
 
 /// The state at `t_end` by Taylor and by dop853 (both at tolerance 1e-12), and their steps.
@@ -34,9 +35,9 @@ fn both<const N: usize, S: Ode<N>>(sys: &S, y0: [f64; N], t_end: f64) -> ([f64; 
 #[test]
 fn every_model_s_series_follows_its_right_hand_side() {
     let ladder = Ladder {
-        mass: 1.0,
-        half_length: 1.0,
-        gravity: 1.0,
+        m: 1.0,
+        l: 1.0,
+        g: 1.0,
     };
     let check = |name: &str, a: &[f64], b: &[f64], steps: u64| {
         let bound = 10.0 * steps as f64 * TOL;

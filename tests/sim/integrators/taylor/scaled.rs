@@ -16,8 +16,9 @@ use sliding_ladder::sim::integrators::taylor::{
     floor_series, reciprocals, wall_series, FloorScratch, Taylor,
 };
 use sliding_ladder::sim::integrators::{Ode, Stepper};
-use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+use sliding_ladder::sim::rigid::WallPhase;
 
+use sliding_ladder::ladder::Ladder;
 type Q = Rational;
 
 /// (steps, θ, θ̇ T, t / T) after integrating `sys` from `y0` to t = 2 T with order `p` at
@@ -46,14 +47,14 @@ fn run_in_seconds<const N: usize, S: Ode<N>>(
 }
 
 /// Ladders of time unit T = 2⁻⁵⁰, 1 and 2⁵⁰ s (g = 1, l = T²: every conversion exact).
-fn ladders() -> [(Ladder, f64); 3] {
+fn ladders() -> [(Ladder<f64>, f64); 3] {
     [-50, 0, 50].map(|e: i32| {
         let unit = 2f64.powi(e);
         (
             Ladder {
-                mass: 1.0,
-                half_length: unit * unit,
-                gravity: 1.0,
+                m: 1.0,
+                l: unit * unit,
+                g: 1.0,
             },
             unit,
         )
@@ -84,7 +85,7 @@ fn high_orders_are_unit_free() {
                 [1.2, 0.0],
                 p,
             ));
-            let l = ladder.half_length;
+            let l = ladder.l;
             let y0 = [0.9, l * 0.9f64.sin(), -0.8 / unit, 0.2 * l / unit];
             floor.push(run_in_seconds(&FloorPhase::new(&ladder), unit, y0, p));
             let y0 = [0.6, l * 0.6f64.cos(), 0.8 / unit, 0.2 * l / unit];

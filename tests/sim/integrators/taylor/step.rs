@@ -23,14 +23,15 @@
 use sliding_ladder::sim::exact::PhaseOne;
 use sliding_ladder::sim::integrators::taylor::{horner, step_from_orders, Taylor};
 use sliding_ladder::sim::integrators::{Ode, Stepper};
-use sliding_ladder::sim::rigid::{Ladder, WallPhase};
+use sliding_ladder::sim::rigid::WallPhase;
 
+use sliding_ladder::ladder::Ladder;
 const U: f64 = f64::EPSILON / 2.0;
 
-const LADDER: Ladder = Ladder {
-    mass: 1.0,
-    half_length: 1.0,
-    gravity: 9.81,
+const LADDER: Ladder<f64> = Ladder {
+    m: 1.0,
+    l: 1.0,
+    g: 9.81,
 };
 
 /// Which step one check takes from the series the stepper computed at the start.
