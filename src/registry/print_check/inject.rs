@@ -43,7 +43,7 @@ pub struct Injection {
 
 /// What the check made of a typo.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Outcome {
+pub enum Detection {
     /// Flagged: the first problem reported (form and residual).
     Caught(String),
     /// No form's value changed: nothing to catch.
@@ -115,7 +115,7 @@ pub fn injections(number: u32, latex: &str) -> Vec<Injection> {
 }
 
 /// Check one typo.
-pub fn run_injection(e: &Equation, inj: &Injection, cfg: &Config) -> Outcome {
+pub fn run_injection(e: &Equation, inj: &Injection, cfg: &Config) -> Detection {
     let rep = check_print(e, &inj.latex, cfg);
     // The same three verdicts `verify::judge_print` fails a display on: a chain that breaks, a
     // form that no longer parses, and a Rust form that equals no printed form (the only witness
@@ -131,12 +131,12 @@ pub fn run_injection(e: &Equation, inj: &Injection, cfg: &Config) -> Outcome {
         .cloned()
         .or(code)
     {
-        return Outcome::Caught(p);
+        return Detection::Caught(p);
     }
     if same_values(e, &inj.latex) {
-        Outcome::Neutral
+        Detection::Neutral
     } else {
-        Outcome::Missed
+        Detection::Missed
     }
 }
 

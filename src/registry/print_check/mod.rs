@@ -286,7 +286,7 @@ mod run;
 pub mod twins;
 pub mod units;
 pub use crate::registry::sample::PrintSample;
-pub use inject::{injections, run_injection, Injection, Outcome, Typo};
+pub use inject::{injections, run_injection, Detection, Injection, Typo};
 pub use motion::OFF_MOTION_POINTS;
 pub use run::{
     check_print, check_print_with, print_sample, sample_check, PRINT_EXACT_POINTS,

@@ -9,7 +9,9 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use sliding_ladder::registry::check::Config;
 use sliding_ladder::registry::equations;
-use sliding_ladder::registry::print_check::{injections, run_injection, Injection, Outcome, Typo};
+use sliding_ladder::registry::print_check::{
+    injections, run_injection, Detection, Injection, Typo,
+};
 
 fn quick() -> Config {
     Config {
@@ -29,7 +31,7 @@ fn sweep(list: &[Injection]) -> (usize, Vec<String>, Vec<String>) {
             .find(|e| e.number == inj.number)
             .expect("registered");
         match run_injection(e, inj, &quick()) {
-            Outcome::Caught(why) => {
+            Detection::Caught(why) => {
                 // The report names the form (or why it no longer parses).
                 assert!(
                     why.contains("form") || why.contains("parse") || why.contains("symbol"),
@@ -37,10 +39,10 @@ fn sweep(list: &[Injection]) -> (usize, Vec<String>, Vec<String>) {
                 );
                 caught += 1;
             }
-            Outcome::Neutral => {
+            Detection::Neutral => {
                 neutral.push(format!("({}) {:?}: {}", inj.number, inj.typo, inj.latex))
             }
-            Outcome::Missed => {
+            Detection::Missed => {
                 missed.push(format!("({}) {:?}: {}", inj.number, inj.typo, inj.latex))
             }
         }
@@ -81,7 +83,9 @@ fn the_typo_in_25_is_named_with_its_form_and_residual() {
         .find(|i| i.typo == Typo::SinCos)
         .expect("a sin/cos in (25)");
     match run_injection(&e, &inj, &quick()) {
-        Outcome::Caught(why) => assert!(why.contains("form") && why.contains("residual"), "{why}"),
+        Detection::Caught(why) => {
+            assert!(why.contains("form") && why.contains("residual"), "{why}")
+        }
         other => panic!("{other:?}"),
     }
 }
