@@ -10,7 +10,7 @@
 //! * [`registry`]: one entry per display of the note, built from its section of the markdown
 //!   `equations/*.md` (embedded in the binary), with its checks; [`verify`] runs them and lists
 //!   the errata; [`docs`] holds the book's files, examples and figures against the code.
-//! * [`method`]: the trait a new derivation of the equation of motion implements to be checked.
+//! * [`derivation`]: the trait a new derivation of the equation of motion implements to be checked.
 //! * [`sim`], [`report`]: the simulator (scenes, models, integrators, exact reference) and its
 //!   reports (work-precision, plots).
 //! * [`show`]: one display in depth (`ladder show N`); [`book`]: the note as verified, as a static
@@ -24,9 +24,9 @@
 
 pub mod book;
 pub mod cli;
+pub mod derivation;
 pub mod docs;
 pub mod ladder;
-pub mod method;
 pub mod milne;
 pub mod print;
 pub mod registry;

@@ -241,7 +241,7 @@ pub fn counts(results: &[EquationResult]) -> (usize, usize, usize, usize) {
     )
 }
 
-/// The verdict on one derivation of the equation of motion ([`crate::method`]).
+/// The verdict on one derivation of the equation of motion ([`crate::derivation`]).
 #[derive(Clone, Debug, Serialize)]
 pub struct MethodResult {
     /// The method's name.
@@ -256,9 +256,9 @@ pub struct MethodResult {
     pub problems: Vec<String>,
 }
 
-/// Check every method of the note ([`crate::method::methods`]).
+/// Check every derivation of the note ([`crate::derivation::derivations`]).
 pub fn check_methods(cfg: &Config) -> Vec<MethodResult> {
-    on_all_cores(&crate::method::methods(), |(name, checks)| {
+    on_all_cores(&crate::derivation::derivations(), |(name, checks)| {
         let reports: Vec<CheckReport> = checks.iter().map(|c| run_check(c, cfg)).collect();
         let problems = reports
             .iter()

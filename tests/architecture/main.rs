@@ -24,7 +24,7 @@ const LAYERS: &[&[&str]] = &[
     &["ladder", "milne", "sim"],
     &["print"],
     &["registry"],
-    &["method", "docs", "verify"],
+    &["derivation", "docs", "verify"],
     &["report"],
     &["show", "book"],
     &["cli"],

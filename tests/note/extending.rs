@@ -5,9 +5,9 @@
 
 use crate::common::copy_of_equations;
 use serde_json::Value;
+use sliding_ladder::derivation::{check_derivation, Derivation};
 use sliding_ladder::ladder::analysis::{torque_equation, AngularMomentum, Reference};
 use sliding_ladder::ladder::{Ladder, State};
-use sliding_ladder::method::{check_method, Method};
 use sliding_ladder::registry::check::{CheckReport, Config};
 use sliding_ladder::scalar::Scalar;
 use sliding_ladder::sim::exact::PhaseOne;
@@ -89,7 +89,7 @@ fn a_new_point_of_the_lab_is_data_and_the_fixed_point_law_about_a_moving_one_is_
 #[derive(Default)]
 struct AboutLabPoint;
 
-impl Method for AboutLabPoint {
+impl Derivation for AboutLabPoint {
     const NAME: &'static str = "about the lab point (l/2, 3l/2), L_P and (38)";
     fn residual<T: Scalar>(&self, l: &Ladder<T>, s: &State<T>) -> T {
         let (lhs, rhs) = torque_equation(&Reference::Lab(1, 3, 2), AngularMomentum::Absolute, l, s);
@@ -101,7 +101,7 @@ impl Method for AboutLabPoint {
 #[derive(Default)]
 struct MixedPoints;
 
-impl Method for MixedPoints {
+impl Derivation for MixedPoints {
     const NAME: &'static str = "planted: dL/dt about R, torque about Q";
     fn residual<T: Scalar>(&self, l: &Ladder<T>, s: &State<T>) -> T {
         let (lhs, _) = torque_equation(&Reference::Lab(1, 3, 2), AngularMomentum::Absolute, l, s);
@@ -116,9 +116,9 @@ fn a_new_method_is_checked_like_the_notes_and_a_mixed_up_one_fails() {
         float_cases: 200,
         ..Config::default()
     };
-    let good = check_method::<AboutLabPoint>(&cfg);
+    let good = check_derivation::<AboutLabPoint>(&cfg);
     assert!(good.iter().all(CheckReport::passed), "{:?}", names(&good));
-    let bad = check_method::<MixedPoints>(&cfg);
+    let bad = check_derivation::<MixedPoints>(&cfg);
     eprintln!("planted method: {:?}", names(&bad));
     assert!(
         !bad.iter().all(CheckReport::passed),

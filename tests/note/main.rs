@@ -7,9 +7,9 @@
 
 #[path = "../common/mod.rs"]
 mod common;
+mod derivation;
 mod extending;
 mod ladder;
-mod method;
 mod print;
 mod registry;
 mod show;

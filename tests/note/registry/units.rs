@@ -40,7 +40,7 @@ fn every_display_has_a_units_verdict_and_only_misprints_are_inconsistent() {
     // length, (68) a mass. (28) and (54) are wrong in value only.
     assert_eq!(caught, vec![49, 62, 68]);
     // The twelve derivations of the equation of motion: residuals and solved θ̈ consistent.
-    for (name, checks) in sliding_ladder::method::methods() {
+    for (name, checks) in sliding_ladder::derivation::derivations() {
         for c in &checks {
             let found = sliding_ladder::registry::units::check_units(c);
             assert!(found.problems.is_empty(), "{name}: {:?}", found.problems);

@@ -1,11 +1,12 @@
-//! Methods: anything that yields the ladder's equation of motion from its state.
+//! Derivations: anything that yields the ladder's equation of motion from its state.
 //!
 //! The note derives the equation of motion (5) six ways, and Appendix A adds Jensen's methods.
-//! Each is a [`Method`]: a residual of the ladder's state, affine in θ̈, that vanishes exactly on
-//! the motion. Implementing the trait is all a new method needs: [`MethodChecks`] turns it into
+//! Each is a [`Derivation`]: a residual of the ladder's state, affine in θ̈, that vanishes exactly
+//! on the motion ("method" is the simulator's word for an integrator). Implementing the trait is
+//! all a new derivation needs: [`DerivationChecks`] turns it into
 //! registry checks (θ̈ solved from the residual equals (5) at random states, in floats within an
 //! error bound and exactly in rationals; the residual vanishes on the motion and not off it),
-//! and [`check_method`] runs them. `examples/midpoint_method.rs` adds one from outside the crate;
+//! and [`check_derivation`] runs them. `examples/midpoint_derivation.rs` adds one from outside the crate;
 //! `docs/EXTENDING.md` walks through it.
 
 use crate::ladder::analysis::{torque_equation, AngularMomentum, Reference};
@@ -22,7 +23,7 @@ use crate::scalar::Scalar;
 use std::marker::PhantomData;
 
 /// A derivation of the equation of motion.
-pub trait Method: Default + 'static {
+pub trait Derivation: Default + 'static {
     /// A short name, for reports.
     const NAME: &'static str;
     /// The method's equation as a residual (left side minus right side): zero on the motion,
@@ -31,9 +32,9 @@ pub trait Method: Default + 'static {
 }
 
 /// The registry checks of a method.
-pub struct MethodChecks<M>(PhantomData<M>);
+pub struct DerivationChecks<M>(PhantomData<M>);
 
-impl<M: Method> MethodChecks<M> {
+impl<M: Derivation> DerivationChecks<M> {
     /// [θ̈ solved from the method, θ̈ of eq. (5)] at any state.
     pub fn solved<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Vec<Chain<S>> {
         let m = M::default();
@@ -70,8 +71,8 @@ impl<M: Method> MethodChecks<M> {
 }
 
 /// Run a method's checks.
-pub fn check_method<M: Method>(cfg: &Config) -> Vec<CheckReport> {
-    MethodChecks::<M>::checks()
+pub fn check_derivation<M: Derivation>(cfg: &Config) -> Vec<CheckReport> {
+    DerivationChecks::<M>::checks()
         .iter()
         .map(|c| run_check(c, cfg))
         .collect()
@@ -81,7 +82,7 @@ pub fn check_method<M: Method>(cfg: &Config) -> Vec<CheckReport> {
 #[derive(Default)]
 pub struct Lagrange;
 
-impl Method for Lagrange {
+impl Derivation for Lagrange {
     const NAME: &'static str = "Lagrange (4)";
     fn residual<T: Scalar>(&self, l: &Ladder<T>, s: &State<T>) -> T {
         lagrange_residual(&NoteLagrangian, l, s)
@@ -92,7 +93,7 @@ impl Method for Lagrange {
 #[derive(Default)]
 pub struct PrintedAnalysis<const K: usize>;
 
-impl<const K: usize> Method for PrintedAnalysis<K> {
+impl<const K: usize> Derivation for PrintedAnalysis<K> {
     const NAME: &'static str = [
         "about A (16)",
         "about B (19)",
@@ -109,7 +110,7 @@ impl<const K: usize> Method for PrintedAnalysis<K> {
 #[derive(Default)]
 pub struct FirstPrinciples<const K: usize>;
 
-impl<const K: usize> Method for FirstPrinciples<K> {
+impl<const K: usize> Derivation for FirstPrinciples<K> {
     const NAME: &'static str = [
         "L'_A, (40)",
         "L'_B, (40)",
@@ -132,7 +133,7 @@ impl<const K: usize> Method for FirstPrinciples<K> {
 #[derive(Default)]
 pub struct JensenMethodOne;
 
-impl Method for JensenMethodOne {
+impl Derivation for JensenMethodOne {
     const NAME: &'static str = "Jensen method 1 at C (53)";
     fn residual<T: Scalar>(&self, l: &Ladder<T>, s: &State<T>) -> T {
         let [lhs, rhs] = eq53_method_one_c(l, s);
@@ -141,9 +142,9 @@ impl Method for JensenMethodOne {
 }
 
 /// The note's methods with their checks: (name, checks).
-pub fn methods() -> Vec<(&'static str, Vec<Check>)> {
-    fn entry<M: Method>() -> (&'static str, Vec<Check>) {
-        (M::NAME, MethodChecks::<M>::checks())
+pub fn derivations() -> Vec<(&'static str, Vec<Check>)> {
+    fn entry<M: Derivation>() -> (&'static str, Vec<Check>) {
+        (M::NAME, DerivationChecks::<M>::checks())
     }
     vec![
         entry::<Lagrange>(),

@@ -2,12 +2,12 @@
 //! checked exactly like the note's own (random float states within an error bound, exact
 //! rational points, on-shell and off-shell).
 //!
-//! Run: `cargo run --release --example midpoint_method` (exit code 1 if a check fails).
+//! Run: `cargo run --release --example midpoint_derivation` (exit code 1 if a check fails).
 
+use sliding_ladder::derivation::{check_derivation, Derivation};
 use sliding_ladder::ladder::analysis::{torque_equation, AngularMomentum, ReferencePoint};
 use sliding_ladder::ladder::geometry::{corner_position, Corner};
 use sliding_ladder::ladder::{Ladder, State};
-use sliding_ladder::method::{check_method, Method};
 use sliding_ladder::registry::check::Config;
 use sliding_ladder::scalar::Scalar;
 use sliding_ladder::vector::Vec3;
@@ -41,7 +41,7 @@ impl ReferencePoint for FootOfPerpendicularFromA {
 #[derive(Default)]
 struct AboutMidpointOfBAndE;
 
-impl Method for AboutMidpointOfBAndE {
+impl Derivation for AboutMidpointOfBAndE {
     const NAME: &'static str = "about the midpoint of B and E, L_P and (38)";
     fn residual<T: Scalar>(&self, l: &Ladder<T>, s: &State<T>) -> T {
         let (lhs, rhs) = torque_equation(&MidpointOfBAndE, AngularMomentum::Absolute, l, s);
@@ -53,7 +53,7 @@ impl Method for AboutMidpointOfBAndE {
 #[derive(Default)]
 struct AboutFootOfPerpendicular;
 
-impl Method for AboutFootOfPerpendicular {
+impl Derivation for AboutFootOfPerpendicular {
     const NAME: &'static str = "about the foot of the perpendicular from A, L'_P and (40)";
     fn residual<T: Scalar>(&self, l: &Ladder<T>, s: &State<T>) -> T {
         let (lhs, rhs) =
@@ -62,9 +62,9 @@ impl Method for AboutFootOfPerpendicular {
     }
 }
 
-fn report<M: Method>(cfg: &Config) -> bool {
+fn report<M: Derivation>(cfg: &Config) -> bool {
     let mut ok = true;
-    for r in check_method::<M>(cfg) {
+    for r in check_derivation::<M>(cfg) {
         println!(
             "{:<58} {:<48} {} float cases (worst {:.3} error bounds), {} exact points, degree {} (Schwartz-Zippel ≤ {:.1e}){}: {}",
             M::NAME,

@@ -1,8 +1,8 @@
 //! Every derivation of the equation of motion passes its checks; a wrong one does not.
 
+use sliding_ladder::derivation::{check_derivation, Derivation};
 use sliding_ladder::ladder::energy::angular_acceleration;
 use sliding_ladder::ladder::{Ladder, State};
-use sliding_ladder::method::{check_method, Method};
 use sliding_ladder::registry::check::Config;
 use sliding_ladder::scalar::Scalar;
 use sliding_ladder::verify::check_methods;
@@ -25,7 +25,7 @@ fn the_notes_methods_all_give_the_equation_of_motion() {
 #[derive(Default)]
 struct WrongInertia;
 
-impl Method for WrongInertia {
+impl Derivation for WrongInertia {
     const NAME: &'static str = "wrong moment of inertia";
     fn residual<T: Scalar>(&self, l: &Ladder<T>, s: &State<T>) -> T {
         T::ratio(3, 4) * l.m.clone() * l.l.clone() * l.l.clone() * s.accel.clone()
@@ -37,7 +37,7 @@ impl Method for WrongInertia {
 #[derive(Default)]
 struct Vacuous;
 
-impl Method for Vacuous {
+impl Derivation for Vacuous {
     const NAME: &'static str = "vacuous";
     fn residual<T: Scalar>(&self, l: &Ladder<T>, s: &State<T>) -> T {
         angular_acceleration(l, s) - angular_acceleration(l, s)
@@ -51,9 +51,9 @@ fn a_wrong_method_fails_its_checks() {
         exact_points: 2,
         seed: 5,
     };
-    let wrong = check_method::<WrongInertia>(&cfg);
+    let wrong = check_derivation::<WrongInertia>(&cfg);
     assert!(wrong.iter().all(|r| !r.passed()), "{wrong:?}");
-    let vacuous = check_method::<Vacuous>(&cfg);
+    let vacuous = check_derivation::<Vacuous>(&cfg);
     assert!(
         vacuous.iter().any(|r| r.off_shell_fails == Some(false)),
         "{vacuous:?}"
