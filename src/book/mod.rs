@@ -17,6 +17,7 @@ pub mod animation;
 pub mod code;
 pub mod derivations;
 pub mod generated;
+pub mod harness;
 pub mod intro;
 pub mod markdown;
 pub mod math;

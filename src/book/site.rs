@@ -224,7 +224,7 @@ pub fn build(root: &Path, data: &BookData) -> Built {
     }
     for f in &files {
         let name = page_name(f);
-        let body = bodies.remove(f).unwrap_or_default();
+        let body = super::harness::fold_rust_lists(&bodies.remove(f).unwrap_or_default());
         let body = match f.as_str() {
             "ERRATA.md" => generated::errata_page(data, &home, &body, &mut problems),
             "problems.md" => {

@@ -8,6 +8,7 @@ mod chromium;
 mod common;
 mod docs;
 mod errata_doc;
+mod harness;
 mod mathml;
 mod pages;
 mod problems;
