@@ -245,9 +245,7 @@ pub fn show(
         (None, Vec::new())
     };
     let assumption = expectation(&e, &point.summary, place.as_ref());
-    let printed = |f: &&values::FormValue| {
-        f.role == "printed" || f.role == "condition" || f.role == "continued"
-    };
+    let printed = |f: &&values::FormValue| f.role == "printed" || f.role == "continued";
     let forms_agree = forms
         .iter()
         .filter(printed)

@@ -196,7 +196,6 @@ pub fn render(s: &Shown) -> String {
     for (k, f) in s.forms.iter().enumerate() {
         let tag = match f.role {
             "misprint" => " [misprint]",
-            "condition" => " [condition]",
             "continued" => " [from (56)]",
             _ => "",
         };

@@ -40,8 +40,8 @@ pub struct FormValue {
     pub latex: String,
     /// Its Unicode reading.
     pub unicode: String,
-    /// `printed`, `misprint` (recorded erratum: must differ), `condition` (an evaluation bar's
-    /// a = b) or `continued` ((57)'s first form, which is (56)'s last).
+    /// `printed`, `misprint` (recorded erratum: must differ) or `continued` ((57)'s first form,
+    /// which is (56)'s last). An evaluation bar is a substitution inside its form, not a form.
     pub role: &'static str,
     /// In Milne's notation.
     pub milne: bool,
@@ -264,8 +264,6 @@ pub fn form_values_of(e: &Equation, latex: &str, point: &Point) -> Result<Vec<Fo
         for (k, f) in chain.iter().enumerate() {
             let role = if e.continues.is_some() && ci == 0 && k == 0 {
                 "continued"
-            } else if f.text == "evaluation condition" {
-                "condition"
             } else if f.role == Role::Misprint {
                 "misprint"
             } else {
