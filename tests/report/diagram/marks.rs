@@ -3,7 +3,9 @@
 //! sense of θ̇ round B, counter-clockwise while θ grows; and no lever arm drawn on the floor, the
 //! wall or a force's line of action (about D the floor force and two arms shared one line, and
 //! gravity's arm lay on the floor). Shown able to fail: the arms moved back to their true places
-//! (the drawing before this change) are caught about A, C and D.
+//! (the drawing before this change) are caught about A, C and D. The direction of a_P is also
+//! held to each corner's acceleration differentiated by hand from its position, and a wrong
+//! reference (another corner's, or its own reversed) is caught.
 
 use sliding_ladder::ladder::analysis::Reference;
 use sliding_ladder::ladder::geometry::Corner;
@@ -132,4 +134,57 @@ fn a_p_is_drawn_at_p_opposite_to_the_coordinate_force_and_theta_dot_turns_counte
             "about {k:?}"
         );
     }
+}
+
+/// The acceleration of a corner at the worked example's state, from its position (B = (l sin θ,
+/// l cos θ), C = (0, 2l cos θ), D = (2l sin θ, 0), E = (2l sin θ, 2l cos θ)) differentiated twice
+/// by hand: independent of the model the diagram draws from.
+fn closed_form_acceleration(k: Corner) -> (f64, f64) {
+    let (l, g, th) = (1.0f64, 9.81f64, 30f64.to_radians());
+    let w2 = 0.75 * g / l;
+    let rate2 = 2.0 * w2 * (1.0 - th.cos());
+    let accel = w2 * th.sin();
+    let (s, c) = (th.sin(), th.cos());
+    // d²/dt² (l sin θ) and d²/dt² (l cos θ).
+    let (ax, ay) = (l * (c * accel - s * rate2), -l * (s * accel + c * rate2));
+    match k {
+        Corner::A => (0.0, 0.0),
+        Corner::B => (ax, ay),
+        Corner::C => (0.0, 2.0 * ay),
+        Corner::D => (2.0 * ax, 0.0),
+        Corner::E => (2.0 * ax, 2.0 * ay),
+    }
+}
+
+/// Whether the drawn arrow `(x1, y1, x2, y2)` (px, y down) points along `a`: the ends are printed
+/// to 0.01 px, so the sine of the angle between them is at most 2 · 0.005 √2 / length (doubled).
+fn points_along(arrow: Ends, a: (f64, f64)) -> bool {
+    let (x1, y1, x2, y2) = arrow;
+    let (dx, dy) = (x2 - x1, y1 - y2);
+    let (len, norm) = (dx.hypot(dy), a.0.hypot(a.1));
+    let (cos, sin) = (
+        (dx * a.0 + dy * a.1) / (len * norm),
+        (dx * a.1 - dy * a.0) / (len * norm),
+    );
+    cos > 0.0 && sin.abs() <= 4.0 * 0.005 * std::f64::consts::SQRT_2 / len
+}
+
+#[test]
+fn a_p_points_along_the_closed_form_acceleration_of_each_corner() {
+    for k in [Corner::B, Corner::C, Corner::D, Corner::E] {
+        let svg = draw_svg(&about(k));
+        let acc = lines(&svg, "acceleration");
+        assert_eq!(acc.len(), 1, "about {k:?}");
+        assert!(
+            points_along(acc[0].0, closed_form_acceleration(k)),
+            "about {k:?}: a_P drawn along {:?}, the closed form is {:?}",
+            acc[0].0,
+            closed_form_acceleration(k)
+        );
+    }
+    // A wrong reference fails: D's arrow against C's acceleration, and against its own reversed.
+    let d = lines(&draw_svg(&about(Corner::D)), "acceleration")[0].0;
+    assert!(!points_along(d, closed_form_acceleration(Corner::C)));
+    let (ax, ay) = closed_form_acceleration(Corner::D);
+    assert!(!points_along(d, (-ax, -ay)));
 }
