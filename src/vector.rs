@@ -143,16 +143,3 @@ impl<T: Scalar> Neg for Vec3<T> {
 pub fn sum<T: Scalar>(it: impl IntoIterator<Item = Vec3<T>>) -> Vec3<T> {
     it.into_iter().fold(Vec3::zero(), |a, b| a + b)
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn right_handed_cross_product() {
-        let x = Vec3::new(1.0, 0.0, 0.0);
-        let y = Vec3::new(0.0, 1.0, 0.0);
-        assert_eq!(x.cross(&y), Vec3::new(0.0, 0.0, 1.0));
-        assert_eq!(y.cross(&x), Vec3::new(0.0, 0.0, -1.0));
-    }
-}

@@ -29,7 +29,7 @@ pub mod reader_pages;
 pub mod refs;
 pub mod site;
 pub mod terms;
-mod write;
+pub mod write;
 
 pub use write::write_atomically;
 

@@ -115,21 +115,3 @@ table.derivations td, table.derivations th { width: 14%; }
 @media print { header, footer { display: none; } main { max-width: none; } .eq, figure, tr { break-inside: avoid; }
   a { color: inherit; text-decoration: none; } .checks { background: none; } }
 "#;
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn escaping_covers_markup_characters() {
-        assert_eq!(esc("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
-    }
-
-    #[test]
-    fn the_frame_marks_the_current_page_and_links_the_stylesheet_relatively() {
-        let nav = vec![("index.html".to_string(), "Index".to_string())];
-        let p = page("T", 2, &nav, "index.html", "<p>x</p>");
-        assert!(p.contains("href=\"../../style.css\""));
-        assert!(p.contains("href=\"../../index.html\" aria-current=\"page\""));
-    }
-}

@@ -6,7 +6,7 @@
 //! a plain list of what each symbol means ([`fold_declarations`]).
 
 /// The heading that starts a worked solution, as the markdown renderer writes it.
-const SOLUTION: &str = "<h4>Solution</h4>";
+pub const SOLUTION: &str = "<h4>Solution</h4>";
 
 /// Fold every worked solution of the rendered page: from its heading to the next heading of
 /// level 1-3 (the next problem) or the end of the page.
@@ -62,35 +62,4 @@ pub fn fold_declarations(html: &str) -> String {
         &html[start..end],
         &html[end..]
     )
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn each_solution_is_folded_up_to_the_next_problem() {
-        let html =
-            "<h2>P 1</h2><p>q</p><h4>Solution</h4><p>a</p><h2>P 2</h2><h4>Solution</h4><p>b</p>";
-        let f = fold_solutions(html);
-        assert_eq!(f.matches("<details class=\"solution\">").count(), 2);
-        assert!(f.contains("<summary>Worked solution</summary><p>a</p></details>\n<h2>P 2</h2>"));
-        assert!(f.ends_with("<p>b</p></details>\n"));
-        assert!(!f.contains(SOLUTION));
-    }
-
-    #[test]
-    fn fold_declarations_keeps_each_meaning_and_folds_the_ids() {
-        let html = "<p>intro</p>\n<p><em>Points:</em> Q = ladder:1/4</p>\n\
-                    <p><em>Symbols:</em></p>\n<ul>\n<li><math>x</math> = <code>position:Q.x</code> \
-                    [L]: abscissa of Q</li>\n</ul>\n<h2>Problem 1</h2>";
-        let f = fold_declarations(html);
-        assert!(f.starts_with("<p>intro</p>\n<p>The symbols of the answers:</p>"));
-        assert!(f.contains("<li><math>x</math>: abscissa of Q</li>"), "{f}");
-        let open = f.find("<details class=\"harness\">").expect("folded");
-        assert!(f.find("<code>position:Q.x</code>").expect("kept") > open);
-        assert!(f.ends_with("</details>\n<h2>Problem 1</h2>"), "{f}");
-        // A page without declarations is left as it is.
-        assert_eq!(fold_declarations("<p>x</p>"), "<p>x</p>");
-    }
 }

@@ -66,16 +66,3 @@ pub fn badge(s: Status) -> String {
         ),
     )
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn readers_words_differ_from_the_technical_ones_where_they_must() {
-        assert_eq!(status_word(Status::Verified), "checked");
-        assert_eq!(status_word(Status::Erratum), "misprint in the note");
-        assert!(badge(Status::Erratum).contains("class=\"badge erratum\""));
-        assert!(badge(Status::Verified).contains("glossary.html#checked"));
-    }
-}

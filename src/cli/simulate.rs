@@ -126,17 +126,3 @@ pub fn simulate_builtin_classic() -> ExitCode {
         }
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The step limit is not bad input (it was exit 2): exit 1 like a run short of its end.
-    #[test]
-    fn the_step_limit_exits_1_and_an_unresolved_contact_2() {
-        let limit = RunError::TooManySteps { limit: 10, t: 1.0 };
-        assert_eq!(run_error_code(&limit), 1);
-        assert_eq!(run_error_code(&RunError::LiftOff { t: 1.0, theta: 1.0 }), 1);
-        assert_eq!(run_error_code(&RunError::Start("not resolved".into())), 2);
-    }
-}

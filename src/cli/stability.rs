@@ -63,7 +63,7 @@ pub fn stability(json: bool) -> ExitCode {
 
 /// The stderr line of a report with cases not as theory expects (exit 1), naming each; `None`
 /// when every verdict is the expected one.
-fn surprise_line(cases: &[Case]) -> Option<String> {
+pub fn surprise_line(cases: &[Case]) -> Option<String> {
     let names: Vec<String> = cases
         .iter()
         .filter(|c| c.expect.surprised_by(c.verdict))
@@ -76,46 +76,4 @@ fn surprise_line(cases: &[Case]) -> Option<String> {
             names.join(", ")
         )
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::report::stability::case::{Expect, Verdict};
-
-    fn case(verdict: Verdict, expect: Expect) -> Case {
-        Case {
-            group: "extreme",
-            case: "θ0=0 θ̇0=1e0·Ω: angle".into(),
-            method: "dop853 1e-13".into(),
-            expected: String::new(),
-            value: String::new(),
-            error: None,
-            bound: None,
-            steps: 0,
-            rhs_evals: 0,
-            seconds: 0.0,
-            verdict,
-            reason: String::new(),
-            expect,
-            drift: None,
-        }
-    }
-
-    /// Exit 1 always says why: a case whose verdict theory did not expect is named on stderr,
-    /// and a report as expected has no line.
-    #[test]
-    fn surprise_line_names_each_unexpected_case() {
-        let fine = case(Verdict::Ok, Expect::Ok);
-        assert_eq!(surprise_line(std::slice::from_ref(&fine)), None);
-        let line = surprise_line(&[fine, case(Verdict::Fail, Expect::Ok)]).unwrap();
-        assert!(
-            line.starts_with("ladder stability: exit 1: 1 cases"),
-            "{line}"
-        );
-        assert!(
-            line.contains("extreme θ0=0 θ̇0=1e0·Ω: angle (dop853 1e-13)"),
-            "{line}"
-        );
-    }
 }

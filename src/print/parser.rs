@@ -372,6 +372,3 @@ impl Parser {
         }
     }
 }
-
-#[cfg(test)]
-mod tests;

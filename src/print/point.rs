@@ -6,7 +6,7 @@
 use crate::ladder::analysis::Reference;
 
 /// An exact fraction written as `3`, `-1/4` or `0.25`, as (numerator, denominator).
-fn fraction(text: &str) -> Option<(i64, i64)> {
+pub fn fraction(text: &str) -> Option<(i64, i64)> {
     let t = text.trim();
     if let Some((p, q)) = t.split_once('/') {
         let (p, q): (i64, i64) = (p.trim().parse().ok()?, q.trim().parse().ok()?);
@@ -41,29 +41,4 @@ pub fn parse_point(id: &str) -> Option<Reference> {
         yn.checked_mul(xd)?,
         xd.checked_mul(yd)?,
     ))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn fractions_and_points_are_read_exactly() {
-        assert_eq!(fraction("3"), Some((3, 1)));
-        assert_eq!(fraction("-1/4"), Some((-1, 4)));
-        assert_eq!(fraction("0.25"), Some((25, 100)));
-        assert_eq!(fraction("-0.5"), Some((-5, 10)));
-        assert_eq!(fraction("1/0"), None);
-        assert_eq!(fraction("x"), None);
-        assert!(matches!(
-            parse_point("ladder:1/4"),
-            Some(Reference::OnLadder(1, 4))
-        ));
-        assert!(parse_point("ladder:5/4").is_none() && parse_point("ladder:-1/4").is_none());
-        assert!(matches!(
-            parse_point("lab:1/2,3/2"),
-            Some(Reference::Lab(2, 6, 4))
-        ));
-        assert!(parse_point("lab:1/2").is_none() && parse_point("moon").is_none());
-    }
 }

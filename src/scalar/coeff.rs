@@ -56,7 +56,9 @@ macro_rules! binary_gcd {
     }};
 }
 
-fn gcd(a: u128, b: u128) -> u128 {
+/// The gcd of two unsigned integers (0 when both are 0), by Stein's binary algorithm in u64 when
+/// both fit.
+pub fn gcd(a: u128, b: u128) -> u128 {
     if a == 0 || b == 0 {
         return a | b;
     }
@@ -328,7 +330,3 @@ impl One for Coeff {
         matches!(self, Coeff::Small(1, 1))
     }
 }
-
-#[cfg(test)]
-#[path = "coeff_tests.rs"]
-mod tests;

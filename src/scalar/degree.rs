@@ -94,21 +94,3 @@ impl Scalar for Degree {
         f64::NAN
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn degrees_of_the_circle_parametrisation() {
-        // sin θ = 2t/(1+t²): numerator 1, denominator 2.
-        let t = Degree::variable();
-        let one = Degree::int(1);
-        let s = Degree::int(2) * t / (one + t * t);
-        assert_eq!(s, Degree { num: 1, den: 2 });
-        // s² + c² - 1 over the common denominator has numerator degree at most 4.
-        let c = (one - t * t) / (one + t * t);
-        let r = s * s + c * c - one;
-        assert!(r.num >= 4, "{r:?}");
-    }
-}

@@ -381,7 +381,3 @@ impl Scalar for Dim {
         f64::NAN
     }
 }
-
-#[cfg(test)]
-#[path = "dimension_tests.rs"]
-mod tests;

@@ -87,19 +87,3 @@ impl<T: Scalar> Scalar for Jet<T> {
         self.re.to_f64()
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::scalar::Rational;
-
-    #[test]
-    fn quotient_rule_is_exact() {
-        // d/dx (1/(1+x²)) = -2x/(1+x²)², at x = 3: -6/100.
-        let x = Jet::new(Rational::int(3), Rational::int(1));
-        let one = Jet::<Rational>::int(1);
-        let f = one.clone() / (one + x.clone() * x);
-        assert_eq!(f.eps, Rational::ratio(-6, 100));
-        assert_ne!(f.eps, Rational::ratio(6, 100));
-    }
-}

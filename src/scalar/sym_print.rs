@@ -8,7 +8,8 @@ use super::poly::{var_names, Mono, Poly};
 use super::{Coeff, Sym};
 use num_traits::One;
 
-pub(super) fn mono_str(m: &Mono, latex: bool) -> String {
+/// A monomial as text or LaTeX: its variables with their powers (`s^2 c` / `s^{2} c`).
+pub fn mono_str(m: &Mono, latex: bool) -> String {
     m.iter()
         .map(|&(v, e)| {
             let (t, l) = var_names(v);
@@ -46,8 +47,8 @@ pub fn poly_str(p: &Poly, latex: bool) -> String {
 }
 
 /// The terms of a factor in print order: by degree, c before s (c² − s², as the note writes
-/// cos²θ − sin²θ), then as [`ordered`].
-pub(super) fn factor_ordered(p: &Poly) -> Vec<(&Mono, &Coeff)> {
+/// cos²θ − sin²θ), then as `ordered` sorts them.
+pub fn factor_ordered(p: &Poly) -> Vec<(&Mono, &Coeff)> {
     let mut terms = ordered(p);
     let deg = |m: &Mono| m.iter().map(|x| x.1).sum::<u32>();
     let c = |m: &Mono| super::poly::exponent(m, super::poly::C);
@@ -57,7 +58,7 @@ pub(super) fn factor_ordered(p: &Poly) -> Vec<(&Mono, &Coeff)> {
 
 /// [`poly_str`] of a factor: [`factor_ordered`], positive terms first (a factor whose sign was
 /// turned reads `c θ̈ − s θ̇²`, not `−s θ̇² + c θ̈`).
-pub(super) fn factor_str(p: &Poly, latex: bool) -> String {
+pub fn factor_str(p: &Poly, latex: bool) -> String {
     let mut terms = factor_ordered(p);
     terms.sort_by_key(|t| t.1.is_negative());
     terms_str(terms, latex)
@@ -136,24 +137,5 @@ pub fn latex(s: &Sym) -> String {
     match den_str(s, true) {
         None => num,
         Some(d) => format!("\\frac{{{num}}}{{{d}}}"),
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::scalar::Scalar;
-
-    #[test]
-    fn prints_text_and_latex() {
-        let m = Sym::var("m", "m");
-        let rate = Sym::var("θ̇", "\\dot\\theta");
-        let v = -Sym::ratio(3, 4) * m.clone() * Sym::sin() * rate.clone() * rate.clone();
-        assert_eq!(text(&v), "-3/4 s m θ̇^2");
-        assert_eq!(latex(&v), "-\\frac{3}{4} s m \\dot\\theta^{2}");
-        let l = Sym::var("l", "l");
-        let q = (Sym::cos() - Sym::int(1)) / (l.clone() * (m.clone() + l));
-        assert_eq!(text(&q), "(c - 1) / (l (m + l))");
-        assert_eq!(text(&Sym::int(0)), "0");
     }
 }

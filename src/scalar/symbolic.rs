@@ -372,7 +372,3 @@ impl Scalar for Sym {
         }
     }
 }
-
-#[cfg(test)]
-#[path = "symbolic_tests.rs"]
-mod tests;

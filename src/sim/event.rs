@@ -231,6 +231,3 @@ pub fn brent(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, mut fa: f64, mut fb
     }
     b
 }
-
-#[cfg(test)]
-mod tests;

@@ -7,10 +7,13 @@
 //! `super::x`, `self::x`, a child module named at the start of a path, re-exports followed to
 //! the file that defines the name, and `sliding_ladder::...` in `src/main.rs`. `mod`
 //! declarations, comments and strings do not. Test modules inside `src/` count too.
+//!
+//! And no unit test hides in `src/`: the library is built without its unit-test harness
+//! (`[lib] test = false` in Cargo.toml, docs/build-time.md), so a `#[test]` there never runs.
 
 mod module_graph;
 
-use module_graph::scan::imports;
+use module_graph::scan::{code_only, imports};
 use module_graph::{cycles, graph, name, sibling_edges, Module, Seen};
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
@@ -217,4 +220,42 @@ mod tests { use super::*; }
             ("a::b".to_string(), 7, None),
         ]
     );
+}
+
+/// The lines of `text` that open a unit test or a test module (`#[test]`, `#[cfg(test)]`),
+/// comments and strings aside.
+fn unit_test_lines(text: &str) -> Vec<usize> {
+    code_only(text)
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| {
+            let l = l.trim_start();
+            l.starts_with("#[cfg(test)]") || l.starts_with("#[test]")
+        })
+        .map(|(i, _)| i + 1)
+        .collect()
+}
+
+#[test]
+fn no_unit_test_hides_in_the_library() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let found: Vec<String> = module_graph::modules(&src)
+        .values()
+        .flat_map(|p| {
+            let text = std::fs::read_to_string(p).expect("src is readable");
+            unit_test_lines(&text)
+                .into_iter()
+                .map(move |l| format!("{}:{l}", p.display()))
+        })
+        .collect();
+    assert!(
+        found.is_empty(),
+        "unit tests in src/ never run ([lib] test = false): move them to tests/: {found:?}"
+    );
+}
+
+#[test]
+fn a_planted_unit_test_is_found() {
+    let text = "// #[cfg(test)] in a comment\nconst S: &str = \"#[test]\";\n#[cfg(test)]\nmod tests {\n    #[test]\n    fn t() {}\n}\n";
+    assert_eq!(unit_test_lines(text), vec![3, 5]);
 }

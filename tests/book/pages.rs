@@ -11,6 +11,7 @@ use std::process::Command;
 use std::sync::OnceLock;
 
 use crate::built::CASES;
+use sliding_ladder::book::pages::{esc, page};
 
 fn ladder() -> Command {
     Command::new(env!("CARGO_BIN_EXE_ladder"))
@@ -347,4 +348,17 @@ fn the_json_proves_every_display_with_its_units_and_a_lapse_is_caught() {
         plant(&|j| j["summary"]["sampled_only"] = 1.into()),
         [format!("summary: {displays} proved, 1 sampled only")]
     );
+}
+
+#[test]
+fn escaping_covers_markup_characters() {
+    assert_eq!(esc("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
+}
+
+#[test]
+fn the_frame_marks_the_current_page_and_links_the_stylesheet_relatively() {
+    let nav = vec![("index.html".to_string(), "Index".to_string())];
+    let p = page("T", 2, &nav, "index.html", "<p>x</p>");
+    assert!(p.contains("href=\"../../style.css\""));
+    assert!(p.contains("href=\"../../index.html\" aria-current=\"page\""));
 }

@@ -10,6 +10,7 @@
 
 use crate::common::copy_of_equations;
 use serde_json::Value;
+use sliding_ladder::book::problems::{fold_declarations, fold_solutions, SOLUTION};
 use std::process::{Command, Output};
 
 fn ladder(args: &[&str]) -> Output {
@@ -189,4 +190,29 @@ fn problem_6_quotes_the_landing_speed_the_index_computes() {
         number_after("moving at Ẋ = 1.3788 m/s", "moving at Ẋ = "),
         computed
     );
+}
+
+#[test]
+fn each_solution_is_folded_up_to_the_next_problem() {
+    let html = "<h2>P 1</h2><p>q</p><h4>Solution</h4><p>a</p><h2>P 2</h2><h4>Solution</h4><p>b</p>";
+    let f = fold_solutions(html);
+    assert_eq!(f.matches("<details class=\"solution\">").count(), 2);
+    assert!(f.contains("<summary>Worked solution</summary><p>a</p></details>\n<h2>P 2</h2>"));
+    assert!(f.ends_with("<p>b</p></details>\n"));
+    assert!(!f.contains(SOLUTION));
+}
+
+#[test]
+fn fold_declarations_keeps_each_meaning_and_folds_the_ids() {
+    let html = "<p>intro</p>\n<p><em>Points:</em> Q = ladder:1/4</p>\n\
+                    <p><em>Symbols:</em></p>\n<ul>\n<li><math>x</math> = <code>position:Q.x</code> \
+                    [L]: abscissa of Q</li>\n</ul>\n<h2>Problem 1</h2>";
+    let f = fold_declarations(html);
+    assert!(f.starts_with("<p>intro</p>\n<p>The symbols of the answers:</p>"));
+    assert!(f.contains("<li><math>x</math>: abscissa of Q</li>"), "{f}");
+    let open = f.find("<details class=\"harness\">").expect("folded");
+    assert!(f.find("<code>position:Q.x</code>").expect("kept") > open);
+    assert!(f.ends_with("</details>\n<h2>Problem 1</h2>"), "{f}");
+    // A page without declarations is left as it is.
+    assert_eq!(fold_declarations("<p>x</p>"), "<p>x</p>");
 }

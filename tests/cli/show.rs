@@ -4,6 +4,12 @@
 //! each erratum's misprinted form disagrees, exact states agree exactly, the JSON carries every
 //! printed form; bad `--at` input is refused in one line with exit 2; words find displays.
 
+mod at;
+mod find;
+mod source;
+mod state;
+mod values;
+
 use serde_json::Value;
 use sliding_ladder::registry::check::TOLERANCE_FACTOR;
 use sliding_ladder::registry::print_check::continuation;

@@ -4,6 +4,9 @@
 
 use crate::common::{replace_line as with, PENALTY};
 use serde_json::Value;
+use sliding_ladder::cli::stability::surprise_line;
+use sliding_ladder::report::stability::case::Case;
+use sliding_ladder::report::stability::case::{Expect, Verdict};
 use std::process::Command;
 
 /// `ladder simulate SCENE --json --out DIR` on `text`: (exit code, stdout, stderr, files).
@@ -316,4 +319,40 @@ fn stability_json_has_verdicts_for_five_stiffnesses_and_the_extreme_cases() {
         assert!(names.iter().any(|n| n.contains(needle)), "{needle} missing");
     }
     assert_eq!(v["surprises"], 0);
+}
+
+fn case(verdict: Verdict, expect: Expect) -> Case {
+    Case {
+        group: "extreme",
+        case: "θ0=0 θ̇0=1e0·Ω: angle".into(),
+        method: "dop853 1e-13".into(),
+        expected: String::new(),
+        value: String::new(),
+        error: None,
+        bound: None,
+        steps: 0,
+        rhs_evals: 0,
+        seconds: 0.0,
+        verdict,
+        reason: String::new(),
+        expect,
+        drift: None,
+    }
+}
+
+/// Exit 1 always says why: a case whose verdict theory did not expect is named on stderr,
+/// and a report as expected has no line.
+#[test]
+fn surprise_line_names_each_unexpected_case() {
+    let fine = case(Verdict::Ok, Expect::Ok);
+    assert_eq!(surprise_line(std::slice::from_ref(&fine)), None);
+    let line = surprise_line(&[fine, case(Verdict::Fail, Expect::Ok)]).unwrap();
+    assert!(
+        line.starts_with("ladder stability: exit 1: 1 cases"),
+        "{line}"
+    );
+    assert!(
+        line.contains("extreme θ0=0 θ̇0=1e0·Ω: angle (dop853 1e-13)"),
+        "{line}"
+    );
 }

@@ -8,9 +8,14 @@
 #[path = "../common/mod.rs"]
 mod common;
 mod derivation;
+mod docs;
 mod extending;
 mod ladder;
+mod milne;
 mod print;
 mod registry;
+mod scalar;
 mod show;
+mod system;
+mod vector;
 mod verify;

@@ -4,7 +4,9 @@
 mod animation;
 mod campaign;
 mod diagram;
+mod digits;
 mod fall_figures;
+mod plot;
 mod stability;
 mod svg_chart;
 mod work_precision;

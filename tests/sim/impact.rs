@@ -10,8 +10,11 @@
 //! included; at flat the energy m g l cos θ0 = ½ m Ẋ² + ½ m l² (4/3) θ̇_f², so the impact,
 //! which takes (2/3) m l² θ̇_f², takes m g l cos θ0 − ½ m Ẋ²: all but the slide's energy. Error model: dop853 at τ over N steps,
 //! 10 N τ relative, on each of these.
+use sliding_ladder::ladder::Ladder;
 use sliding_ladder::sim::exact::PhaseOne;
 use sliding_ladder::sim::fall;
+use sliding_ladder::sim::impact::{impulses, lying_flat_floor_force, slide};
+use sliding_ladder::sim::outcome::FlatState;
 use sliding_ladder::sim::scene;
 use std::f64::consts::FRAC_PI_2;
 
@@ -99,4 +102,57 @@ fn the_command_says_the_ladder_went_on_lying_flat() {
     assert_eq!(v["final"]["rate"], 0.0);
     let impact = v["lying_flat"]["impact_time"].as_f64().unwrap();
     assert!((impact - 0.8945467579667191).abs() < 1e-9, "{impact}");
+}
+
+const LADDER: Ladder<f64> = Ladder {
+    m: 3.0,
+    l: 0.7,
+    g: 9.81,
+};
+
+/// The impulses satisfy the two impulse-momentum laws of the rod and leave both ends at
+/// rest vertically; both are upward. Checked in exact arithmetic on binary fractions (the
+/// products are then exact): m = 3, l = 0.75, θ̇ = 2. A wrong split (½, ½) fails the
+/// angular law.
+#[test]
+fn the_impulses_stop_both_ends_and_push_up() {
+    let ladder = Ladder {
+        m: 3.0,
+        l: 0.75,
+        g: 9.81,
+    };
+    let (m, l, w) = (3.0, 0.75, 2.0);
+    let (pc, pd) = impulses(&ladder, w);
+    let inertia = m * l * l / 3.0;
+    // Linear: m ΔẎ = P_C + P_D with Ẏ from −l θ̇ to 0.
+    assert_eq!(pc + pd, m * l * w);
+    // Angular about the centre: C lies at l on the falling side, I Δθ̇ = −l (P_C − P_D).
+    assert_eq!(l * (pc - pd), inertia * w);
+    assert!(pc > 0.0 && pd > 0.0);
+    // The angular law can fail: an even split (each ½ m l θ̇) leaves the rod turning.
+    let even = 0.5 * m * l * w;
+    assert_ne!(l * (even - even), inertia * w);
+}
+
+/// The energy the impact takes is the kinetic energy of the vertical and rotational motion
+/// at flat, ½ m (l θ̇)² + ½ (m l²/3) θ̇², over m g l; the slide keeps Ẋ and moves X by
+/// Ẋ (t − t_f). Error model: a few roundings of products of O(1) numbers.
+#[test]
+fn the_slide_keeps_the_horizontal_speed_and_loses_the_rest() {
+    let flat = FlatState {
+        time: 1.25,
+        rate: 2.3,
+        centre_x: 0.7,
+        centre_velocity_x: 0.9,
+        centre_velocity_y: -0.7 * 2.3,
+    };
+    let s = slide(&LADDER, &flat, 3.25);
+    let (m, l, g) = (LADDER.m, LADDER.l, LADDER.g);
+    let kinetic = 0.5 * m * (l * flat.rate).powi(2) + 0.5 * (m * l * l / 3.0) * flat.rate.powi(2);
+    let u = f64::EPSILON;
+    assert!((s.energy_lost - kinetic / (m * g * l)).abs() <= 8.0 * u * s.energy_lost);
+    assert_eq!(s.centre_velocity_x, 0.9);
+    assert!((s.centre_x_end - (0.7 + 0.9 * 2.0)).abs() <= 4.0 * u * 2.5);
+    assert_eq!(s.impact_time, 1.25);
+    assert_eq!(lying_flat_floor_force(&LADDER), 0.5 * m * g);
 }

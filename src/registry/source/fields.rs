@@ -7,7 +7,7 @@ use crate::registry::Kind;
 
 /// Which list the next markdown list is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum ListNext {
+pub enum ListNext {
     /// Not a list of fields.
     None,
     /// The checks of `*Rust:*`.
@@ -20,7 +20,7 @@ pub(super) enum ListNext {
 
 /// What a file declares for all its displays: points and symbols, and what was wrong with them.
 #[derive(Default)]
-pub(super) struct FileDecls {
+pub struct FileDecls {
     pub points: Vec<PointSpec>,
     pub symbols: Vec<SymbolSpec>,
     pub errors: Vec<(usize, String)>,
@@ -28,7 +28,7 @@ pub(super) struct FileDecls {
 
 /// What the field paragraphs of one section said, and what was wrong with them (line, reason).
 #[derive(Default)]
-pub(super) struct Fields {
+pub struct Fields {
     pub kind: Option<Kind>,
     /// A `*Kind:*` field was written (even one naming no kind).
     pub kind_written: bool,
@@ -43,7 +43,7 @@ pub(super) struct Fields {
 
 /// The fields of a paragraph: (name, value), in order; empty when the paragraph does not begin
 /// with a field (prose). A field is `*Name:*` at the start or after a `·`.
-fn split_fields(raw: &str) -> Vec<(&str, &str)> {
+pub fn split_fields(raw: &str) -> Vec<(&str, &str)> {
     let marker = |at: usize| -> Option<(&str, usize)> {
         let rest = raw.get(at..)?.strip_prefix('*')?;
         let colon = rest.find(":*")?;
@@ -74,12 +74,7 @@ fn split_fields(raw: &str) -> Vec<(&str, &str)> {
 
 /// Read a paragraph's fields into `f` (the section's) and `file` (the file's); which list, if
 /// any, the paragraph announces.
-pub(super) fn read_paragraph(
-    raw: &str,
-    line: usize,
-    f: &mut Fields,
-    file: &mut FileDecls,
-) -> ListNext {
+pub fn read_paragraph(raw: &str, line: usize, f: &mut Fields, file: &mut FileDecls) -> ListNext {
     let mut next = ListNext::None;
     for (name, value) in split_fields(raw) {
         match name {
@@ -137,7 +132,7 @@ pub(super) fn read_premise(raw: &str, line: usize, f: &mut Fields) {
 }
 
 /// `Q = ladder:1/4; R = lab:1/2,3/2`.
-fn read_points(value: &str, line: usize, file: &mut FileDecls) {
+pub fn read_points(value: &str, line: usize, file: &mut FileDecls) {
     for item in value.split(';').map(str::trim).filter(|i| !i.is_empty()) {
         let parsed = item.split_once('=').and_then(|(name, point)| {
             let (name, point) = (name.trim(), point.trim());
@@ -164,7 +159,7 @@ fn read_points(value: &str, line: usize, file: &mut FileDecls) {
 
 /// One item of a `*Symbols:*` list:
 /// `` - $L_Q$ = `relative_angular_momentum:Q.z` [M L^2 T^-1]: angular momentum about Q ``.
-pub(super) fn read_symbol(raw: &str, line: usize, file: &mut FileDecls) {
+pub fn read_symbol(raw: &str, line: usize, file: &mut FileDecls) {
     let shape = "a symbol reads - $LaTeX$ = `quantity` [dimension]: meaning";
     let item = raw.trim_start();
     let item = item
@@ -222,7 +217,7 @@ fn code_spans(value: &str) -> impl Iterator<Item = &str> {
 }
 
 /// `the 2nd `=` is the law of motion: the law in words. Every other `=` …`.
-fn read_law(value: &str) -> Result<LawSpec, String> {
+pub fn read_law(value: &str) -> Result<LawSpec, String> {
     let shape = "the *Law:* line reads \"the 2nd `=` is the law of motion: the law in words\"";
     let rest = value.strip_prefix("the ").ok_or(shape)?;
     let (ordinal, rest) = rest.split_once(' ').ok_or(shape)?;
@@ -280,7 +275,7 @@ fn read_erratum(name: &str, value: &str, line: usize, f: &mut Fields) {
 }
 
 /// One item of the `*Rust:*` list: `` - `eq25` (on-shell): what it compares ``.
-pub(super) fn read_check(raw: &str, line: usize, f: &mut Fields) {
+pub fn read_check(raw: &str, line: usize, f: &mut Fields) {
     let shape = "a check reads - `function` (states): what it compares";
     let item = raw.trim_start();
     let item = item
@@ -304,108 +299,5 @@ pub(super) fn read_check(raw: &str, line: usize, f: &mut Fields) {
     match parsed {
         Some(c) => f.checks.push(c),
         None => f.errors.push((line, shape.into())),
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn fields_split_at_markers_after_a_dot_only() {
-        let f = split_fields("*Kind:* on-shell · *Code:* [`a::b`](x) · *Checked:* a *b:* c");
-        assert_eq!(
-            f,
-            vec![
-                ("Kind", "on-shell"),
-                ("Code", "[`a::b`](x)"),
-                ("Checked", "a *b:* c")
-            ]
-        );
-        assert!(split_fields("Prose with *Kind:* inside").is_empty());
-    }
-
-    #[test]
-    fn a_law_line_gives_its_step_and_statement() {
-        let l = read_law("the 2nd `=` is the law of motion: dL/dt = τ. Every other `=` is …");
-        assert_eq!(
-            l,
-            Ok(LawSpec {
-                step: 2,
-                statement: "dL/dt = τ".into()
-            })
-        );
-        assert_eq!(read_law("the 1st `=`").map(|l| l.step), Ok(1));
-        assert!(read_law("the second `=` is the law").is_err());
-        assert!(read_law("the 0th `=`").is_err());
-        assert!(read_law("2nd `=`").is_err());
-    }
-
-    #[test]
-    fn a_check_item_needs_function_states_and_words() {
-        let mut f = Fields::default();
-        read_check("- `eq25` (on-shell): AD of (24) = forms", 7, &mut f);
-        read_check("- eq25 (on-shell): no backticks", 8, &mut f);
-        read_check("- `eq25`: no states", 9, &mut f);
-        assert_eq!(f.checks.len(), 1);
-        assert_eq!(f.checks[0].function, "eq25");
-        assert_eq!(f.checks[0].sample, "on-shell");
-        assert_eq!(f.checks[0].name, "AD of (24) = forms");
-        assert_eq!(f.errors.iter().map(|e| e.0).collect::<Vec<_>>(), vec![8, 9]);
-    }
-
-    #[test]
-    fn an_erratum_needs_math_and_its_correction() {
-        let mut f = Fields::default();
-        read_paragraph(
-            "*Misprint:* $a = b$ · *Why:* because",
-            3,
-            &mut f,
-            &mut FileDecls::default(),
-        );
-        assert_eq!(
-            f.erratum.as_ref().map(|e| e.printed.as_str()),
-            Some("a = b")
-        );
-        assert!(f.errors.iter().any(|e| e.1.contains("*Corrected:*")));
-        let mut g = Fields::default();
-        read_paragraph(
-            "*Misprint:* a = b · *Corrected:* $c$",
-            3,
-            &mut g,
-            &mut FileDecls::default(),
-        );
-        assert!(g.errors.iter().any(|e| e.1.contains("between single `$`")));
-    }
-
-    #[test]
-    fn points_and_symbols_are_read_with_their_errors() {
-        let mut d = FileDecls::default();
-        read_points(
-            "Q = ladder:1/4; R = lab:1/2,3/2; S = ladder:5/4; T = moon",
-            4,
-            &mut d,
-        );
-        let got: Vec<(&str, &str)> = d
-            .points
-            .iter()
-            .map(|p| (p.name.as_str(), p.point.as_str()))
-            .collect();
-        assert_eq!(got, vec![("Q", "ladder:1/4"), ("R", "lab:1/2,3/2")]);
-        assert_eq!(d.errors.len(), 2, "{:?}", d.errors);
-        read_symbol(
-            "- $L_Q$ = `relative_angular_momentum:Q.z` [M L^2 T^-1]: about Q",
-            9,
-            &mut d,
-        );
-        read_symbol(
-            "- $L_Q$ = relative_angular_momentum:Q.z: no backticks",
-            10,
-            &mut d,
-        );
-        assert_eq!(d.symbols.len(), 1);
-        assert_eq!(d.symbols[0].quantity, "relative_angular_momentum:Q.z");
-        assert_eq!(d.symbols[0].dimension, "M L^2 T^-1");
-        assert_eq!(d.errors.last().map(|e| e.0), Some(10));
     }
 }

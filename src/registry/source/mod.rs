@@ -48,11 +48,11 @@
 //! Every problem is a [`SourceError`], `file:line: reason`; nothing here panics on any input
 //! (a fuzz test edits the note's own sections at random).
 
-mod fields;
-mod note;
-mod parse;
+pub mod fields;
+pub mod note;
+pub mod parse;
 pub mod premises;
-mod symbols;
+pub mod symbols;
 
 pub use note::{current, misprinted_forms, use_note, Note};
 pub use parse::{parse_file, ParsedFile};

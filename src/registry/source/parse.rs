@@ -18,7 +18,7 @@ pub(crate) fn line_of(src: &str, offset: usize) -> usize {
 
 /// The number of a display label `(12)` or `(P3)` at the start of a heading's text, and the
 /// rest (the title); `None` when the heading is not a display's.
-pub(crate) fn heading_label(text: &str) -> Option<(Result<u32, String>, &str)> {
+pub fn heading_label(text: &str) -> Option<(Result<u32, String>, &str)> {
     let rest = text.trim_start().strip_prefix('(')?;
     let close = rest.find(')')?;
     let inner = rest[..close].trim();
@@ -43,7 +43,7 @@ pub(crate) fn heading_label(text: &str) -> Option<(Result<u32, String>, &str)> {
 
 /// The section label a chapter heading gives: `Sec. 2.5 — …` → `2.5`, `Appendix A — …` → `A`,
 /// `B.7 — …` → `B.7`; `None` for any other heading.
-fn section_label(text: &str) -> Option<&str> {
+pub fn section_label(text: &str) -> Option<&str> {
     let t = text.trim();
     let t = t
         .strip_prefix("Sec. ")
@@ -59,7 +59,7 @@ fn section_label(text: &str) -> Option<&str> {
 }
 
 /// The text of a heading's source: `### (25) Title ###` → `(25) Title`.
-fn heading_text(raw: &str) -> &str {
+pub fn heading_text(raw: &str) -> &str {
     let first = raw.lines().next().unwrap_or("");
     first
         .trim()
@@ -253,57 +253,4 @@ fn close(o: Option<Open>, file: &str, parsed: &mut ParsedFile) {
         states: o.fields.states,
         premises: o.fields.premises,
     });
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn labels_and_sections_are_read_from_headings() {
-        assert_eq!(
-            heading_label("(25) Torque about D").map(|x| x.1),
-            Some("Torque about D")
-        );
-        assert_eq!(
-            heading_label("(P3) Floor").and_then(|x| x.0.ok()),
-            Some(1003)
-        );
-        assert!(heading_label("(0) Zero").is_some_and(|x| x.0.is_err()));
-        assert!(heading_label("(a) not a display").is_none());
-        assert!(heading_label("Title (3)").is_none());
-        assert_eq!(
-            section_label("Sec. 2.5 — Torque analysis about D"),
-            Some("2.5")
-        );
-        assert_eq!(section_label("Appendix A — Angular momentum"), Some("A"));
-        assert_eq!(section_label("B.7 — Sec. 303: the rate"), Some("B.7"));
-        assert_eq!(section_label("What each point costs"), None);
-        assert_eq!(
-            heading_text("### (25) Torque about D ##\n"),
-            "(25) Torque about D"
-        );
-    }
-
-    #[test]
-    fn a_section_lacking_display_or_kind_is_an_error_at_its_line() {
-        let src = "# Sec. 9.1 — Test\n\n### (1) No display\n\ntext\n\n### (2) No kind\n\n$$\na = b\n$$\n\n### (3) Law too far\n\n$$\na = b\n$$\n\n*Kind:* kinematic\n\n*Law:* the 2nd `=` is the law of motion: x\n\n### (4) Fine\n\n$$\na\n= b\n$$\n\n*Kind:* on-shell\n\n*Law:* the 1st `=` is the law of motion: the law. Every other `=` holds.\n";
-        let parsed = parse_file("t.md", src);
-        let (ok, errs) = (parsed.sections, parsed.errors);
-        let msgs: Vec<String> = errs.iter().map(ToString::to_string).collect();
-        assert_eq!(
-            msgs,
-            vec![
-                "t.md:3: (1) has no display (the LaTeX between two `$$` lines)".to_string(),
-                "t.md:7: (2) does not state its kind (a line `*Kind:* on-shell`, ...)".to_string(),
-                "t.md:21: (3): *Law:* names `=` no. 2, the display has 1".to_string(),
-            ]
-        );
-        assert_eq!(ok.len(), 1);
-        let s = &ok[0];
-        assert_eq!((s.number, s.line, s.section.as_str()), (4, 23, "9.1"));
-        assert_eq!((s.latex.as_str(), s.latex_line), ("a = b", 25));
-        let law = s.law.as_ref().expect("law");
-        assert_eq!((law.step, law.statement.as_str()), (1, "the law"));
-    }
 }

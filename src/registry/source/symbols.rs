@@ -23,7 +23,7 @@ pub fn point_id(text: &str) -> Result<String, String> {
 
 /// A quantity with its point named by a file's points replaced by the point's id:
 /// `torque:Q.z` with Q = ladder:1/4 is `torque:ladder:1/4.z`.
-fn with_points(quantity: &str, points: &[PointSpec]) -> String {
+pub fn with_points(quantity: &str, points: &[PointSpec]) -> String {
     let (base, comp) = match quantity.rsplit_once('.') {
         Some((b, c)) if matches!(c, "x" | "y" | "z") => (b, Some(c)),
         _ => (quantity, None),
@@ -100,24 +100,4 @@ pub(super) fn entries(
         });
     }
     out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_named_point_becomes_its_id_in_a_quantity() {
-        let q = [PointSpec {
-            name: "Q".into(),
-            point: "ladder:1/4".into(),
-            line: 1,
-        }];
-        assert_eq!(with_points("torque:Q.z", &q), "torque:ladder:1/4.z");
-        assert_eq!(with_points("position:Q", &q), "position:ladder:1/4");
-        assert_eq!(with_points("torque:A.z", &q), "torque:A.z");
-        assert_eq!(with_points("wall_force", &q), "wall_force");
-        assert!(point_id("ladder:1/4").is_ok() && point_id("lab:0.5,1.5").is_ok());
-        assert!(point_id("ladder:3/2").is_err() && point_id("moon").is_err());
-    }
 }

@@ -364,39 +364,3 @@ fn draw_among(seed: u64, index: u64, newcomers: bool) -> String {
     let _ = writeln!(text, "[outputs]\nwant = [{}]", list.join(", "));
     text
 }
-
-#[cfg(test)]
-mod tests {
-    use super::{pick_method, FIRST_METHODS};
-
-    /// With the table as first published every scene keeps its first draw; a method added
-    /// later takes over only scenes it wins (every other keeps its method), about its share.
-    #[test]
-    fn pick_method_moves_only_the_scenes_a_new_method_wins() {
-        let first = &FIRST_METHODS[..];
-        for i in 0..1000 {
-            let k = (i as usize * 7) % first.len();
-            assert_eq!(pick_method(1, i, first, k, first), first[k]);
-        }
-        let mut with_heun = first.to_vec();
-        with_heun.push("heun");
-        let mut moved = 0;
-        for i in 0..10_000u64 {
-            let k = (i as usize * 7) % first.len();
-            let b = pick_method(1, i, first, k, &with_heun);
-            if b != first[k] {
-                assert_eq!(b, "heun", "scene {i}");
-                moved += 1;
-            }
-        }
-        // One in ten expected: 1000 ± 30 (binomial σ); 5σ either side.
-        assert!((850..=1150).contains(&moved), "{moved}");
-        // Which scenes move depends on the seed.
-        let moved_at = |seed| {
-            (0..200u64)
-                .filter(|&i| pick_method(seed, i, first, 0, &with_heun) == "heun")
-                .collect::<Vec<_>>()
-        };
-        assert_ne!(moved_at(1), moved_at(2));
-    }
-}

@@ -103,7 +103,7 @@ fn start_rows(name: &str, theta0: f64, rate0: f64, tick: &mut impl FnMut(&str, u
 /// The form the wall phase of a start runs in (`sim::extreme::wall_release`), which sets its
 /// error model (module docs).
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum Form {
+pub enum Form {
     /// θ.
     Theta,
     /// φ = π/2 − θ, near the floor.
@@ -113,7 +113,8 @@ enum Form {
 }
 
 impl Form {
-    fn of(theta0: f64, rate0: f64) -> Form {
+    /// The form `sim::extreme::wall_release` picks for the start (θ0, θ̇0) of the unit ladder.
+    pub fn of(theta0: f64, rate0: f64) -> Form {
         if near_release::applies(UNIT.big_omega2(), theta0.cos(), rate0) {
             Form::Near
         } else if complement::applies(theta0) {
@@ -125,7 +126,7 @@ impl Form {
 
     /// Bounds on the relative errors of θ_s and t_s after `n` steps at tolerance `tol`, from
     /// θ0 to θ_s (module docs).
-    fn bounds(self, n: f64, tol: f64, theta0: f64, theta_s: f64) -> (f64, f64) {
+    pub fn bounds(self, n: f64, tol: f64, theta0: f64, theta_s: f64) -> (f64, f64) {
         let travel = (theta_s - theta0).abs().max(f64::MIN_POSITIVE);
         let local = 10.0 * n * tol;
         match self {
@@ -158,7 +159,7 @@ const ROOT_ROUNDING: f64 = 16.0 * U;
 /// One member of a start's ensemble: an angle row and a time row, each judged by its relative
 /// error against the closed form (`sim::exact`: sin²(θ_s/2) = sin²(θ0/2) + D0/(6Ω²) and
 /// Carlson's R_F for the time).
-fn member_rows(name: &str, theta0: f64, rate0: f64) -> Vec<Case> {
+pub fn member_rows(name: &str, theta0: f64, rate0: f64) -> Vec<Case> {
     let control = Control::Tolerance(TOL);
     let reference = PhaseOne::new(theta0, rate0, UNIT.big_omega2()).map(|p| p.separation());
     let (theta_ref, t_ref) = match &reference {
@@ -311,42 +312,4 @@ pub fn extreme_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
     }
     cases.push(s);
     cases
-}
-
-// The references keep the digits mpmath printed: more than f64 holds, on purpose.
-#[allow(clippy::excessive_precision)]
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The old angle check, |cos θ_s − cos θ_s,theory| ≤ 10 N τ max(θ_s, 1) + 4 u with
-    /// cos θ_s,theory = 2/3 + 4 θ̇0²/9 (g = l = 1), passed main's dop853 answer one ulp below
-    /// fl(Ω) from upright: θ_s = 1.300549668599140e-8, t_s = 1.501745402520385e-8 in one step,
-    /// where mpmath gives 1.575373387247517e-8 and 1.819084498403054e-8
-    /// (tools/near_release_reference.py). The relative checks fail that answer and pass the
-    /// rows of today's run.
-    #[test]
-    fn the_old_absolute_check_was_blind_and_the_relative_ones_are_not() {
-        let w: f64 = 0.8660254037844385;
-        let (wrong_angle, wrong_time): (f64, f64) = (1.300549668599140e-8, 1.501745402520385e-8);
-        let cs = 2.0 / 3.0 + 4.0 * w * w / 9.0;
-        let old_bound = 10.0 * TOL * wrong_angle.max(1.0) + 4.0 * U;
-        assert!((wrong_angle.cos() - cs.min(1.0)).abs() <= old_bound);
-        let x = PhaseOne::new(0.0, w, UNIT.big_omega2())
-            .unwrap()
-            .separation()
-            .unwrap();
-        // The closed form is mpmath's to 2 ulps.
-        assert!((x.angle - 1.575373387247517391330389e-8).abs() <= 4.0 * U * x.angle);
-        assert!((x.time - 1.819084498403053700173946e-8).abs() <= 8.0 * U * x.time);
-        assert_eq!(Form::of(0.0, w), Form::Near);
-        let (angle_bound, time_bound) = Form::Near.bounds(1.0, TOL, 0.0, x.angle);
-        assert!((wrong_angle - x.angle).abs() / x.angle > 1e3 * angle_bound);
-        assert!((wrong_time - x.time).abs() / x.time > 1e3 * time_bound);
-        let rows = member_rows("one ulp below fl(Ω)", 0.0, w);
-        assert_eq!(rows.len(), 2, "{rows:?}");
-        for c in &rows {
-            assert_eq!(c.verdict, Verdict::Ok, "{c:?}");
-        }
-    }
 }

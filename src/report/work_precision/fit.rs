@@ -239,7 +239,7 @@ pub fn tolerance_slope<P: Point>(runs: &[P], method: &str) -> Result<ToleranceSl
 
 /// Least-squares slope of −ln(error) against ln(steps) over `runs`, with the spread of ln(steps)
 /// (Σ(x − x̄)²) and the sum of squared residuals, for the slope's standard error.
-fn log_slope<'a, P: Point + 'a>(runs: impl Iterator<Item = &'a P>) -> (f64, f64, f64) {
+pub fn log_slope<'a, P: Point + 'a>(runs: impl Iterator<Item = &'a P>) -> (f64, f64, f64) {
     let pts: Vec<(f64, f64)> = runs
         .map(|r| ((r.steps() as f64).ln(), -r.error().ln()))
         .collect();
@@ -278,6 +278,3 @@ pub fn pareto<P: Point>(runs: &[P]) -> Vec<&P> {
     front.sort_by(|a, b| a.seconds().total_cmp(&b.seconds()));
     front
 }
-
-#[cfg(test)]
-mod tests;

@@ -16,9 +16,11 @@ use std::cell::Cell;
 
 /// Lift-off: the floor force falls through zero (checked inside steps too: it could dip and
 /// recover within one step).
-pub(in crate::sim) struct LiftOffEvent {
-    pub(in crate::sim) ladder: Ladder<f64>,
-    pub(in crate::sim) evals: Cell<u64>,
+pub struct LiftOffEvent {
+    /// The ladder, for the floor force.
+    pub ladder: Ladder<f64>,
+    /// Force evaluations spent locating the event.
+    pub evals: Cell<u64>,
 }
 impl Event<4> for LiftOffEvent {
     fn value(&self, _t: f64, y: &[f64; 4]) -> f64 {
@@ -35,7 +37,7 @@ impl Event<4> for LiftOffEvent {
 
 /// How the floor phase ended: the end (θ, X, θ̇, Ẋ) with `event` Some(0) at flat, the
 /// integrator's counters, the force evaluations and the monitors' report.
-pub(in crate::sim) struct FloorEnd {
+pub struct FloorEnd {
     pub end: PhaseEnd<4>,
     pub stats: Stats,
     pub force_evals: u64,
@@ -47,7 +49,7 @@ pub(in crate::sim) struct FloorEnd {
 /// monitors (when `plan` asks) are fed. A lift-off, also one at the phase's start (a start
 /// pushed past Ω √cos θ0 so hard that the floor would have to pull at once), is an error.
 #[allow(clippy::too_many_arguments)]
-pub(in crate::sim) fn floor_phase(
+pub fn floor_phase(
     scene: &Scene,
     plan: &Plan,
     trace: Option<&mut Kept>,

@@ -4,10 +4,10 @@
 //! evaluated and stored; [`Work`] counts it so that tests can check that nothing else was done.
 //! The phases themselves are in `sim::fall::wall_phase` and `sim::fall::floor_phase`.
 
-pub(super) mod floor_phase;
-pub(super) mod observer;
+pub mod floor_phase;
+pub mod observer;
 pub mod penalty;
-pub(super) mod wall_phase;
+pub mod wall_phase;
 
 use self::floor_phase::{floor_phase, FloorEnd};
 use self::observer::{rigid_momentum_x, TraceObserver};
@@ -312,6 +312,3 @@ fn finished(
     work.stored_samples = samples.len();
     Some(samples)
 }
-
-#[cfg(test)]
-mod tests;

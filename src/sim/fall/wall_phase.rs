@@ -14,7 +14,7 @@ use crate::sim::scene::Scene;
 use crate::sim::start_margin::Lean;
 
 /// Separation: the factor g = Ω² cos θ − θ̇² of the wall force falls through zero.
-pub(in crate::sim) struct SeparationEvent(pub(in crate::sim) f64);
+pub struct SeparationEvent(pub f64);
 impl Event<2> for SeparationEvent {
     fn value(&self, _t: f64, y: &[f64; 2]) -> f64 {
         rigid::separation_factor(self.0, y[0], y[1])
@@ -45,7 +45,7 @@ impl Event<2> for SeparationEvent {
 
 /// Where the wall phase starts: (θ, θ̇) after a tiny start's lead-in (`y`), the scene's φ0
 /// when it still holds (no lead-in), and the start's margin D0 near the release push.
-pub(in crate::sim) struct WallStart {
+pub struct WallStart {
     /// (θ, θ̇) where the integration starts.
     pub y: [f64; 2],
     /// φ0 = π/2 − θ0 exactly, when the scene gave it and no lead-in moved the start.
@@ -56,7 +56,7 @@ pub(in crate::sim) struct WallStart {
 
 /// How the wall phase ended: its end in θ (time since the lead-in; `event` Some at the
 /// separation), φ_s when the run carries it better than π/2 − θ_s, the integrator's counters.
-pub(in crate::sim) struct WallEnd {
+pub struct WallEnd {
     pub end: PhaseEnd<2>,
     pub phi_s: Option<f64>,
     pub stats: Stats,
@@ -64,7 +64,7 @@ pub(in crate::sim) struct WallEnd {
 
 /// The wall phase of `scene` (in its own units) from `start` until the separation or `t_end`
 /// (time since the lead-in), at most `max_steps` steps, feeding `observer` with (θ, θ̇).
-pub(in crate::sim) fn wall_phase<O: Observer<2>>(
+pub fn wall_phase<O: Observer<2>>(
     scene: &Scene,
     start: &WallStart,
     t_end: f64,

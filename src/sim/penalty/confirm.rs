@@ -75,7 +75,8 @@ pub fn retry_control(control: Control) -> Option<Control> {
     }
 }
 
-const U: f64 = f64::EPSILON / 2.0;
+/// The unit roundoff of f64, u = ε/2.
+pub const U: f64 = f64::EPSILON / 2.0;
 
 /// The rigid separation angle θ_r from (θ0, θ̇0), dimensionless (θ̇0 in √(g/l)):
 /// cos θ_r = (2/3) cos θ0 + (4/9) θ̇0² (footnote 4, Ω² = 3/4), from the exact solution's
@@ -119,40 +120,4 @@ pub fn confirm_separation(
     Err(format!(
         "the penalty contact was not resolved: its wall force reached zero at θ = {theta_s}, {off:.3e} rad from the rigid separation angle {rigid} where the model and integration allow {bound:.3e} (4/(κ sin θ_r) + 10 N (τ + u) max(1, 1/((9/4) sin²θ_r)), κ = {kappa:.3e}, N = {steps} steps, τ = {tau:.1e}): a spurious zero of a too loose or unstable integration; use method = \"radau5\", a tighter tolerance or a smaller step"
     ))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The rigid angle is footnote 4's: arccos(2/3) from rest at 0, and a start with the wall
-    /// force's limiting push θ̇0² = Ω² cos θ0 leaves at once.
-    #[test]
-    fn rigid_angle_is_the_closed_form() {
-        assert_eq!(rigid_separation_angle(0.0, 0.0), (2.0f64 / 3.0).acos());
-        let (theta0, rate0) = (0.4f64, (0.75 * 0.4f64.cos()).sqrt());
-        // Error model: the argument of acos carries a few roundings (cos, the square root and
-        // its square, two products, a sum: ≤ 8 u relative), and acos amplifies an absolute
-        // error by 1/sin θ.
-        let bound = 8.0 * U / theta0.sin();
-        assert!(
-            (rigid_separation_angle(theta0, rate0) - theta0).abs() <= bound,
-            "{} vs {theta0}",
-            rigid_separation_angle(theta0, rate0)
-        );
-        // A wrong formula (the energy without the push) fails.
-        assert!((rigid_separation_angle(theta0, 0.0) - theta0).abs() > 0.1);
-    }
-
-    /// A zero at the start (F1's θ_s ≈ θ0) is refused; the rigid angle plus the model's own
-    /// shift is accepted; the bound grows with the steps and their error.
-    #[test]
-    fn spurious_zero_refused_and_model_shift_accepted() {
-        let r = rigid_separation_angle(1e-12, 0.0);
-        let e = confirm_separation(1e6, (1e-12, 0.0), 1.4e-12, 20_000, 1e-10).unwrap_err();
-        assert!(e.starts_with("the penalty contact was not resolved"), "{e}");
-        assert!(confirm_separation(1e6, (1e-12, 0.0), r + 1.4e-6, 20_000, 1e-10).is_ok());
-        assert!(confirm_separation(1e6, (1e-12, 0.0), r + 1e-4, 20, 1e-12).is_err());
-        assert!(confirm_separation(1e6, (1e-12, 0.0), r + 1e-4, 2_000, 1e-8).is_ok());
-    }
 }

@@ -7,10 +7,10 @@
 //! `[end] at (time)`, `[outputs] want`. Unknown keys are errors.
 
 pub(super) mod checks;
-pub(super) mod errors;
+pub mod errors;
 pub mod output;
 pub mod parts;
-pub(super) mod shape;
+pub mod shape;
 pub(in crate::sim) mod start;
 pub mod work;
 

@@ -30,9 +30,10 @@ pub enum ContactModel {
     },
 }
 
+/// A scene file as serde reads it: its six sections, each with its span in the file.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-pub(in crate::sim) struct Raw {
+pub struct Raw {
     pub(in crate::sim) ladder: Spanned<RawLadder>,
     pub(in crate::sim) start: Spanned<RawStart>,
     pub(in crate::sim) contact: Spanned<RawContact>,
@@ -40,47 +41,53 @@ pub(in crate::sim) struct Raw {
     pub(in crate::sim) end: Spanned<RawEnd>,
     pub(in crate::sim) outputs: Spanned<RawOutputs>,
 }
+/// The `[ladder]` section: mass m, half-length l, gravity g.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-pub(in crate::sim) struct RawLadder {
+pub struct RawLadder {
     pub(in crate::sim) mass: Spanned<f64>,
     pub(in crate::sim) half_length: Spanned<f64>,
     pub(in crate::sim) gravity: Spanned<f64>,
 }
+/// The `[start]` section: θ0 (or its complement π/2 − θ0) and θ̇0.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-pub(in crate::sim) struct RawStart {
+pub struct RawStart {
     pub(in crate::sim) angle: Option<Spanned<f64>>,
     /// The start as its complement π/2 − θ0 (exclusive with `angle`; see `scene::start_angle`).
     pub(in crate::sim) angle_from_floor: Option<Spanned<f64>>,
     pub(in crate::sim) angular_velocity: Spanned<f64>,
 }
+/// The `[contact]` section: the contact model and a penalty's stiffness and damping.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-pub(in crate::sim) struct RawContact {
+pub struct RawContact {
     pub(in crate::sim) model: Spanned<String>,
     pub(in crate::sim) stiffness: Option<Spanned<f64>>,
     pub(in crate::sim) damping: Option<Spanned<f64>>,
 }
+/// The `[integrator]` section: the method and its tolerance, step or order.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-pub(in crate::sim) struct RawIntegrator {
+pub struct RawIntegrator {
     pub(in crate::sim) method: Spanned<String>,
     pub(in crate::sim) tolerance: Option<Spanned<f64>>,
     pub(in crate::sim) step: Option<Spanned<f64>>,
     pub(in crate::sim) scaled_step: Option<Spanned<f64>>,
     pub(in crate::sim) order: Option<Spanned<f64>>,
 }
+/// The `[end]` section: where the fall ends and an end time.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-pub(in crate::sim) struct RawEnd {
+pub struct RawEnd {
     pub(in crate::sim) at: Spanned<String>,
     pub(in crate::sim) time: Option<Spanned<f64>>,
     pub(in crate::sim) scaled_time: Option<Spanned<f64>>,
 }
+/// The `[outputs]` section: the outputs wanted.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-pub(in crate::sim) struct RawOutputs {
+pub struct RawOutputs {
     pub(in crate::sim) want: Spanned<Vec<Spanned<String>>>,
 }
 

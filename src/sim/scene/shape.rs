@@ -14,7 +14,7 @@ use serde::de::{self, Deserialize, Deserializer, Visitor};
 use toml::de::{DeTable, DeValue};
 
 /// The field names of the struct `T` deserializes into.
-fn fields_of<'de, T: Deserialize<'de>>() -> &'static [&'static str] {
+pub fn fields_of<'de, T: Deserialize<'de>>() -> &'static [&'static str] {
     struct Grab<'a>(&'a mut &'static [&'static str]);
     impl<'de> Deserializer<'de> for Grab<'_> {
         type Error = de::value::Error;
@@ -71,7 +71,7 @@ fn list(names: &[&str], bracket: bool) -> String {
 }
 
 /// The section a key belongs in, if any.
-pub(in crate::sim) fn home_of(key: &str) -> Option<&'static str> {
+pub fn home_of(key: &str) -> Option<&'static str> {
     schema()
         .into_iter()
         .find(|(_, keys)| keys.contains(&key))
@@ -232,18 +232,4 @@ fn syntax(cx: &Ctx, e: &toml::de::Error) -> SceneError {
         format!("TOML syntax error: {msg}; allowed: `key = value` lines under `[section]` headers")
     };
     cx.err(span, &field, message)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::sim::scene::errors::SECTIONS;
-
-    #[test]
-    fn the_schema_is_read_off_the_structs() {
-        assert_eq!(fields_of::<Raw>(), SECTIONS);
-        assert_eq!(fields_of::<RawLadder>(), ["mass", "half_length", "gravity"]);
-        assert_eq!(home_of("scaled_time"), Some("end"));
-        assert_eq!(home_of("colour"), None);
-    }
 }

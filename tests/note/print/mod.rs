@@ -4,7 +4,13 @@
 mod check;
 mod condition;
 mod inject;
+mod lexer;
+mod parser;
 mod planted;
+mod point;
 mod premises;
 mod prove;
+mod render;
+mod symbols;
+mod unicode;
 mod units;

@@ -1,6 +1,7 @@
 //! `sliding_ladder::registry`: every display's checks at random states, exact points, proofs and units.
 
 mod complete;
+mod fns;
 mod identities;
 mod law;
 mod markdown_alone;

@@ -2,6 +2,12 @@
 //! each display, its title and its law, is what the display's section in `equations/*.md` says,
 //! read here with a plain line scan, independently of the crate's parser.
 
+mod fields;
+mod note;
+mod parse;
+mod premises;
+mod symbols;
+
 use serde_json::Value;
 use std::collections::BTreeMap;
 use std::process::Command;

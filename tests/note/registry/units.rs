@@ -3,11 +3,15 @@
 //! alone and their corrected forms are consistent; a planted slip (a dropped m) is reported.
 
 use sliding_ladder::ladder::torque::angular_momentum_about_a;
+use sliding_ladder::registry::sample::exact_ladder;
+use sliding_ladder::registry::sample::LADDER_DRAWS;
 use sliding_ladder::registry::sample::{LadderSample, ParticleSample};
 use sliding_ladder::registry::units::{
     dimension_chains, dimensioned_ladder, dimensioned_particles, equation_units, judge_chains,
     Units,
 };
+use sliding_ladder::registry::units::{ladder_draw_dimensions, UnitsFindings};
+use sliding_ladder::registry::Eval;
 use sliding_ladder::registry::{equations, extensions, printed, reference, Role};
 use sliding_ladder::scalar::{sq, Dim, Dimension, Scalar};
 
@@ -256,4 +260,46 @@ fn footnote_4_fails_with_a_planted_wrong_big_omega_squared() {
         "{detail}"
     );
     assert!(wrong.problems.len() >= 2, "{:?}", wrong.problems);
+}
+
+/// The dimension M^m L^l T^t.
+fn d(m: i32, l: i32, t: i32) -> Dim {
+    Dim::new(m, l, t)
+}
+
+fn ladder_checks_with(draws: [Dim; LADDER_DRAWS]) -> Vec<UnitsFindings> {
+    equations()
+        .iter()
+        .flat_map(|e| e.checks.iter())
+        .filter_map(|c| match c.eval {
+            Eval::Ladder(sort, f) => {
+                let (l, s) = exact_ladder(sort, draws.clone());
+                Some(judge_chains(&(f.units)(&l, &s)))
+            }
+            _ => None,
+        })
+        .collect()
+}
+
+#[test]
+fn planted_dimension_of_t_is_caught() {
+    // As declared, no ladder check has a problem.
+    let fine = ladder_checks_with(ladder_draw_dimensions());
+    assert!(!fine.is_empty());
+    assert!(fine.iter().all(|f| f.problems.is_empty()), "{fine:?}");
+    // t given a length: 1 + t² adds a pure number to an area, and the checks say so.
+    let mut planted = ladder_draw_dimensions();
+    planted[0] = d(0, 1, 0);
+    let (_, s) = exact_ladder(LadderSample::Kinematic, planted.clone());
+    assert!(matches!(s.sin, Dim::Inconsistent(_)), "{:?}", s.sin);
+    let found = ladder_checks_with(planted);
+    let failing = found.iter().filter(|f| !f.problems.is_empty()).count();
+    assert!(failing * 2 > found.len(), "{failing} of {}", found.len());
+    assert!(
+        found
+            .iter()
+            .flat_map(|f| &f.problems)
+            .any(|p| p.contains("L²")),
+        "{found:?}"
+    );
 }

@@ -1,5 +1,7 @@
 //! `sliding_ladder::verify`: the verdict table and the errata.
 
+mod claims;
 mod errata_difference;
 mod errata_point;
+mod errata_reading;
 mod table;

@@ -9,6 +9,7 @@ use sliding_ladder::sim::extreme::linear_lead_in;
 use sliding_ladder::sim::fall;
 use sliding_ladder::sim::integrators::AnyStepper;
 use sliding_ladder::sim::integrators::Control;
+use sliding_ladder::sim::penalty::confirm::{confirm_separation, U};
 use sliding_ladder::sim::penalty::confirm::{
     rigid_separation_angle, separation_bound, zero_amplification, MODEL_CONSTANT,
 };
@@ -442,4 +443,35 @@ fn the_bound_is_the_stated_sum_with_the_unit_roundoff() {
     assert!((amp - 4.0).abs() <= 8.0 * f64::EPSILON, "{amp}");
     let want = 10.0 * 4.0 * u * amp + 10.0 * u; // ≈ 170 u
     assert!((separation_bound(f64::INFINITY, small, 4, 0.0) - want).abs() <= 4.0 * u * want);
+}
+
+/// The rigid angle is footnote 4's: arccos(2/3) from rest at 0, and a start with the wall
+/// force's limiting push θ̇0² = Ω² cos θ0 leaves at once.
+#[test]
+fn rigid_angle_is_the_closed_form() {
+    assert_eq!(rigid_separation_angle(0.0, 0.0), (2.0f64 / 3.0).acos());
+    let (theta0, rate0) = (0.4f64, (0.75 * 0.4f64.cos()).sqrt());
+    // Error model: the argument of acos carries a few roundings (cos, the square root and
+    // its square, two products, a sum: ≤ 8 u relative), and acos amplifies an absolute
+    // error by 1/sin θ.
+    let bound = 8.0 * U / theta0.sin();
+    assert!(
+        (rigid_separation_angle(theta0, rate0) - theta0).abs() <= bound,
+        "{} vs {theta0}",
+        rigid_separation_angle(theta0, rate0)
+    );
+    // A wrong formula (the energy without the push) fails.
+    assert!((rigid_separation_angle(theta0, 0.0) - theta0).abs() > 0.1);
+}
+
+/// A zero at the start (F1's θ_s ≈ θ0) is refused; the rigid angle plus the model's own
+/// shift is accepted; the bound grows with the steps and their error.
+#[test]
+fn spurious_zero_refused_and_model_shift_accepted() {
+    let r = rigid_separation_angle(1e-12, 0.0);
+    let e = confirm_separation(1e6, (1e-12, 0.0), 1.4e-12, 20_000, 1e-10).unwrap_err();
+    assert!(e.starts_with("the penalty contact was not resolved"), "{e}");
+    assert!(confirm_separation(1e6, (1e-12, 0.0), r + 1.4e-6, 20_000, 1e-10).is_ok());
+    assert!(confirm_separation(1e6, (1e-12, 0.0), r + 1e-4, 20, 1e-12).is_err());
+    assert!(confirm_separation(1e6, (1e-12, 0.0), r + 1e-4, 2_000, 1e-8).is_ok());
 }

@@ -9,6 +9,7 @@
 //! − went unseen: the rate is used only to start a run, whose later motion forgives it.)
 
 use sliding_ladder::sim::exact::PhaseOne;
+use sliding_ladder::sim::penalty::start::m_inverse;
 use sliding_ladder::sim::penalty::start::{rigid_forces, slow_forces, OMEGA2};
 use sliding_ladder::sim::scene::work::wall_force_rate;
 
@@ -54,5 +55,26 @@ fn the_wall_force_rate_is_the_derivative_of_the_wall_force() {
             (rate - want).abs() <= bound,
             "t = {t}: {rate} against {want} (± {bound:e})"
         );
+    }
+}
+
+/// M⁻¹ is the inverse of M = ∂P/∂F: M M⁻¹ = I to rounding at any θ (a wrong entry fails).
+#[allow(clippy::needless_range_loop)]
+#[test]
+fn m_inverse_inverts_m() {
+    for theta in [0.0, 0.3, 1.0, 1.5] {
+        let (s, c) = f64::sin_cos(theta);
+        let m = [
+            [-1.0 - 3.0 * c * c, 3.0 * s * c],
+            [3.0 * s * c, -1.0 - 3.0 * s * s],
+        ];
+        let mi = m_inverse(theta);
+        for i in 0..2 {
+            for j in 0..2 {
+                let p = m[i][0] * mi[0][j] + m[i][1] * mi[1][j];
+                let want = if i == j { 1.0 } else { 0.0 };
+                assert!((p - want).abs() <= 8.0 * f64::EPSILON, "{theta} {i}{j} {p}");
+            }
+        }
     }
 }

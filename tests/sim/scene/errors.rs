@@ -4,6 +4,7 @@
 //! (exit 2, nothing on stdout or in `--out`) is held in `tests/cli/simulate/scene_errors.rs`.
 
 use crate::common::{with, BASE, PENALTY};
+use sliding_ladder::sim::scene::errors::Ctx;
 use sliding_ladder::sim::scene::output::Output;
 use sliding_ladder::sim::scene::{load, parse};
 
@@ -286,4 +287,45 @@ fn the_start_rate_is_limited_where_the_wall_force_starts_at_zero() {
             "{theta0}: {e}"
         );
     }
+}
+
+/// toml's spans are byte offsets; one inside a multi-byte character (θ, é, €) is moved to
+/// a character boundary before the text is sliced, and still names the field of its own
+/// line: a multi-byte character is never a newline, so either end of it is on that line.
+/// (Mutation testing: the step back `pos −= 1` → `pos /= 1` never ended, and no test
+/// reached the loop; `pos += 1`, which moves to the character's other end, is equivalent.)
+#[test]
+fn a_position_inside_a_character_names_its_lines_field() {
+    let text = "[ladder]\nmass = \"θθ\" # é\n[start]\nangle = \"ü€\"\n";
+    let cx = Ctx { file: "s", text };
+    let mass = text.find("θθ").unwrap();
+    let angle = text.find("ü€").unwrap();
+    for (pos, want) in [
+        (mass + 1, "ladder.mass"),
+        (mass + 3, "ladder.mass"),
+        (text.find('é').unwrap() + 1, "ladder.mass"),
+        (angle + 1, "start.angle"),
+        (angle + 3, "start.angle"),
+        (angle + 4, "start.angle"),
+    ] {
+        assert!(!text.is_char_boundary(pos), "{pos} is inside a character");
+        assert_eq!(cx.field_at(pos), want, "byte {pos}");
+    }
+    // Past the end is the end: the empty line after the last newline, in [start].
+    assert_eq!(cx.field_at(text.len() + 5), "start");
+}
+
+/// A section header is a line in brackets at both ends; a value that only ends in one (an
+/// array, `want = ["flat_time"]`) is not one, on its own line or above the position.
+/// (Mutation testing: the header test's `&&` → `||` went unseen: no toml error in a test
+/// fell on or after an array's line, where the field was then named after the array.)
+#[test]
+fn an_array_value_is_not_a_section_header() {
+    let text = "[outputs]\nwant = [\"flat_time\"]\nplot = tru\n[end]\nat = [1\n";
+    let cx = Ctx { file: "s", text };
+    let at = |s: &str| text.find(s).unwrap();
+    assert_eq!(cx.field_at(at("flat_time")), "outputs.want");
+    assert_eq!(cx.field_at(at("tru")), "outputs.plot");
+    assert_eq!(cx.field_at(at("[1")), "end.at");
+    assert_eq!(cx.field_at(at("[end]") + 1), "end");
 }

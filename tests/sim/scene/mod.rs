@@ -1,4 +1,5 @@
 //! `sim::scene*`: scene files, their errors and the plan's refusals.
 
 mod errors;
+mod shape;
 mod work;

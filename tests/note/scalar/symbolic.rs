@@ -1,4 +1,7 @@
-use super::*;
+//! Tests of `sliding_ladder::scalar::symbolic` (src/scalar/symbolic.rs).
+
+use sliding_ladder::scalar::symbolic::Sym;
+use sliding_ladder::scalar::Scalar;
 
 #[test]
 fn pythagoras_is_proved_and_a_planted_error_is_not() {

@@ -1,4 +1,7 @@
-use super::*;
+//! Tests of `sliding_ladder::print::parser` (src/print/parser.rs).
+
+use sliding_ladder::print::ast::Expr;
+use sliding_ladder::print::parser::{parse_display, parse_expr};
 
 fn sym(s: &str) -> Box<Expr> {
     Box::new(Expr::Sym(s.into()))

@@ -1,6 +1,10 @@
+//! Tests of `sliding_ladder::scalar::dimension` (src/scalar/dimension.rs).
+
 //! Tests of the dimension scalar: the rules of dimensional analysis, and that a clash is caught.
 
-use super::*;
+use num_rational::Ratio;
+use sliding_ladder::scalar::dimension::{Clash, Dim, Dimension};
+use sliding_ladder::scalar::Scalar;
 
 fn m() -> Dim {
     Dim::Of(Dimension::MASS)

@@ -1,7 +1,12 @@
+//! Tests of `sliding_ladder::scalar::coeff` (src/scalar/coeff.rs).
+
 //! The machine-word path of [`Coeff`] against `BigRational` on random and overflow-edge values.
-use super::*;
+use num_bigint::BigInt;
+use num_traits::{ToPrimitive, Zero};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use sliding_ladder::scalar::coeff::{gcd, Coeff};
+use sliding_ladder::scalar::Rational;
 
 /// The canonical form: `Small` exactly when numerator and denominator fit below 2⁶³.
 fn canonical(c: &Coeff) -> bool {

@@ -1,0 +1,3 @@
+//! Tests of `sliding_ladder::docs`.
+
+mod pages;

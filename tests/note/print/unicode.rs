@@ -1,0 +1,33 @@
+//! Tests of `sliding_ladder::print::unicode` (src/print/unicode.rs).
+
+use sliding_ladder::print::unicode::unicode;
+
+#[test]
+fn the_notes_vocabulary_reads() {
+    assert_eq!(unicode(r"\frac{4ml^2\ddot{\theta}}{3}"), "4ml²θ̈/3");
+    assert_eq!(
+        unicode(r"\tau_D - F_{D,x}l\cos\theta"),
+        "τ_D − F_D,x l cos θ"
+    );
+    assert_eq!(unicode(r"2F_f l \sin \theta"), "2F_f l sin θ");
+    assert_eq!(unicode(r"\frac{dL_D}{dt}"), "dL_D/dt");
+    assert_eq!(unicode(r"x_{\text{cm}} = l \sin \theta"), "x_cm = l sin θ");
+    assert_eq!(
+        unicode(r"\dot{\theta}^2 = \frac{3g}{2l} (1 - \cos \theta)"),
+        "θ̇² = (3g/2l)(1 − cos θ)"
+    );
+    assert_eq!(unicode(r"\hat{\mathbf{z}}"), "z\u{302}");
+    assert_eq!(
+        unicode(r"2ml^2\cos^2\theta\ddot{\theta} + 2ml^2\cos\theta\sin\theta\dot{\theta}^2"),
+        "2ml² cos² θ θ̈ + 2ml² cos θ sin θ θ̇²"
+    );
+    assert_eq!(unicode(r"\sum_i m_i \mathbf{x}_i"), "Σᵢmᵢxᵢ");
+    assert_eq!(unicode(r"\frac{a + b}{c}"), "(a + b)/c");
+    assert_eq!(
+        unicode(r"\frac{m l^2 \dot{\theta}}{3} \hat{\mathbf{z}} + x"),
+        "(ml²θ̇/3) z\u{302} + x"
+    );
+    assert_eq!(unicode(r"\frac{3g}{4l} \sin \theta"), "(3g/4l) sin θ");
+    assert_eq!(unicode(r"-\frac{2ml^2 \dot{\theta}}{3}"), "−2ml²θ̇/3");
+    // Every display of the note: tests/note/print/units.rs.
+}

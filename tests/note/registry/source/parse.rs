@@ -1,0 +1,53 @@
+//! Tests of `sliding_ladder::registry::source::parse` (src/registry/source/parse.rs).
+
+use sliding_ladder::registry::source::parse::{
+    heading_label, heading_text, parse_file, section_label,
+};
+
+#[test]
+fn labels_and_sections_are_read_from_headings() {
+    assert_eq!(
+        heading_label("(25) Torque about D").map(|x| x.1),
+        Some("Torque about D")
+    );
+    assert_eq!(
+        heading_label("(P3) Floor").and_then(|x| x.0.ok()),
+        Some(1003)
+    );
+    assert!(heading_label("(0) Zero").is_some_and(|x| x.0.is_err()));
+    assert!(heading_label("(a) not a display").is_none());
+    assert!(heading_label("Title (3)").is_none());
+    assert_eq!(
+        section_label("Sec. 2.5 — Torque analysis about D"),
+        Some("2.5")
+    );
+    assert_eq!(section_label("Appendix A — Angular momentum"), Some("A"));
+    assert_eq!(section_label("B.7 — Sec. 303: the rate"), Some("B.7"));
+    assert_eq!(section_label("What each point costs"), None);
+    assert_eq!(
+        heading_text("### (25) Torque about D ##\n"),
+        "(25) Torque about D"
+    );
+}
+
+#[test]
+fn a_section_lacking_display_or_kind_is_an_error_at_its_line() {
+    let src = "# Sec. 9.1 — Test\n\n### (1) No display\n\ntext\n\n### (2) No kind\n\n$$\na = b\n$$\n\n### (3) Law too far\n\n$$\na = b\n$$\n\n*Kind:* kinematic\n\n*Law:* the 2nd `=` is the law of motion: x\n\n### (4) Fine\n\n$$\na\n= b\n$$\n\n*Kind:* on-shell\n\n*Law:* the 1st `=` is the law of motion: the law. Every other `=` holds.\n";
+    let parsed = parse_file("t.md", src);
+    let (ok, errs) = (parsed.sections, parsed.errors);
+    let msgs: Vec<String> = errs.iter().map(ToString::to_string).collect();
+    assert_eq!(
+        msgs,
+        vec![
+            "t.md:3: (1) has no display (the LaTeX between two `$$` lines)".to_string(),
+            "t.md:7: (2) does not state its kind (a line `*Kind:* on-shell`, ...)".to_string(),
+            "t.md:21: (3): *Law:* names `=` no. 2, the display has 1".to_string(),
+        ]
+    );
+    assert_eq!(ok.len(), 1);
+    let s = &ok[0];
+    assert_eq!((s.number, s.line, s.section.as_str()), (4, 23, "9.1"));
+    assert_eq!((s.latex.as_str(), s.latex_line), ("a = b", 25));
+    let law = s.law.as_ref().expect("law");
+    assert_eq!((law.step, law.statement.as_str()), (1, "the law"));
+}

@@ -1,0 +1,48 @@
+//! Tests of `sliding_ladder::scalar::sym_factor` (src/scalar/sym_factor.rs).
+
+use sliding_ladder::scalar::sym_factor::{factor, factored_text};
+use sliding_ladder::scalar::Scalar;
+use sliding_ladder::scalar::Sym;
+
+fn v(t: &str) -> Sym {
+    Sym::var(t, t)
+}
+
+#[test]
+fn factors_a_dropped_mass_and_a_double_angle() {
+    let (m, l, w) = (v("m"), v("l"), v("θ̇"));
+    let (s, c) = (Sym::sin(), Sym::cos());
+    let d = (Sym::int(1) - m) * l.clone() * l * w * (c.clone() * c - s.clone() * s);
+    assert_eq!(factored_text(&d), "l^2 θ̇ (1 - m) (c^2 - s^2)");
+    // The expanded normal form is what the factoring starts from.
+    assert_eq!(
+        sliding_ladder::scalar::text(&d),
+        "2 s^2 m l^2 θ̇ - 2 s^2 l^2 θ̇ - m l^2 θ̇ + l^2 θ̇"
+    );
+}
+
+#[test]
+fn homogenises_one_minus_s_squared() {
+    let (a, w) = (v("θ̈"), v("θ̇"));
+    let (s, c) = (Sym::sin(), Sym::cos());
+    let d = Sym::int(-2) * s.clone() * c.clone() * w.clone() * w + Sym::int(2) * c.clone() * c * a;
+    assert_eq!(factored_text(&d), "2 c (c θ̈ - s θ̇^2)");
+}
+
+#[test]
+fn an_irreducible_sum_stays_whole_and_every_form_expands_back() {
+    let (m, l) = (v("m"), v("l"));
+    let p = m.clone() * m.clone() + l.clone() * l.clone() + Sym::int(1);
+    assert_eq!(factored_text(&p), "m^2 + l^2 + 1");
+    let (s, c) = (Sym::sin(), Sym::cos());
+    let g = v("g");
+    for x in [
+        p,
+        m.clone() * l.clone() * Sym::ratio(-3, 4),
+        -(m.clone() + l.clone()) * (s.clone() * s.clone() - Sym::ratio(1, 2)),
+        (m.clone() - g.clone()) * (l.clone() + g) * (c.clone() + s.clone()) * c * s,
+    ] {
+        let f = factor(&x.num).expect("a product");
+        assert_eq!(f.expand(), x.num, "{}", f.render(false));
+    }
+}
