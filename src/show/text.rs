@@ -105,9 +105,23 @@ fn short(x: f64) -> String {
     }
 }
 
-/// The whole display, for the terminal.
+/// The whole display, for the terminal: its print and symbols, the state, the forms' values,
+/// and (unless `--values-only`) the checks, then the erratum, code and problems.
 pub fn render(s: &Shown) -> String {
     let mut o = String::new();
+    heading(&mut o, s);
+    state_lines(&mut o, s);
+    forms_table(&mut o, s);
+    let Some(v) = &s.verify else {
+        let _ = writeln!(o, "\nchecks: not run (--values-only)");
+        return finish(o, s);
+    };
+    checks(&mut o, s, v);
+    finish(o, s)
+}
+
+/// The display's title line, print, reading, premises, blind symbols and symbol table.
+fn heading(o: &mut String, s: &Shown) {
     let _ = writeln!(
         o,
         "{} {} · sec. {} · {} · {}",
@@ -142,6 +156,11 @@ pub fn render(s: &Shown) -> String {
             y.unicode, y.meaning, y.unit, y.defined
         );
     }
+}
+
+/// The state the forms are evaluated at: how it was completed, its phase and warnings, whether
+/// it is exact, and why the forms need not agree there.
+fn state_lines(o: &mut String, s: &Shown) {
     let st = &s.state;
     let _ = writeln!(
         o,
@@ -183,6 +202,10 @@ pub fn render(s: &Shown) -> String {
     if let Some(a) = &s.assumption {
         let _ = writeln!(o, "  note: its forms need not agree here: {a}");
     }
+}
+
+/// Every printed form with its value, unit, residual and agreement, then the verdict here.
+fn forms_table(o: &mut String, s: &Shown) {
     let _ = writeln!(
         o,
         "\nforms, in print order (each held against the first of its chain; residual = |difference| in running error bounds, agrees when ≤ {})",
@@ -194,59 +217,7 @@ pub fn render(s: &Shown) -> String {
         "#", "ch", "form", "value (SI)", "unit", "residual"
     );
     for (k, f) in s.forms.iter().enumerate() {
-        let tag = match f.role {
-            "misprint" => " [misprint]",
-            "continued" => " [from (56)]",
-            _ => "",
-        };
-        let milne = if f.milne { "Milne: " } else { "" };
-        let form = format!("{milne}{}{tag}", f.unicode);
-        let agrees = match (f.agrees, f.exact_agrees) {
-            (None, _) if f.error.is_none() => "—".to_string(),
-            (Some(a), e) => format!(
-                "{}{}",
-                if a { "yes" } else { "NO" },
-                match e {
-                    Some(true) => ", exactly",
-                    Some(false) => ", not exactly",
-                    None => "",
-                }
-            ),
-            _ => "?".into(),
-        };
-        let residual = f.residual.map_or("—".into(), |r| {
-            if r < 1e4 {
-                format!("{r:.3}")
-            } else {
-                format!("{r:.2e}")
-            }
-        });
-        let val = if f.error.is_some() {
-            "—".to_string()
-        } else {
-            value(&f.value)
-        };
-        let _ = writeln!(
-            o,
-            "  {:>2} {:>2}  {:<44} {:<26} {:<16} {:>9}  {}",
-            f.index, f.chain, form, val, f.unit, residual, agrees
-        );
-        if let Some(x) = &f.exact {
-            let _ = writeln!(o, "  {:>5}  exactly {}", "", exact(x));
-        }
-        if f.role == "misprint" && f.agrees == Some(true) && f.unit.starts_with("inconsistent") {
-            let _ = writeln!(
-                o,
-                "  {:>5}  equal in value at this state only: its units are inconsistent",
-                ""
-            );
-        }
-        if let Some(err) = &f.error {
-            let _ = writeln!(o, "  {:>5}  not evaluated: {err}", "");
-        }
-        if let Some(enc) = s.encoded_by.get(k).filter(|v| !v.is_empty()) {
-            let _ = writeln!(o, "  {:>5}  equals in the code: {}", "", encoded(enc));
-        }
+        form_row(o, s, k, f);
     }
     let verdict = match (s.forms_agree, s.forms_agree_exactly) {
         (true, Some(true)) => "every printed form agrees, in f64 and exactly".to_string(),
@@ -271,68 +242,70 @@ pub fn render(s: &Shown) -> String {
         ""
     };
     let _ = writeln!(o, "  here: {verdict}{mis}");
+}
 
-    let Some(v) = &s.verify else {
-        let _ = writeln!(o, "\nchecks: not run (--values-only)");
-        return finish(o, s);
+/// One row of the forms table, with its exact value, unit warning, error and encodings.
+fn form_row(o: &mut String, s: &Shown, k: usize, f: &super::values::FormValue) {
+    let tag = match f.role {
+        "misprint" => " [misprint]",
+        "continued" => " [from (56)]",
+        _ => "",
     };
+    let milne = if f.milne { "Milne: " } else { "" };
+    let form = format!("{milne}{}{tag}", f.unicode);
+    let agrees = match (f.agrees, f.exact_agrees) {
+        (None, _) if f.error.is_none() => "—".to_string(),
+        (Some(a), e) => format!(
+            "{}{}",
+            if a { "yes" } else { "NO" },
+            match e {
+                Some(true) => ", exactly",
+                Some(false) => ", not exactly",
+                None => "",
+            }
+        ),
+        _ => "?".into(),
+    };
+    let residual = f.residual.map_or("—".into(), |r| {
+        if r < 1e4 {
+            format!("{r:.3}")
+        } else {
+            format!("{r:.2e}")
+        }
+    });
+    let val = if f.error.is_some() {
+        "—".to_string()
+    } else {
+        value(&f.value)
+    };
+    let _ = writeln!(
+        o,
+        "  {:>2} {:>2}  {:<44} {:<26} {:<16} {:>9}  {}",
+        f.index, f.chain, form, val, f.unit, residual, agrees
+    );
+    if let Some(x) = &f.exact {
+        let _ = writeln!(o, "  {:>5}  exactly {}", "", exact(x));
+    }
+    if f.role == "misprint" && f.agrees == Some(true) && f.unit.starts_with("inconsistent") {
+        let _ = writeln!(
+            o,
+            "  {:>5}  equal in value at this state only: its units are inconsistent",
+            ""
+        );
+    }
+    if let Some(err) = &f.error {
+        let _ = writeln!(o, "  {:>5}  not evaluated: {err}", "");
+    }
+    if let Some(enc) = s.encoded_by.get(k).filter(|v| !v.is_empty()) {
+        let _ = writeln!(o, "  {:>5}  equals in the code: {}", "", encoded(enc));
+    }
+}
+
+/// The registry's checks of the display, then its print, units, proof and law rows.
+fn checks(o: &mut String, s: &Shown, v: &crate::verify::EquationResult) {
     let _ = writeln!(o, "\nchecks (what `ladder verify` runs on this display)");
     for c in &s.checks {
-        let _ = writeln!(
-            o,
-            "  {} [{}]{}",
-            c.name,
-            c.sample,
-            if c.passed { "" } else { "  FAILED" }
-        );
-        let sides: Vec<String> = c.sides.iter().map(|(l, r)| format!("{l} ({r})")).collect();
-        let _ = writeln!(o, "    compares: {}", sides.join(", "));
-        let _ = writeln!(
-            o,
-            "    float: {} random states, worst residual {:.3} error bounds (pass ≤ {}){}, {} out of tolerance",
-            c.float_cases,
-            c.max_residual,
-            c.tolerance,
-            if c.worst_side.is_empty() { String::new() } else { format!(" at '{}'", c.worst_side) },
-            c.float_failures
-        );
-        let _ = writeln!(
-            o,
-            "    exact: {} random points ({} in rationals, the rest modulo p = 2^61 − 1), {} with a nonzero residual (chance a false identity passes ≤ 1e{:.0})",
-            c.exact_points,
-            c.exact_points.min(crate::registry::check::RATIONAL_POINTS),
-            c.exact_failures,
-            c.sz_bound_log10.ceil()
-        );
-        for (label, failed) in &c.misprints {
-            let _ = writeln!(
-                o,
-                "    misprint '{label}': {}",
-                if *failed {
-                    "fails at every exact point, as recorded"
-                } else {
-                    "DOES NOT FAIL"
-                }
-            );
-        }
-        if let Some(f) = c.fails_off_motion {
-            let at = c.breaks_at.as_ref().map_or(String::new(), |b| {
-                format!(
-                    ", breaking at `=` no. {}",
-                    b.iter().map(u32::to_string).collect::<Vec<_>>().join(", ")
-                )
-            });
-            let _ = writeln!(
-                o,
-                "    off the motion: {}{at}",
-                if f {
-                    "fails, as an on-shell identity must"
-                } else {
-                    "HOLDS (the check cannot tell)"
-                }
-            );
-        }
-        let _ = writeln!(o, "    proof: {} · units: {}", c.proof, c.units);
+        check_detail(o, c);
     }
     let _ = writeln!(
         o,
@@ -364,7 +337,66 @@ pub fn render(s: &Shown) -> String {
             crate::docs::ordinal(step)
         );
     }
-    finish(o, s)
+}
+
+/// One registry check: what it compares, its float and exact results, its misprints, whether
+/// it fails off the motion, its proof and units.
+fn check_detail(o: &mut String, c: &super::checks::CheckDetail) {
+    let _ = writeln!(
+        o,
+        "  {} [{}]{}",
+        c.name,
+        c.sample,
+        if c.passed { "" } else { "  FAILED" }
+    );
+    let sides: Vec<String> = c.sides.iter().map(|(l, r)| format!("{l} ({r})")).collect();
+    let _ = writeln!(o, "    compares: {}", sides.join(", "));
+    let _ = writeln!(
+        o,
+        "    float: {} random states, worst residual {:.3} error bounds (pass ≤ {}){}, {} out of tolerance",
+        c.float_cases,
+        c.max_residual,
+        c.tolerance,
+        if c.worst_side.is_empty() { String::new() } else { format!(" at '{}'", c.worst_side) },
+        c.float_failures
+    );
+    let _ = writeln!(
+        o,
+        "    exact: {} random points ({} in rationals, the rest modulo p = 2^61 − 1), {} with a nonzero residual (chance a false identity passes ≤ 1e{:.0})",
+        c.exact_points,
+        c.exact_points.min(crate::registry::check::RATIONAL_POINTS),
+        c.exact_failures,
+        c.sz_bound_log10.ceil()
+    );
+    for (label, failed) in &c.misprints {
+        let _ = writeln!(
+            o,
+            "    misprint '{label}': {}",
+            if *failed {
+                "fails at every exact point, as recorded"
+            } else {
+                "DOES NOT FAIL"
+            }
+        );
+    }
+    if let Some(f) = c.fails_off_motion {
+        let at = c.breaks_at.as_ref().map_or(String::new(), |b| {
+            format!(
+                ", breaking at `=` no. {}",
+                b.iter().map(u32::to_string).collect::<Vec<_>>().join(", ")
+            )
+        });
+        let _ = writeln!(
+            o,
+            "    off the motion: {}{at}",
+            if f {
+                "fails, as an on-shell identity must"
+            } else {
+                "HOLDS (the check cannot tell)"
+            }
+        );
+    }
+    let _ = writeln!(o, "    proof: {} · units: {}", c.proof, c.units);
 }
 
 /// The erratum, the code and docs locations and the problems.
