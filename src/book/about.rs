@@ -28,21 +28,26 @@ pub fn page_name(file: &str) -> String {
     format!("about-{}.html", rest.replace('/', "-").to_lowercase())
 }
 
+/// The names of the markdown files of `dir`, sorted (none when it cannot be read).
+pub fn markdown_names(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .map(|rd| {
+            rd.filter_map(|e| e.ok())
+                .map(|e| e.file_name().to_string_lossy().to_string())
+                .filter(|n| n.ends_with(".md"))
+                .collect()
+        })
+        .unwrap_or_default();
+    names.sort();
+    names
+}
+
 /// Every markdown document of [`FOLDERS`], each folder sorted by name; files that cannot be
 /// read are reported in `problems`.
 pub fn documents(root: &Path, problems: &mut Vec<String>) -> Vec<AboutDoc> {
     let mut out = Vec::new();
     for folder in FOLDERS {
-        let mut names: Vec<String> = std::fs::read_dir(root.join(folder))
-            .map(|rd| {
-                rd.filter_map(|e| e.ok())
-                    .map(|e| e.file_name().to_string_lossy().to_string())
-                    .filter(|n| n.ends_with(".md"))
-                    .collect()
-            })
-            .unwrap_or_default();
-        names.sort();
-        for name in names {
+        for name in markdown_names(&root.join(folder)) {
             let file = format!("{folder}/{name}");
             match std::fs::read_to_string(root.join(&file)) {
                 Ok(source) => out.push(AboutDoc {

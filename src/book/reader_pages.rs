@@ -26,15 +26,7 @@ pub struct ReaderDoc {
 
 /// Every markdown file of [`FOLDER`], sorted by name; one that cannot be read is a problem.
 pub fn documents(root: &Path, problems: &mut Vec<String>) -> Vec<ReaderDoc> {
-    let mut names: Vec<String> = std::fs::read_dir(root.join(FOLDER))
-        .map(|rd| {
-            rd.filter_map(|e| e.ok())
-                .map(|e| e.file_name().to_string_lossy().to_string())
-                .filter(|n| n.ends_with(".md"))
-                .collect()
-        })
-        .unwrap_or_default();
-    names.sort();
+    let names = super::about::markdown_names(&root.join(FOLDER));
     if !names.iter().any(|n| n == OPENING) {
         problems.push(format!("{FOLDER}/{OPENING}: missing (it opens the index)"));
     }

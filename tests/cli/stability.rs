@@ -5,8 +5,7 @@
 use crate::common::{replace_line as with, PENALTY};
 use serde_json::Value;
 use sliding_ladder::cli::stability::surprise_line;
-use sliding_ladder::report::stability::case::Case;
-use sliding_ladder::report::stability::case::{Expect, Verdict};
+use sliding_ladder::report::stability::case::{blank, Case, Expect, Verdict};
 use std::process::Command;
 
 /// `ladder simulate SCENE --json --out DIR` on `text`: (exit code, stdout, stderr, files).
@@ -323,20 +322,14 @@ fn stability_json_has_verdicts_for_five_stiffnesses_and_the_extreme_cases() {
 
 fn case(verdict: Verdict, expect: Expect) -> Case {
     Case {
-        group: "extreme",
-        case: "θ0=0 θ̇0=1e0·Ω: angle".into(),
-        method: "dop853 1e-13".into(),
-        expected: String::new(),
-        value: String::new(),
-        error: None,
-        bound: None,
-        steps: 0,
-        rhs_evals: 0,
-        seconds: 0.0,
         verdict,
-        reason: String::new(),
         expect,
-        drift: None,
+        ..blank(
+            "extreme",
+            "θ0=0 θ̇0=1e0·Ω: angle".into(),
+            "dop853 1e-13".into(),
+            String::new(),
+        )
     }
 }
 
