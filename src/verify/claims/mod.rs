@@ -18,6 +18,11 @@ use crate::scalar::{sq, Rational, Scalar};
 use crate::vector::Vec3;
 use serde::Serialize;
 
+pub mod appendix;
+pub mod rigid_e;
+pub mod rolling;
+pub mod sec2;
+
 type Q = Rational;
 
 /// One claim of the note's prose.
@@ -43,6 +48,61 @@ pub struct Claim {
     /// with `$…$` math ([`crate::scalar::Reading`]), when a reading fits.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub reading_latex: Option<String>,
+    /// For a prose erratum: the printed wording is not wrong everywhere but imprecise (true in
+    /// some cases it covers, false in others; the correction says exactly when).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub imprecise: bool,
+}
+
+impl Claim {
+    /// A claim that the note states correctly; `holds` is its check's verdict.
+    pub fn checked(location: &'static str, claim: &'static str, holds: bool) -> Claim {
+        Claim {
+            location,
+            claim,
+            erratum: None,
+            holds,
+            printed_fails: None,
+            difference_latex: None,
+            reading_latex: None,
+            imprecise: false,
+        }
+    }
+    /// A prose erratum: the printed wording (shown failing when `printed_fails`) and the
+    /// correction (shown holding when `holds`).
+    pub fn erratum(
+        location: &'static str,
+        claim: &'static str,
+        (printed, corrected): (&'static str, &'static str),
+        holds: bool,
+        printed_fails: bool,
+    ) -> Claim {
+        Claim {
+            erratum: Some((printed, corrected)),
+            printed_fails: Some(printed_fails),
+            ..Claim::checked(location, claim, holds)
+        }
+    }
+    /// The same erratum, marked imprecise rather than wrong.
+    pub fn imprecise(self) -> Claim {
+        Claim {
+            imprecise: true,
+            ..self
+        }
+    }
+    /// The verdict in words: holds, prose erratum (false or imprecise, or a wording slip), or
+    /// FAILED when the check does not come out as recorded.
+    pub fn verdict(&self) -> &'static str {
+        match (self.holds, self.printed_fails, self.erratum.is_some()) {
+            (true, None, true) => "PROSE ERRATUM (wording; the formula is right)",
+            (true, None, false) => "holds",
+            (true, Some(true), _) if self.imprecise => {
+                "PROSE ERRATUM (imprecise): the printed wording fails in cases it covers, the correction holds"
+            }
+            (true, Some(true), _) => "PROSE ERRATUM: the printed wording fails, the correction holds",
+            _ => "FAILED",
+        }
+    }
 }
 
 /// The prose L_A of sec. A.5 with l to the given power: −(2/3) m lᵏ θ̇ (printed k = 1, right k = 2).
@@ -131,27 +191,11 @@ pub fn contact_torques_vanish_about(k: Corner) -> bool {
     })
 }
 
-/// Every prose claim, checked.
+/// Every prose claim, checked: those of sec. 2 and footnotes first checked here (14), then
+/// the rest by section ([`sec2`], [`rigid_e`], [`appendix`], [`rolling`]).
 pub fn claims() -> Vec<Claim> {
     use LadderSample::*;
-    let ok = |location, claim, holds| Claim {
-        location,
-        claim,
-        erratum: None,
-        holds,
-        printed_fails: None,
-        difference_latex: None,
-        reading_latex: None,
-    };
-    let erratum = |location, claim, printed, corrected, holds, printed_fails| Claim {
-        location,
-        claim,
-        erratum: Some((printed, corrected)),
-        holds,
-        printed_fails: Some(printed_fails),
-        difference_latex: None,
-        reading_latex: None,
-    };
+    let ok = Claim::checked;
     let on_circle = all(Kinematic, |l, s| {
         corner_position(Corner::B, l, s).dot(&corner_position(Corner::B, l, s)) == sq(&l.l)
     });
@@ -243,18 +287,19 @@ pub fn claims() -> Vec<Claim> {
         ok("footnote 16", "the L_C of sec. 2.4 is L'_C of Appendix A, not L_C", l_c_is_relative),
         ok("sec. A.5 (end)", "τ_A = τ_C + x_C × m a_cm", tau_a_from_tau_c),
         Claim {
-            location: "sec. 2.5",
-            claim: "(24) is introduced as 'the angular momentum about point C'; it is about D (a wording slip: L'_C = L'_D, so no number changes)",
             erratum: Some(("about point C", "about point D")),
-            holds: d_label_printed,
-            printed_fails: None,
-            difference_latex: None,
-            reading_latex: None,
+            ..ok("sec. 2.5", "(24) is introduced as 'the angular momentum about point C'; it is about D (a wording slip: L'_C = L'_D, so no number changes)", d_label_printed)
         },
         Claim {
             difference_latex: la_prose_difference(),
             reading_latex: la_prose_reading(),
-            ..erratum("sec. A.5", "L = L_A written as −(2/3) m l θ̇: a factor l is missing", r"-\frac{2}{3}m l \dot{\theta}", r"-\frac{2}{3}m l^2 \dot{\theta}", la_prose_corrected, la_prose_printed_fails)
+            ..Claim::erratum("sec. A.5", "L = L_A written as −(2/3) m l θ̇: a factor l is missing", (r"-\frac{2}{3}m l \dot{\theta}", r"-\frac{2}{3}m l^2 \dot{\theta}"), la_prose_corrected, la_prose_printed_fails)
         },
     ]
+    .into_iter()
+    .chain(sec2::claims())
+    .chain(rigid_e::claims())
+    .chain(appendix::claims())
+    .chain(rolling::claims())
+    .collect()
 }
