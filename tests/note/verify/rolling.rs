@@ -3,10 +3,10 @@
 
 use sliding_ladder::scalar::{Rational, Scalar};
 use sliding_ladder::vector::Vec3;
-use sliding_ladder::verify::claims::rolling::{
-    condition_decides, disk, elliptic_cylinder, hu_holds_throughout, material_contact_acceleration,
-    on_motion, sampled, Root,
+use sliding_ladder::verify::claims::hu::{
+    condition_decides, hu_holds_throughout, material_contact_acceleration, sampled,
 };
+use sliding_ladder::verify::claims::rolling::{disk, elliptic_cylinder, on_motion, Root};
 
 type Q = Rational;
 
