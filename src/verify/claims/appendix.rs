@@ -130,6 +130,73 @@ pub fn eq90_is_eq40() -> bool {
     })
 }
 
+/// Sec. 2.1: the kinetic energy is that of the centre-of-mass motion plus that of the motion
+/// relative to the centre of mass (any system), and on the ladder the latter is the rotation
+/// I_cm θ̇²/2.
+pub fn kinetic_energy_splits() -> bool {
+    let half = Q::ratio(1, 2);
+    let kinetic = |s: &System<Q>, about: &Vec3<Q>| {
+        s.particles.iter().fold(Q::int(0), |t, p| {
+            let u = p.v.clone() - about.clone();
+            t + half.clone() * p.m.clone() * u.dot(&u)
+        })
+    };
+    let general = every(|s, _| {
+        let v_cm = s.cm_velocity();
+        kinetic(s, &Vec3::zero())
+            == half.clone() * s.total_mass() * v_cm.dot(&v_cm) + kinetic(s, &v_cm)
+    });
+    let ladder = all(Kinematic, |l, st| {
+        let s = as_system(l, st);
+        kinetic(&s, &s.cm_velocity())
+            == half.clone()
+                * crate::ladder::energy::moment_of_inertia_cm(l)
+                * st.rate.clone()
+                * st.rate.clone()
+    });
+    general && ladder
+}
+
+/// Sec. B.5: (77), Σ (x_i − x_P) × m_i v_i, is (37): it equals (37)'s other forms
+/// L − x_P × m v_cm and L_cm + (x_cm − x_P) × m v_cm.
+pub fn eq77_is_eq37() -> bool {
+    every(|s, p| {
+        let m = s.total_mass();
+        let l_p = s.angular_momentum_about(p);
+        l_p == s.angular_momentum() - p.x.cross(&s.cm_velocity().scale(&m))
+            && l_p
+                == s.spin_angular_momentum()
+                    + (s.centre_of_mass() - p.x.clone()).cross(&s.cm_velocity().scale(&m))
+    })
+}
+
+/// Sec. B.8: (84) in (87) gives (88): with the centre of mass at the origin at the instant,
+/// dL/dt = dL'_cm/dt; with it elsewhere (and a_cm ≠ 0) they differ.
+pub fn eq88_follows() -> bool {
+    every(|s, _| {
+        let shifted = |by: Vec3<Q>| System {
+            particles: s
+                .particles
+                .iter()
+                .map(|q| crate::system::Particle {
+                    x: q.x.clone() - by.clone(),
+                    ..q.clone()
+                })
+                .collect(),
+            spin: None,
+        };
+        let rates = |sys: &System<Q>| {
+            let lifted = sys.along_motion();
+            (
+                rate_vec::<Q>(&lifted.angular_momentum()),
+                rate_vec::<Q>(&lifted.relative_angular_momentum_about(&lifted.cm_point())),
+            )
+        };
+        let (at_origin, elsewhere) = (rates(&shifted(s.centre_of_mass())), rates(s));
+        at_origin.0 == at_origin.1 && elsewhere.0 != elsewhere.1
+    })
+}
+
 /// The torque about `k` of a wall force at C alone (any value: 5).
 fn wall_torque_about(k: Corner, l: &Ladder<Q>, s: &State<Q>) -> Q {
     let r = corner_position(Corner::C, l, s) - corner_position(k, l, s);
@@ -227,6 +294,9 @@ pub fn claims() -> Vec<Claim> {
         ok("sec. A (42), fn. 15, A.1", "with slipping (the ladder at C) neither form of (42) holds: L_C ≠ I_C θ̇ (49)-(50), L'_C ≠ I_C θ̇ − (x_cm − x_C) × m v_C", slipping_breaks_eq42()),
         ok("sec. A.6", "only three of the five methods are distinct on the ladder (L_C, L'_C, L_cm differ pairwise)", three),
         ok("sec. A.6", "only method 1 is not one of sec. 2's analyses (its L_C is none of L_A, L_B, L'_C, L'_D, L'_E)", only_one),
+        ok("sec. 2.1", "the kinetic energy is that of the centre-of-mass motion plus that relative to it (any system), the latter I_cm θ̇²/2 on the ladder", kinetic_energy_splits()),
+        ok("sec. B.5", "(any system) (77) is the same as (37)", eq77_is_eq37()),
+        ok("sec. B.8", "(any system) (84) in (87) gives (88): at x_cm = 0, dL/dt = dL'_cm/dt (elsewhere not)", eq88_follows()),
         ok("sec. B.7", "(any system) (85) is the first form of (38) rearranged", eq85_is_eq38()),
         ok("sec. B.9", "(any system) (90) is (40) in another form, and reduces to (89) at x_P = 0", eq90_is_eq40()),
     ]

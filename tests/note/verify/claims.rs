@@ -21,8 +21,8 @@ fn claims_hold_and_wrong_versions_fail() {
 #[test]
 fn the_prose_claims_count_and_every_erratum_fails_as_printed() {
     let all = claims();
-    // 14 checked before issue 37, 29 added (see docs/prose-claims.md).
-    assert_eq!(all.len(), 43);
+    // 14 checked before issue 37, 32 added (see docs/prose-claims.md).
+    assert_eq!(all.len(), 46);
     let errata: Vec<_> = all.iter().filter(|c| c.erratum.is_some()).collect();
     assert_eq!(errata.len(), 5);
     assert_eq!(errata.iter().filter(|c| c.imprecise).count(), 3);
@@ -60,9 +60,9 @@ fn section_2_checks_report_false_for_the_wrong_point_or_value() {
 #[test]
 fn appendix_checks_see_a_moving_point_and_a_perturbed_system() {
     use sliding_ladder::verify::claims::appendix::{
-        contact_force_needed, eq85_is_eq38, eq90_is_eq40, fixed_point_law, fixed_point_same_l,
-        general_systems, method3_is_sec_2_4, method5_is_about_b, orbital_plus_spin,
-        slipping_breaks_eq42, three_distinct_methods,
+        contact_force_needed, eq77_is_eq37, eq85_is_eq38, eq88_follows, eq90_is_eq40,
+        fixed_point_law, fixed_point_same_l, general_systems, method3_is_sec_2_4,
+        method5_is_about_b, orbital_plus_spin, slipping_breaks_eq42, three_distinct_methods,
     };
     // Each includes its own negative half (a moving P, a = 0 excluded, B's torque ≠ 0), so
     // these being true already shows they distinguish; the systems really are general:
@@ -70,7 +70,7 @@ fn appendix_checks_see_a_moving_point_and_a_perturbed_system() {
         .iter()
         .all(|(s, p)| p.v != sliding_ladder::vector::Vec3::zero() && s.particles.len() == 3));
     assert!(orbital_plus_spin() && fixed_point_same_l() && fixed_point_law());
-    assert!(eq85_is_eq38() && eq90_is_eq40());
+    assert!(eq85_is_eq38() && eq90_is_eq40() && eq77_is_eq37() && eq88_follows());
     assert!(contact_force_needed() && method5_is_about_b() && method3_is_sec_2_4());
     assert!(slipping_breaks_eq42());
     assert_eq!(three_distinct_methods(), (true, true));
