@@ -290,7 +290,7 @@ pub fn claims() -> Vec<Claim> {
         ok("sec. A (39), fn. 19", "(any system) v_P = 0 gives L'_P = L_P; a moving P does not", fixed_point_same_l()),
         ok("sec. A (contact), A.5", "τ_C needs no contact force at C (the wall's torque about C is 0); τ_cm of (58) does", contact_force_needed()),
         ok("sec. A.5", "(58) nominally about C is the analysis about B: τ_C + (x_cm − x_C) × (−m a_cm) = τ_B", method5_is_about_b()),
-        ok("sec. A.3", "method 3 is sec. 2.4's analysis: the torque of −m a_C is (22)'s F_{C,y} l sin θ", method3_is_sec_2_4()),
+        ok("sec. A.3", "method 3 is sec. 2.4's analysis: the torque of −m a_C is (22)'s F_C,y l sin θ", method3_is_sec_2_4()),
         ok("sec. A (42), fn. 15, A.1", "with slipping (the ladder at C) neither form of (42) holds: L_C ≠ I_C θ̇ (49)-(50), L'_C ≠ I_C θ̇ − (x_cm − x_C) × m v_C", slipping_breaks_eq42()),
         ok("sec. A.6", "only three of the five methods are distinct on the ladder (L_C, L'_C, L_cm differ pairwise)", three),
         ok("sec. A.6", "only method 1 is not one of sec. 2's analyses (its L_C is none of L_A, L_B, L'_C, L'_D, L'_E)", only_one),
