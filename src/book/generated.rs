@@ -97,7 +97,8 @@ pub fn errata_page(
     for c in &data.claims {
         let verdict = match (c.holds, c.printed_fails, c.erratum) {
             (true, Some(true), Some((p, k))) => format!(
-                "prose erratum: printed {} fails, corrected {} holds{}",
+                "prose erratum{}: printed {} fails, corrected {} holds{}",
+                if c.imprecise { " (imprecise)" } else { "" },
                 prose(p),
                 prose(k),
                 c.reading_latex

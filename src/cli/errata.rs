@@ -52,16 +52,7 @@ pub fn errata_command(json_out: bool, cfg: &Config, columns: usize) -> ExitCode 
         print!("{}", fill(&misprint_text(&list), columns));
         say!("\nclaims made in the prose, checked exactly at three random states:");
         for c in &prose {
-            let verdict = match (c.holds, c.printed_fails) {
-                (true, None) if c.erratum.is_some() => {
-                    "PROSE ERRATUM (wording; the formula is right)"
-                }
-                (true, None) => "holds",
-                (true, Some(true)) => {
-                    "PROSE ERRATUM: the printed wording fails, the correction holds"
-                }
-                _ => "FAILED",
-            };
+            let verdict = c.verdict();
             say!("  {:<16} {}: {verdict}", c.location, c.claim);
             if let Some((printed, corrected)) = c.erratum {
                 // LaTeX in --json; here, as the terminal reads it (a wording erratum is words,

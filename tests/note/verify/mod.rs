@@ -4,4 +4,5 @@ mod claims;
 mod errata_difference;
 mod errata_point;
 mod errata_reading;
+mod rolling;
 mod table;

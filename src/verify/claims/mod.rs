@@ -18,6 +18,12 @@ use crate::scalar::{sq, Rational, Scalar};
 use crate::vector::Vec3;
 use serde::Serialize;
 
+pub mod appendix;
+pub mod hu;
+pub mod rigid_e;
+pub mod rolling;
+pub mod sec2;
+
 type Q = Rational;
 
 /// One claim of the note's prose.
@@ -43,6 +49,61 @@ pub struct Claim {
     /// with `$…$` math ([`crate::scalar::Reading`]), when a reading fits.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub reading_latex: Option<String>,
+    /// For a prose erratum: the printed wording is not wrong everywhere but imprecise (true in
+    /// some cases it covers, false in others; the correction says exactly when).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub imprecise: bool,
+}
+
+impl Claim {
+    /// A claim that the note states correctly; `holds` is its check's verdict.
+    pub fn checked(location: &'static str, claim: &'static str, holds: bool) -> Claim {
+        Claim {
+            location,
+            claim,
+            erratum: None,
+            holds,
+            printed_fails: None,
+            difference_latex: None,
+            reading_latex: None,
+            imprecise: false,
+        }
+    }
+    /// A prose erratum: the printed wording (shown failing when `printed_fails`) and the
+    /// correction (shown holding when `holds`).
+    pub fn erratum(
+        location: &'static str,
+        claim: &'static str,
+        (printed, corrected): (&'static str, &'static str),
+        holds: bool,
+        printed_fails: bool,
+    ) -> Claim {
+        Claim {
+            erratum: Some((printed, corrected)),
+            printed_fails: Some(printed_fails),
+            ..Claim::checked(location, claim, holds)
+        }
+    }
+    /// The same erratum, marked imprecise rather than wrong.
+    pub fn imprecise(self) -> Claim {
+        Claim {
+            imprecise: true,
+            ..self
+        }
+    }
+    /// The verdict in words: holds, prose erratum (false or imprecise, or a wording slip), or
+    /// FAILED when the check does not come out as recorded.
+    pub fn verdict(&self) -> &'static str {
+        match (self.holds, self.printed_fails, self.erratum.is_some()) {
+            (true, None, true) => "PROSE ERRATUM (wording; the formula is right)",
+            (true, None, false) => "holds",
+            (true, Some(true), _) if self.imprecise => {
+                "PROSE ERRATUM (imprecise): the printed wording fails in cases it covers, the correction holds"
+            }
+            (true, Some(true), _) => "PROSE ERRATUM: the printed wording fails, the correction holds",
+            _ => "FAILED",
+        }
+    }
 }
 
 /// The prose L_A of sec. A.5 with l to the given power: −(2/3) m lᵏ θ̇ (printed k = 1, right k = 2).
@@ -131,27 +192,27 @@ pub fn contact_torques_vanish_about(k: Corner) -> bool {
     })
 }
 
-/// Every prose claim, checked.
+/// Every prose claim, checked: the fourteen of issue 37's count first ([`first_fourteen_a`],
+/// [`first_fourteen_b`]), then the rest by section ([`sec2`], [`rigid_e`], [`appendix`],
+/// [`hu`] on [`rolling`]).
 pub fn claims() -> Vec<Claim> {
+    [
+        first_fourteen_a(),
+        first_fourteen_b(),
+        sec2::claims(),
+        rigid_e::claims(),
+    ]
+    .into_iter()
+    .flatten()
+    .chain(appendix::claims())
+    .chain(hu::claims())
+    .collect()
+}
+
+/// Secs. 2.1, 2.2 and footnote 4: six of the fourteen claims checked before issue 37.
+fn first_fourteen_a() -> Vec<Claim> {
     use LadderSample::*;
-    let ok = |location, claim, holds| Claim {
-        location,
-        claim,
-        erratum: None,
-        holds,
-        printed_fails: None,
-        difference_latex: None,
-        reading_latex: None,
-    };
-    let erratum = |location, claim, printed, corrected, holds, printed_fails| Claim {
-        location,
-        claim,
-        erratum: Some((printed, corrected)),
-        holds,
-        printed_fails: Some(printed_fails),
-        difference_latex: None,
-        reading_latex: None,
-    };
+    let ok = Claim::checked;
     let on_circle = all(Kinematic, |l, s| {
         corner_position(Corner::B, l, s).dot(&corner_position(Corner::B, l, s)) == sq(&l.l)
     });
@@ -176,6 +237,21 @@ pub fn claims() -> Vec<Claim> {
             lp != i.clone() && lp != -i
         })
     };
+    vec![
+        ok("sec. 2.1", "the centre of mass B moves on a circle of radius l about A", on_circle),
+        ok("sec. 2.1", "from rest upright the ladder leaves the wall where cos θ = 2/3 (F_w ∝ 3 cos θ − 2)", separation(Q::int(1))),
+        ok("footnote 4", "from rest at θ0 it leaves the wall where cos θ = (2/3) cos θ0 (F_w ∝ 3 cos θ − 2 cos θ0)", separation(Q::ratio(3, 5))),
+        ok("sec. 2.2", "the orbital angular momentum of the centre of mass about A is −ml²θ̇", orbital_a),
+        ok("sec. 2.2", "L'_C = I_C θ̇ and L'_D = I_D θ̇ (rigid rotation about C and D)", rigid_about(Corner::C) && rigid_about(Corner::D)),
+        ok("sec. 2.2", "L_A is not ±I_A θ̇, nor L'_E ±I_E θ̇ (no rigid rotation about A or E)", not_rigid_about(Corner::A) && not_rigid_about(Corner::E)),
+    ]
+}
+
+/// Secs. 2.5, 2.6, the figure, secs. A.2-A.5 and footnote 16: the other eight of the fourteen
+/// claims checked before issue 37 (two of them prose errata).
+fn first_fourteen_b() -> Vec<Claim> {
+    use LadderSample::*;
+    let ok = Claim::checked;
     let contact_torques_about_e = contact_torques_vanish_about(Corner::E);
     let tau_a_from_tau_c = all(Kinematic, |l, s| {
         let sys = as_system(l, s);
@@ -230,12 +306,6 @@ pub fn claims() -> Vec<Claim> {
         angular_momentum_about_a(l, s) == la_prose(l, s, 2)
     });
     vec![
-        ok("sec. 2.1", "the centre of mass B moves on a circle of radius l about A", on_circle),
-        ok("sec. 2.1", "from rest upright the ladder leaves the wall where cos θ = 2/3 (F_w ∝ 3 cos θ − 2)", separation(Q::int(1))),
-        ok("footnote 4", "from rest at θ0 it leaves the wall where cos θ = (2/3) cos θ0 (F_w ∝ 3 cos θ − 2 cos θ0)", separation(Q::ratio(3, 5))),
-        ok("sec. 2.2", "the orbital angular momentum of the centre of mass about A is −ml²θ̇", orbital_a),
-        ok("sec. 2.2", "L'_C = I_C θ̇ and L'_D = I_D θ̇ (rigid rotation about C and D)", rigid_about(Corner::C) && rigid_about(Corner::D)),
-        ok("sec. 2.2", "L_A is not ±I_A θ̇, nor L'_E ±I_E θ̇ (no rigid rotation about A or E)", not_rigid_about(Corner::A) && not_rigid_about(Corner::E)),
         ok("sec. 2.6", "the floor and wall forces have no torque about E", contact_torques_about_e),
         ok("sec. 1, FIGURE", "only A is at rest; B, C, D, E accelerate", only_a_at_rest),
         ok("FIGURE", "E is the instantaneous centre of rotation of the ladder", e_is_instant_centre),
@@ -243,18 +313,13 @@ pub fn claims() -> Vec<Claim> {
         ok("footnote 16", "the L_C of sec. 2.4 is L'_C of Appendix A, not L_C", l_c_is_relative),
         ok("sec. A.5 (end)", "τ_A = τ_C + x_C × m a_cm", tau_a_from_tau_c),
         Claim {
-            location: "sec. 2.5",
-            claim: "(24) is introduced as 'the angular momentum about point C'; it is about D (a wording slip: L'_C = L'_D, so no number changes)",
             erratum: Some(("about point C", "about point D")),
-            holds: d_label_printed,
-            printed_fails: None,
-            difference_latex: None,
-            reading_latex: None,
+            ..ok("sec. 2.5", "(24) is introduced as 'the angular momentum about point C'; it is about D (a wording slip: L'_C = L'_D, so no number changes)", d_label_printed)
         },
         Claim {
             difference_latex: la_prose_difference(),
             reading_latex: la_prose_reading(),
-            ..erratum("sec. A.5", "L = L_A written as −(2/3) m l θ̇: a factor l is missing", r"-\frac{2}{3}m l \dot{\theta}", r"-\frac{2}{3}m l^2 \dot{\theta}", la_prose_corrected, la_prose_printed_fails)
+            ..Claim::erratum("sec. A.5", "L = L_A written as −(2/3) m l θ̇: a factor l is missing", (r"-\frac{2}{3}m l \dot{\theta}", r"-\frac{2}{3}m l^2 \dot{\theta}"), la_prose_corrected, la_prose_printed_fails)
         },
     ]
 }

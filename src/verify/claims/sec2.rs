@@ -1,0 +1,162 @@
+//! Claims of secs. 2.1-2.6 and their footnotes beyond the first fourteen: the spin and orbital
+//! parts of L_A, the points' coordinates and distances, points on and off the ladder, (27) as
+//! for A, footnote 3, and "which leads to the equation of motion (5)" after each analysis.
+//! All exact, on the ladder's three-particle model (`ladder::particles`).
+
+use super::{all, Claim};
+use crate::ladder::analysis::{
+    angular_momentum_about, solve_angular_acceleration, AngularMomentum, Reference,
+};
+use crate::ladder::energy::{angular_acceleration, energy, moment_of_inertia_cm};
+use crate::ladder::geometry::{corner_position, Corner};
+use crate::ladder::particles::as_system;
+use crate::ladder::torque::{angular_momentum_about_a, eq13_moment_of_inertia_about_corner};
+use crate::ladder::{Ladder, State};
+use crate::registry::sample::LadderSample::{Kinematic, OnShell};
+use crate::scalar::{Rational, Scalar};
+use crate::system::rate;
+
+type Q = Rational;
+
+/// Sec. 2.2: the spin L_cm = I_cm θ̇ = ml²θ̇/3, and it turns opposite to the orbital part
+/// −ml²θ̇ (their signs differ for θ̇ ≠ 0).
+pub fn spin_and_sense() -> bool {
+    all(Kinematic, |l, s| {
+        let sys = as_system(l, s);
+        let spin = sys.spin_angular_momentum().z;
+        let orbital = sys.centre_of_mass().cross(&sys.cm_velocity().scale(&l.m)).z;
+        spin == moment_of_inertia_cm(l) * s.rate.clone() && spin.clone() * orbital < Q::int(0)
+    })
+}
+
+/// Sec. 2.2 (13): A, C, D and E are each at distance l from B, so the parallel-axis theorem
+/// gives all four the same I = I_cm + ml².
+pub fn corners_at_distance_l() -> bool {
+    [Corner::A, Corner::C, Corner::D, Corner::E]
+        .into_iter()
+        .all(at_distance_l)
+}
+
+/// Whether corner `k` is at distance l from the centre of mass at every exact state.
+pub fn at_distance_l(k: Corner) -> bool {
+    all(Kinematic, |l, s| {
+        let r = corner_position(k, l, s) - as_system(l, s).centre_of_mass();
+        r.dot(&r) == l.l.clone() * l.l.clone()
+    })
+}
+
+/// Secs. 2.3-2.6: B is the centre of mass; C = (0, 2y_cm), D = (2x_cm, 0), E = (2x_cm, 2y_cm).
+pub fn coordinates_of_points() -> bool {
+    all(Kinematic, |l, s| {
+        let cm = as_system(l, s).centre_of_mass();
+        let two = Q::int(2);
+        let (x2, y2) = (two.clone() * cm.x.clone(), two * cm.y.clone());
+        let at = |k| corner_position(k, l, s);
+        at(Corner::B) == cm
+            && (at(Corner::C).x == Q::int(0) && at(Corner::C).y == y2)
+            && (at(Corner::D).x == x2 && at(Corner::D).y == Q::int(0))
+            && (at(Corner::E).x == x2 && at(Corner::E).y == y2)
+    })
+}
+
+/// Secs. 2.4, 2.5 ("since point C is located on the ladder, L_C = I_C θ̇"): about any point
+/// fixed on the ladder, L'_P = I_P θ̇, for points at fractions 0, 1/3, 1 and 3/2 (past D) of the
+/// way from C to D; I_P from the particles.
+pub fn rigid_about_points_on_ladder() -> bool {
+    [(0, 1), (1, 3), (1, 1), (3, 2)].into_iter().all(|(n, d)| {
+        all(Kinematic, |l, s| {
+            let p = Reference::OnLadder(n, d);
+            let x_p = crate::ladder::analysis::ReferencePoint::position(&p, l, s);
+            angular_momentum_about(&p, AngularMomentum::Relative, l, s)
+                == as_system(l, s).moment_of_inertia_about(&x_p) * s.rate.clone()
+        })
+    })
+}
+
+/// Sec. 2.6: E is not on the ladder (not on the line through C and D).
+pub fn e_off_the_ladder() -> bool {
+    off_the_ladder(Corner::E)
+}
+
+/// Whether corner `k` is off the line through C and D at every exact state.
+pub fn off_the_ladder(k: Corner) -> bool {
+    all(Kinematic, |l, s| {
+        let (c, d, e) = (
+            corner_position(Corner::C, l, s),
+            corner_position(Corner::D, l, s),
+            corner_position(k, l, s),
+        );
+        (e - c.clone()).cross(&(d - c)).z != Q::int(0)
+    })
+}
+
+/// Sec. 2.6, (27) "as for the analysis about point A": L'_E equals L_A.
+pub fn l_e_as_for_a() -> bool {
+    relative_l_is_l_a(Corner::E)
+}
+
+/// Whether L'_k equals L_A (12) at every exact state.
+pub fn relative_l_is_l_a(k: Corner) -> bool {
+    all(Kinematic, |l, s| {
+        angular_momentum_about(&Reference::Corner(k), AngularMomentum::Relative, l, s)
+            == angular_momentum_about_a(l, s)
+    })
+}
+
+/// Footnote 3: d/dt of (10), θ̇² − (3g/2l)(1 − cos θ), is 2θ̇ (θ̈ − (3g/4l) sin θ) at any state
+/// (so it gives (5) where θ̇ ≠ 0), and the energy (9) is constant on (5).
+pub fn footnote_3() -> bool {
+    let eq10 = |l: &Ladder<<Q as Scalar>::Dual>, s: &State<<Q as Scalar>::Dual>| {
+        s.rate.clone() * s.rate.clone()
+            - l.g.clone() * <Q as Scalar>::Dual::ratio(3, 2) / l.l.clone()
+                * (<Q as Scalar>::Dual::int(1) - s.cos.clone())
+    };
+    let derivative = all(Kinematic, |l, s| {
+        let d = rate::<Q>(eq10(&l.constant(), &s.along_motion()));
+        d == Q::int(2) * s.rate.clone() * (s.accel.clone() - angular_acceleration(l, s))
+    });
+    let conserved = all(OnShell, |l, s| {
+        rate::<Q>(energy(&l.constant(), &s.along_motion())) == Q::int(0)
+    });
+    derivative && conserved
+}
+
+/// Secs. 2.2-2.6 and A.1 ("which again leads to the equation of motion (5)"): the torque
+/// analysis about `k` with angular momentum `def`, solved for θ̈, gives (5).
+pub fn leads_to_eq5(k: Corner, def: AngularMomentum) -> bool {
+    leads_to(k, def, angular_acceleration)
+}
+
+/// Whether the analysis about `k` with `def`, solved for θ̈, gives `eq5` at every exact state
+/// (a test passes a wrong θ̈ to see it fail).
+pub fn leads_to(k: Corner, def: AngularMomentum, eq5: fn(&Ladder<Q>, &State<Q>) -> Q) -> bool {
+    all(Kinematic, |l, s| {
+        solve_angular_acceleration(&Reference::Corner(k), def, l, s) == eq5(l, s)
+    })
+}
+
+/// The claims of this module.
+pub fn claims() -> Vec<Claim> {
+    use AngularMomentum::{Absolute, Relative};
+    let ok = Claim::checked;
+    let sec2_analyses = leads_to_eq5(Corner::A, Absolute)
+        && leads_to_eq5(Corner::B, Absolute)
+        && leads_to_eq5(Corner::C, Relative)
+        && leads_to_eq5(Corner::D, Relative)
+        && leads_to_eq5(Corner::E, Relative);
+    let i13 = all(Kinematic, |l, _| {
+        eq13_moment_of_inertia_about_corner(l)[1]
+            == moment_of_inertia_cm(l) + l.m.clone() * l.l.clone() * l.l.clone()
+    });
+    vec![
+        ok("sec. 2.2", "the spin about the centre of mass is I_cm θ̇ = ml²θ̇/3, opposite in sense to the orbital −ml²θ̇", spin_and_sense()),
+        ok("sec. 2.2 (13)", "A, C, D, E are each at distance l from B, so the parallel-axis theorem gives one I = I_cm + ml² for all four", corners_at_distance_l() && i13),
+        ok("secs. 2.3-2.6", "B is the centre of mass; C = (0, 2y_cm), D = (2x_cm, 0), E = (2x_cm, 2y_cm)", coordinates_of_points()),
+        ok("secs. 2.4, 2.5", "about any point fixed on the ladder L'_P = I_P θ̇ (why L_C, L_D are I θ̇)", rigid_about_points_on_ladder()),
+        ok("sec. 2.6", "E is not on the ladder", e_off_the_ladder()),
+        ok("sec. 2.6", "(27) is 'as for A': L'_E = L_A", l_e_as_for_a()),
+        ok("footnote 3", "d/dt of (10) gives (5), and the energy (9) is conserved on (5)", footnote_3()),
+        ok("secs. 2.2-2.6", "each torque analysis (A with L_A, B with L_B, C, D, E with L') solved for θ̈ gives (5)", sec2_analyses),
+        ok("sec. A.1", "method 1 (L_C with (38)) solved for θ̈ gives (5)", leads_to_eq5(Corner::C, Absolute)),
+    ]
+}
