@@ -26,3 +26,49 @@ fn fractions_cancel_and_compare_by_cross_multiplication() {
     assert_eq!(back, m1.clone() * Sym::var("x_1", "x_1"));
     assert_ne!(x, m1 * Sym::var("x_1", "x_1") / (total + Sym::int(1)));
 }
+
+#[test]
+fn as_var_names_a_bare_variable_and_nothing_else() {
+    let (x, y) = (Sym::var("x_v", "x_v"), Sym::var("y_v", "y_v"));
+    let vx = x.as_var().expect("x is a variable");
+    assert_ne!(Some(vx), y.as_var());
+    // A square, a product, a multiple, a sum and a quotient are not variables.
+    for not_var in [
+        x.clone() * x.clone(),
+        x.clone() * y.clone(),
+        Sym::int(2) * x.clone(),
+        x.clone() + y.clone(),
+        x.clone() / y.clone(),
+    ] {
+        assert_eq!(not_var.as_var(), None, "{not_var:?}");
+    }
+}
+
+/// The surd in a denominator is rationalised: with v² = 2, 1/(1 + v) = v − 1 and
+/// v/(1 + v) = 2 − v (multiply by 1 − v; by hand).
+#[test]
+fn reduce_square_rationalises_a_surd_in_the_denominator() {
+    let v = Sym::var("v_r", "v_r");
+    let var = v.as_var().expect("v is a variable");
+    let two = Sym::int(2);
+    let one_over = Sym::int(1) / (Sym::int(1) + v.clone());
+    assert_eq!(one_over.reduce_square(var, &two), (Sym::int(-1), Sym::int(1)));
+    let v_over = v.clone() / (Sym::int(1) + v.clone());
+    assert_eq!(v_over.reduce_square(var, &two), (Sym::int(2), Sym::int(-1)));
+    // A planted wrong relation (v² = 3) gives another pair: 1/(1 + √3) = (√3 − 1)/2.
+    assert_eq!(
+        one_over.reduce_square(var, &Sym::int(3)),
+        (Sym::ratio(-1, 2), Sym::ratio(1, 2))
+    );
+}
+
+/// A factor that divides the numerator exactly is divided out: (xy − 1)(x + 1)/(xy − 1) is the
+/// plain polynomial x + 1, with no denominator left.
+#[test]
+fn an_exact_factor_of_the_numerator_is_divided_out() {
+    let (x, y) = (Sym::var("x_d", "x_d"), Sym::var("y_d", "y_d"));
+    let f = x.clone() * y.clone() - Sym::int(1);
+    let q = f.clone() * (x.clone() + Sym::int(1)) / f;
+    assert!(q.den.factors.is_empty(), "{q:?}");
+    assert_eq!(q, x + Sym::int(1));
+}
