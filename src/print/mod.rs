@@ -46,6 +46,7 @@ pub mod clash;
 pub mod condition;
 pub mod eval;
 pub mod lexer;
+pub mod own_point;
 pub mod parser;
 pub mod point;
 pub mod quantity;

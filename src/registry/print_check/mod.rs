@@ -278,6 +278,7 @@ pub(crate) fn form_text<'a>(chains: &'a [Vec<Form>], label: &str) -> &'a str {
         .map_or("?", |f| f.text.as_str())
 }
 
+mod independent;
 mod inject;
 mod motion;
 pub mod premises;
