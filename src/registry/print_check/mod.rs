@@ -284,6 +284,7 @@ mod motion;
 pub mod premises;
 pub mod prove;
 mod run;
+pub mod symbol_check;
 pub mod twins;
 pub mod units;
 pub use crate::registry::sample::PrintSample;

@@ -39,7 +39,8 @@ pub fn check_print_with(
         }
     };
     rep.forms = count;
-    rep.problems.extend(super::twins::own_points(e, &chains));
+    rep.problems
+        .extend(super::symbol_check::own_points(e, &chains));
     if let Ok(d) = crate::print::parser::parse_display(latex) {
         rep.problems.extend(super::premises::disagreements(e, &d));
     }

@@ -10,11 +10,11 @@
 //! equal on the model, not by chance. A symbol that is zero there is left out (every zero is
 //! "equal" to every other).
 //!
-//! Where the values are blind, the symbols are not: [`own_points`] holds each display to the
+//! Where the values are blind, the symbols are not: [`super::symbol_check`] holds each display to the
 //! points its section prints ([`crate::print::own_point`]), so a swap to another point's symbol
 //! (I_C → I_A in sec. 2.4) fails the display even though every value is unchanged.
 
-use super::{print_chains, print_sample, Form, PrintSample};
+use super::{print_chains, print_sample, PrintSample};
 use crate::print::ast::Expr;
 use crate::print::eval::{evaluate, Ctx};
 use crate::print::quantity::Model;
@@ -166,14 +166,4 @@ fn symbols(e: &Expr, milne: bool, out: &mut Vec<(String, bool)>) {
         Tuple(v) => v.iter().for_each(|x| symbols(x, milne, out)),
         Int(_) | Const => {}
     }
-}
-
-/// The symbol check (issue 37): the display's symbols in our notation (Milne's are his) against
-/// the points its section prints ([`crate::print::own_point`]).
-pub fn own_points(e: &Equation, chains: &[Vec<Form>]) -> Vec<String> {
-    let mut keys = Vec::new();
-    for f in chains.iter().flatten().filter(|f| !f.milne) {
-        crate::print::own_point::symbol_keys(&f.expr, &mut keys);
-    }
-    crate::print::symbols::point_rules().check(e.section, e.number, &keys)
 }

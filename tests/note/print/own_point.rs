@@ -8,7 +8,7 @@ use sliding_ladder::print::own_point::{parse_rules, point_of, ExceptionKind, NOT
 use sliding_ladder::print::parser::parse_expr;
 use sliding_ladder::print::symbols::{point_rules, SYMBOLS_TOML};
 use sliding_ladder::registry::equations;
-use sliding_ladder::registry::print_check::{print_chains, twins::own_points};
+use sliding_ladder::registry::print_check::{print_chains, symbol_check::own_points};
 
 /// A symbol's key, as the parser makes it (`\mathbf{x}_P` → `\mathbf{x}_{P}`).
 fn key(latex: &str) -> String {
