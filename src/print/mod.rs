@@ -5,7 +5,8 @@
 //! models by one data file, `src/print/symbols.toml` ([`symbols`], [`quantity`]), and every form
 //! is evaluated in any [`crate::scalar::Scalar`] ([`eval`]): f64 with running error bounds, exact
 //! rationals, AD duals for every d/dt, so the registry's own machinery checks the print itself
-//! (`crate::registry::print_check`).
+//! (`crate::registry::print_check`). Where values cannot tell two points' symbols apart, the same
+//! file says which points' symbols each section prints ([`own_point`]).
 //!
 //! # Grammar (recursive descent, [`parser`])
 //! ```text
@@ -46,6 +47,7 @@ pub mod clash;
 pub mod condition;
 pub mod eval;
 pub mod lexer;
+pub mod own_point;
 pub mod parser;
 pub mod point;
 pub mod quantity;

@@ -4,6 +4,7 @@
 //! defines it and its dimension and SI unit (used by the units check).
 
 use super::ast::Expr;
+use super::own_point::{parse_rules, PointException, Rules, SectionPoints};
 use super::parser::parse_expr;
 use serde::Deserialize;
 use std::sync::OnceLock;
@@ -45,6 +46,14 @@ pub struct Entry {
 #[serde(deny_unknown_fields)]
 struct File {
     symbol: Vec<Entry>,
+    /// The points each section's displays print (read by [`point_rules`]).
+    #[serde(default)]
+    #[allow(dead_code)]
+    section: Vec<SectionPoints>,
+    /// Displays that name another point on purpose (read by [`point_rules`]).
+    #[serde(default)]
+    #[allow(dead_code)]
+    exception: Vec<PointException>,
 }
 
 /// Parse a symbol table; an entry whose `latex` is not one symbol is an error naming it.
@@ -71,6 +80,12 @@ pub fn parse_table(text: &str) -> Result<Vec<Entry>, String> {
 pub fn table() -> &'static [Entry] {
     static T: OnceLock<Vec<Entry>> = OnceLock::new();
     T.get_or_init(|| parse_table(SYMBOLS_TOML).expect("the shipped symbols.toml parses (tested)"))
+}
+
+/// The shipped rules of which points' symbols each section's displays print (parsed once).
+pub fn point_rules() -> &'static Rules {
+    static R: OnceLock<Rules> = OnceLock::new();
+    R.get_or_init(|| parse_rules(SYMBOLS_TOML).expect("the shipped symbols.toml parses (tested)"))
 }
 
 /// The entry for a symbol key in a section (Milne's part or ours). The most specific entry wins:

@@ -159,13 +159,39 @@ pub(super) fn eq53_first_form<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Chains<
     ]]
 }
 
+/// (54): besides the Rust copy of the print, the independent value its correct side states:
+/// τ′_C of (40), the torque about C of gravity, the wall and the floor (the forces the motion
+/// requires, on the particle model) and of the coordinate force −m a_C at the cm, which is
+/// mgl sin θ at every state (sec. 2.4, (22)); the print check holds the printed correct side to it.
 pub(super) fn eq54<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Chains<S> {
     let [lhs, rhs] = eq54_printed(l, s);
     vec![vec![
         printed("mgl sin θ", rhs),
         misprint("4ml²θ̇²/3 (as printed)", lhs),
         corrected("4ml²θ̈/3", eq54_corrected(l, s)),
+        reference(
+            EQ54_TORQUE,
+            torque_equation(&C, AngularMomentum::Relative, l, s).1,
+        ),
     ]]
+}
+
+/// The independent value of (54)'s correct side.
+const EQ54_TORQUE: &str =
+    "torque τ′_C about C of gravity, wall, floor and the coordinate force −m a_C (particles)";
+
+/// The independent value of (62)'s correct (left) side.
+const EQ62_RATE: &str = "rate dL_C/dt about the fixed lab point where C is now (particles; AD)";
+
+/// Hu's dL_C/dt of (56) about C: the rate of the particles' angular momentum about the lab point
+/// where C is now, held fixed (automatic differentiation along the motion).
+fn rate_about_frozen_c<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> S {
+    let frozen = Point::fixed(top(l, s).x.constant());
+    rate::<S>(
+        as_system(&l.constant(), &s.along_motion())
+            .angular_momentum_about(&frozen)
+            .z,
+    )
 }
 
 pub(super) fn eq55<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Chains<S> {
@@ -189,16 +215,10 @@ pub(super) fn eq59<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Chains<S> {
     let sys = as_system(l, s);
     let x_c = top(l, s).x;
     // Hu's L_C: about the lab point where C is now, held fixed while the ladder moves.
-    let frozen = Point::fixed(x_c.constant());
-    let d_frozen = rate::<S>(
-        as_system(&l.constant(), &s.along_motion())
-            .angular_momentum_about(&frozen)
-            .z,
-    );
     vec![vec![
         reference(
             "dL_P/dt about the fixed point at C (particles; AD)",
-            d_frozen,
+            rate_about_frozen_c(l, s),
         ),
         printed("dL_A/dt − x_C × m a_cm", a),
         printed("τ_C", b),
@@ -225,6 +245,9 @@ pub(super) fn eq61<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Chains<S> {
     ]
 }
 
+/// (62): besides the Rust copy of the print, the independent value its correct (left) side
+/// states: Hu's dL_C/dt = dL_A/dt − x_C × m a_cm of (59)-(60), by automatic differentiation of the
+/// particles' angular momentum about the fixed point where C is now, at every state.
 pub(super) fn eq62<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Chains<S> {
     let [a, b] = eq62_printed(l, s);
     vec![vec![
@@ -234,6 +257,7 @@ pub(super) fn eq62<S: Scalar>(l: &Ladder<S>, s: &State<S>) -> Chains<S> {
             "mlg sin θ − 2ml² sin²θ θ̈ − 2ml² cos θ sin θ θ̇²",
             eq62_corrected(l, s),
         ),
+        reference(EQ62_RATE, rate_about_frozen_c(l, s)),
     ]]
 }
 

@@ -278,11 +278,13 @@ pub(crate) fn form_text<'a>(chains: &'a [Vec<Form>], label: &str) -> &'a str {
         .map_or("?", |f| f.text.as_str())
 }
 
+mod independent;
 mod inject;
 mod motion;
 pub mod premises;
 pub mod prove;
 mod run;
+pub mod symbol_check;
 pub mod twins;
 pub mod units;
 pub use crate::registry::sample::PrintSample;

@@ -1,5 +1,6 @@
 //! Running a display's printed chains on the registry's samples.
 
+use super::independent::{erratum_against_references, rust_sides};
 use super::premises::{premised, premised_parts};
 use super::{
     evaluate_chains, form_text, misprints, print_chains_with, term_chains, Form, PrintReport,
@@ -38,6 +39,8 @@ pub fn check_print_with(
         }
     };
     rep.forms = count;
+    rep.problems
+        .extend(super::symbol_check::own_points(e, &chains));
     if let Ok(d) = crate::print::parser::parse_display(latex) {
         rep.problems.extend(super::premises::disagreements(e, &d));
     }
@@ -168,6 +171,16 @@ fn exact_pass(
         cfg.exact_points.min(PRINT_EXACT_POINTS)
     };
     rep.degree = super::motion::degree(e, chains, sample);
+    // The Rust forms (to match against the print) and, for an erratum, its correct printed
+    // forms held to the check's independent values.
+    let mut held: Vec<String> = Vec::new();
+    let mut independent = |print: Result<Vec<Chain<Rational>>, String>,
+                           rust: Vec<Chain<Rational>>| {
+        if let Ok(print) = print {
+            held = erratum_against_references(e, chains, &print, &rust);
+        }
+        code_sides = rust_sides(&rust);
+    };
     for k in 0..rep.exact_points {
         let first = k == 0;
         let mut note = |ch| {
@@ -197,7 +210,8 @@ fn exact_pass(
                         code_values.extend(ch.into_iter().flatten().map(|s| s.value));
                     }
                     if let Some(Eval::Ladder(_, f)) = rust {
-                        code_sides = rust_sides((f.exact)(&l, &s));
+                        let here = Model::ladder(l.clone(), s.clone());
+                        independent(evaluate_chains(e, chains, here, None), (f.exact)(&l, &s));
                     }
                 }
             }
@@ -231,7 +245,8 @@ fn exact_pass(
                         }
                     }
                     if let Some(Eval::Particles(_, f)) = rust {
-                        code_sides = rust_sides((f.exact)(&sys, &p));
+                        let here = Model::particles(sys.clone(), p.clone());
+                        independent(evaluate_chains(e, chains, here, None), (f.exact)(&sys, &p));
                     }
                 }
             }
@@ -243,6 +258,7 @@ fn exact_pass(
             form_text(chains, &label)
         ));
     }
+    rep.problems.extend(held);
     misprint_held.dedup();
     for m in misprint_held {
         rep.problems
@@ -374,18 +390,4 @@ fn note_exact(
             misprint_held.push(format!("{label} '{}'", form_text(chains, label)));
         }
     }
-}
-
-fn rust_sides(chains: Vec<Chain<Rational>>) -> Vec<(String, Rational)> {
-    chains
-        .into_iter()
-        .flatten()
-        .filter(|s| matches!(s.role, Role::Printed | Role::Misprint))
-        .map(|s| (s.label.to_string(), s.value))
-        .fold(Vec::new(), |mut acc: Vec<(String, Rational)>, x| {
-            if !acc.iter().any(|a| a.0 == x.0 && a.1 == x.1) {
-                acc.push(x);
-            }
-            acc
-        })
 }

@@ -9,6 +9,10 @@
 //! at a random point with probability at most degree/2⁶⁰ (Schwartz-Zippel), so a pair listed is
 //! equal on the model, not by chance. A symbol that is zero there is left out (every zero is
 //! "equal" to every other).
+//!
+//! Where the values are blind, the symbols are not: [`super::symbol_check`] holds each display to the
+//! points its section prints ([`crate::print::own_point`]), so a swap to another point's symbol
+//! (I_C → I_A in sec. 2.4) fails the display even though every value is unchanged.
 
 use super::{print_chains, print_sample, PrintSample};
 use crate::print::ast::Expr;

@@ -3,8 +3,10 @@
 
 mod check;
 mod condition;
+mod independent;
 mod inject;
 mod lexer;
+mod own_point;
 mod parser;
 mod planted;
 mod point;

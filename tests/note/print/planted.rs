@@ -1,21 +1,31 @@
 //! The proof of absence (issue 37): each class of edit the print check used to miss is planted
 //! into a copy of the print (`equations/*.md`, the one file that holds each display) and
-//! `ladder verify --equations COPY` must flag exactly the planted displays, each with a reason
-//! naming the form; an edit no model can see is left unflagged and `ladder show` names the
-//! symbols that are indistinguishable there. A pristine copy is flagged nowhere.
+//! `ladder verify --equations COPY` must flag exactly the planted displays, each with its reason;
+//! an edit that leaves the display saying what the note means is left unflagged and `ladder show`
+//! says why. A pristine copy is flagged nowhere.
 
 use crate::common::tmp_dir;
 use std::path::Path;
 use std::process::Command;
 
-/// (file, display, printed text, planted text, class).
-const PLANTS: [(&str, u32, &str, &str, &str); 5] = [
+/// (file, display, printed text, planted text, class, the reason verify must give).
+type Plant = (
+    &'static str,
+    u32,
+    &'static str,
+    &'static str,
+    &'static str,
+    &'static str,
+);
+
+const PLANTS: [Plant; 8] = [
     (
         "B-milne.md",
         84,
         r"\mathbf{L}_{\text{cm}} = \mathbf{L}'_{\text{cm}}, \quad",
         r"\mathbf{L}_P = \mathbf{L}'_{\text{cm}}, \quad",
         "a subscript swap between quantities equal on the old sample (P riding on the cm)",
+        "differs from its chain",
     ),
     (
         "B-milne.md",
@@ -23,6 +33,7 @@ const PLANTS: [(&str, u32, &str, &str, &str); 5] = [
         r"\frac{d\mathbf{L}_P}{dt} \Big|_{\mathbf{x}_P=0} + \mathbf{v}_P",
         r"\frac{d\mathbf{L}_P}{dt} + \mathbf{v}_P",
         "a dropped evaluation bar",
+        "premise",
     ),
     (
         "B-milne.md",
@@ -30,6 +41,7 @@ const PLANTS: [(&str, u32, &str, &str, &str); 5] = [
         r"\mathbf{F} = 0 \Rightarrow \mathbf{P} = \text{const}",
         r"\mathbf{F} = 0, \quad \mathbf{P} = \text{const}",
         "an implication made a conjunction",
+        "form",
     ),
     (
         "B-milne.md",
@@ -37,6 +49,7 @@ const PLANTS: [(&str, u32, &str, &str, &str); 5] = [
         r"\frac{d\mathbf{L}}{dt} \Big|_{\mathbf{x}_{\text{cm}}=0} =",
         r"\frac{d\mathbf{L}}{dt} \Big|_{\mathbf{x}_P=\mathbf{x}_{\text{cm}}=0} =",
         "a premise strengthened",
+        "premise",
     ),
     (
         "A1-method-1.md",
@@ -44,26 +57,45 @@ const PLANTS: [(&str, u32, &str, &str, &str); 5] = [
         "= m g l \\sin \\theta\n$$",
         "= m g l \\cos \\theta\n$$",
         "a typo in an erratum's correct side",
+        "form 2 'mgl\\cos\\theta', a correct form of the erratum, differs from the independent torque",
     ),
-];
-
-/// Edits no model can see: the statement is unchanged under the display's premises.
-const INVISIBLE: [(&str, u32, &str, &str, &str); 2] = [
+    (
+        "A5-method-5.md",
+        62,
+        r"+ 2m l^2 \cos^2 \theta \ddot{\theta} - 2m l^2 \cos \theta \sin \theta \dot{\theta}^2 = m l g",
+        r"+ 2m l^2 \sin^2 \theta \ddot{\theta} - 2m l^2 \cos \theta \sin \theta \dot{\theta}^2 = m l g",
+        "a typo in an erratum's correct side",
+        "a correct form of the erratum, differs from the independent rate",
+    ),
     (
         "02-point-a.md",
         13,
         "I_A = I_C = I_D",
         "I_A = I_A = I_D",
-        "I_C",
+        "a subscript swap between quantities equal on the ladder (I_C → I_A)",
+        "symbols: (13) compares the points A, C, D, E on purpose",
     ),
     (
-        "A1-method-1.md",
-        49,
-        r"\mathbf{L}_C = \mathbf{L}_{\text{cm}} + (\mathbf{x}_{\text{cm}} - \mathbf{x}_P)",
-        r"\mathbf{L}_C = \mathbf{L}_{\text{cm}} + (\mathbf{x}_{\text{cm}} - \mathbf{x}_C)",
-        "x_C",
+        "05-point-d.md",
+        24,
+        r"L_D = I_D\dot{\theta}",
+        r"L_C = I_D\dot{\theta}",
+        "a subscript swap between quantities equal on the ladder (L_D → L_C, both 4ml²θ̇/3)",
+        "symbols: L_C in sec. 2.5 (point D) is a quantity of point C",
     ),
 ];
+
+/// An edit that leaves the display saying what the note means: x_P → x_C in (49) writes the
+/// point the note means there (its x_P is a notation slip, equations/ERRATA.md), so nothing is
+/// flagged and `ladder show` says so. (file, display, printed, planted, other symbol, why.)
+const INVISIBLE: [(&str, u32, &str, &str, &str, &str); 1] = [(
+    "A1-method-1.md",
+    49,
+    r"\mathbf{L}_C = \mathbf{L}_{\text{cm}} + (\mathbf{x}_{\text{cm}} - \mathbf{x}_P)",
+    r"\mathbf{L}_C = \mathbf{L}_{\text{cm}} + (\mathbf{x}_{\text{cm}} - \mathbf{x}_C)",
+    "x_C for x_P",
+    "x_C is what the note means",
+)];
 
 fn copy_of_the_print(tag: &str) -> std::path::PathBuf {
     let dir = tmp_dir("planted", tag);
@@ -125,7 +157,10 @@ fn every_planted_class_is_flagged_with_its_reason_and_nothing_else() {
     assert!(failed(&json).is_empty());
 
     let dir = copy_of_the_print("all");
-    for (file, _, from, to, _) in PLANTS.iter().chain(&INVISIBLE) {
+    for (file, _, from, to, _, _) in PLANTS {
+        plant(&dir, file, from, to);
+    }
+    for (file, _, from, to, _, _) in INVISIBLE {
         plant(&dir, file, from, to);
     }
     let (code, json, err) = verify(&dir);
@@ -135,13 +170,11 @@ fn every_planted_class_is_flagged_with_its_reason_and_nothing_else() {
     let mut planted: Vec<u64> = PLANTS.iter().map(|p| u64::from(p.1)).collect();
     planted.sort_unstable();
     assert_eq!(numbers, planted, "flagged exactly the planted displays");
-    for (_, n, _, _, class) in PLANTS {
+    for (_, n, _, _, class, reason) in PLANTS {
         let problems = &flagged.iter().find(|f| f.0 == u64::from(n)).unwrap().1;
-        // The reason names the form (or the premise) that changed.
+        // The reason names the form, the premise or the symbol that changed.
         assert!(
-            problems
-                .iter()
-                .any(|p| p.contains("form") || p.contains("premise")),
+            problems.iter().any(|p| p.contains(reason)),
             "({n}) {class}: {problems:?}"
         );
         assert!(err.contains(&format!("({n})")), "({n}) {class}: {err}");
@@ -149,22 +182,41 @@ fn every_planted_class_is_flagged_with_its_reason_and_nothing_else() {
 }
 
 #[test]
-fn an_edit_no_model_can_see_is_named_by_show() {
+fn show_says_what_the_symbol_check_does_with_each_blind_pair() {
     let dir = copy_of_the_print("invisible");
-    for (file, n, from, to, twin) in INVISIBLE {
-        plant(&dir, file, from, to);
+    let show = |n: u32| -> Vec<String> {
         let o = Command::new(env!("CARGO_BIN_EXE_ladder"))
             .args(["show", &n.to_string(), "--equations"])
             .arg(&dir)
             .output()
             .unwrap();
-        let out = String::from_utf8_lossy(&o.stdout);
-        let blind: Vec<&str> = out.lines().filter(|l| l.contains("blind:")).collect();
+        String::from_utf8_lossy(&o.stdout)
+            .lines()
+            .filter(|l| l.contains("blind:"))
+            .map(String::from)
+            .collect()
+    };
+    // Asked of the print as it stands: what would writing the other symbol do?
+    for (_, n, _, _, pair, why) in INVISIBLE {
+        let blind = show(n);
         assert!(
             blind
                 .iter()
-                .any(|l| l.contains(twin) && l.contains("invisible here")),
+                .any(|l| l.contains("invisible here") && l.contains(pair) && l.contains(why)),
             "({n}): {blind:?}"
         );
     }
+    // The pairs of (13) and of a torque analysis: the values are blind, the symbol check is not.
+    let caught = |n: u32, pair: &str| {
+        let blind = show(n);
+        assert!(
+            blind
+                .iter()
+                .any(|l| l.contains(pair) && l.contains("the symbol check catches it")),
+            "({n}) {pair}: {blind:?}"
+        );
+    };
+    caught(13, "I_C for I_A");
+    caught(24, "L_C for L_D");
+    caught(21, "I_A for I_C");
 }
