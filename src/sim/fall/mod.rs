@@ -16,7 +16,6 @@ use self::wall_phase::{wall_phase, WallEnd, WallStart};
 use super::exact::PhaseOne;
 pub use super::fall::observer::momentum_balance;
 use super::floor;
-use super::impact;
 use super::lead_in::linear_state_at;
 use super::near_release;
 pub use super::outcome::{

@@ -9,10 +9,8 @@
 //! every coordinate to a whole pixel, so an arrow's direction and a lever arm's right angle came
 //! out slightly wrong; here every coordinate is a float with two decimals.
 
-use crate::report::diagram::{
-    arm_symbol, arrow_scale, drawing_width, to_px, window, Arrow, Diagram, SIDE,
-};
-use crate::report::svg_text::{esc, n3, subscript, FORCE_COLOURS};
+use crate::report::diagram::{arrow_scale, drawing_width, to_px, window, Arrow, Diagram, SIDE};
+use crate::report::svg_text::{esc, subscript, FORCE_COLOURS};
 use std::fmt::Write;
 
 mod arm;

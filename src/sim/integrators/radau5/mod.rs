@@ -16,8 +16,8 @@ mod stages;
 
 use super::adaptive::{advance_time, start_step, trial_step};
 use super::Integrator;
-use super::dense_lu::{lu_factor, lu_solve};
-use super::{all_finite, eval, Ode, Stats, StepError, Stepper};
+use super::dense_lu::lu_factor;
+use super::{all_finite, Ode, Stats, StepError, Stepper};
 use num_dual::Dual64;
 use super::card::{Card, ControlKind, Stiffness, Sweep};
 use super::Control;

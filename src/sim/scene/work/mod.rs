@@ -97,7 +97,6 @@ use crate::sim::exact::{flat::floor_duration, PhaseOne};
 use crate::sim::integrators::card::PenaltyFit;
 use crate::sim::integrators::{card, Control, TABLE};
 use crate::sim::lead_in::linear_lead_in;
-use crate::sim::penalty::confirm::{rigid_separation_angle, separation_bound};
 use crate::sim::penalty::plan::too_close_to_flat;
 use crate::sim::penalty::start::{rigid_forces, OMEGA2};
 use crate::sim::penalty::Contact;
