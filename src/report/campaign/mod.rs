@@ -28,6 +28,7 @@
 //! the field they name.
 
 pub mod judge;
+pub mod watchdog;
 
 use crate::sim::integrators::{any_model_names, is_adaptive, names};
 use crate::sim::scene::output::Output;
