@@ -208,14 +208,8 @@ pub fn out_of_tolerance(scene: &Scene, o: &Outcome) -> Vec<Problem> {
     };
     let n_wall = o.work.wall.steps as f64;
     if let ContactModel::Penalty { stiffness, damping } = scene.contact {
-        check_penalty(
-            &mut bad,
-            scene,
-            (stiffness, damping),
-            (sep.angle, cs),
-            o,
-            tau,
-        );
+        let springs = (stiffness, damping);
+        check_penalty(&mut bad, scene, springs, (sep.angle, cs), o, tau);
         return bad;
     }
     let e_wall = 10.0 * n_wall * (tau + U);

@@ -89,7 +89,6 @@ fn run_rigid(
     let e0 = plan
         .energy
         .then(|| rigid::energy(&ladder, scene.theta0, scene.rate0));
-
     let (t0, y_lead) = lead_in_end(scene, lead, t_end);
     // The margin belongs to the start as given (a lead-in never meets the release push).
     let margin = margin.filter(|_| t0 == 0.0);
