@@ -188,6 +188,96 @@ fn cell_needs(k: Option<Corner>) -> (String, String, String) {
     )
 }
 
+/// The link to result `r`'s display on its page.
+fn display_link(r: &EquationResult, home: &BTreeMap<u32, String>) -> String {
+    let a = super::panel::anchor(&r.label);
+    let p = home.get(&r.number).cloned().unwrap_or_default();
+    format!("<a href=\"{p}#{a}\">{}</a>", esc(&r.label))
+}
+
+/// Where the law of motion enters: the first display of the section with a law step, and
+/// that step's `=`.
+fn law_cell(with_law: &[&&EquationResult], home: &BTreeMap<u32, String>) -> String {
+    match with_law.first() {
+        Some(r) => format!(
+            "{}, at <code>=</code> no. {}: {}",
+            display_link(r, home),
+            r.law_step.unwrap_or(0),
+            esc(r.law.unwrap_or(""))
+        ),
+        None => "not found".into(),
+    }
+}
+
+/// The working: the display with the law whose longest form has the most terms.
+fn working_cell(with_law: &[&&EquationResult], home: &BTreeMap<u32, String>) -> String {
+    with_law
+        .iter()
+        .filter_map(|r| Some((r, size(crate::registry::printed_latex(r.number))?)))
+        .max_by_key(|(_, (_, t))| *t)
+        .map(|(r, (f, t))| {
+            let s = if t == 1 { "" } else { "s" };
+            format!(
+                "{}: {f} printed forms, {t} term{s} in the longest",
+                display_link(r, home)
+            )
+        })
+        .unwrap_or_else(|| "not parsed".into())
+}
+
+/// The section: how many displays it has and how many passed their checks.
+fn section_cell(in_sec: &[&EquationResult]) -> String {
+    let checked = in_sec
+        .iter()
+        .filter(|r| r.status != crate::verify::Status::Failed)
+        .count();
+    if checked == in_sec.len() {
+        format!(
+            "{} displays, all {}",
+            in_sec.len(),
+            term("checked", "checked")
+        )
+    } else {
+        format!(
+            "{} displays, {checked} {}",
+            in_sec.len(),
+            term("checked", "checked")
+        )
+    }
+}
+
+/// One derivation's column, for section `sec` about `k` (Lagrange when `None`): its heading
+/// cell and its six cells, top to bottom.
+fn column(
+    sec: &str,
+    k: Option<Corner>,
+    results: &[EquationResult],
+    home: &BTreeMap<u32, String>,
+) -> (String, [String; 6]) {
+    let name = match k {
+        Some(k) => format!("about {}", k.name()),
+        None => "Lagrange".into(),
+    };
+    let in_sec: Vec<&EquationResult> = results.iter().filter(|r| r.section == sec).collect();
+    let page = in_sec.first().and_then(|r| home.get(&r.number));
+    let link = |txt: &str| match page {
+        Some(p) => format!("<a href=\"{p}\">{txt}</a>"),
+        None => txt.to_string(),
+    };
+    let heading = format!("<th>{}</th>", link(&format!("{sec} {name}")));
+    let (forces, coord, l) = cell_needs(k);
+    let with_law: Vec<&&EquationResult> = in_sec.iter().filter(|r| r.law_step.is_some()).collect();
+    let cells = [
+        forces,
+        coord,
+        l,
+        law_cell(&with_law, home),
+        working_cell(&with_law, home),
+        section_cell(&in_sec),
+    ];
+    (heading, cells)
+}
+
 /// The page: one column per derivation.
 pub fn page(results: &[EquationResult], home: &BTreeMap<u32, String>) -> String {
     let mut head = String::from("<tr><th></th>");
@@ -201,68 +291,8 @@ pub fn page(results: &[EquationResult], home: &BTreeMap<u32, String>) -> String 
         "the section",
     ];
     for (sec, k) in DERIVATIONS {
-        let name = match k {
-            Some(k) => format!("about {}", k.name()),
-            None => "Lagrange".into(),
-        };
-        let in_sec: Vec<&EquationResult> = results.iter().filter(|r| r.section == sec).collect();
-        let page = in_sec.first().and_then(|r| home.get(&r.number));
-        let link = |txt: &str| match page {
-            Some(p) => format!("<a href=\"{p}\">{txt}</a>"),
-            None => txt.to_string(),
-        };
-        head.push_str(&format!("<th>{}</th>", link(&format!("{sec} {name}"))));
-        let (forces, coord, l) = cell_needs(k);
-        let with_law: Vec<&&EquationResult> =
-            in_sec.iter().filter(|r| r.law_step.is_some()).collect();
-        let href = |r: &EquationResult| {
-            let a = super::panel::anchor(&r.label);
-            let p = home.get(&r.number).cloned().unwrap_or_default();
-            format!("<a href=\"{p}#{a}\">{}</a>", esc(&r.label))
-        };
-        let law_cell = match with_law.first() {
-            Some(r) => format!(
-                "{}, at <code>=</code> no. {}: {}",
-                href(r),
-                r.law_step.unwrap_or(0),
-                esc(r.law.unwrap_or(""))
-            ),
-            None => "not found".into(),
-        };
-        // The working: the display with the law whose longest form has the most terms.
-        let size_cell = with_law
-            .iter()
-            .filter_map(|r| Some((r, size(crate::registry::printed_latex(r.number))?)))
-            .max_by_key(|(_, (_, t))| *t)
-            .map(|(r, (f, t))| {
-                let s = if t == 1 { "" } else { "s" };
-                format!("{}: {f} printed forms, {t} term{s} in the longest", href(r))
-            })
-            .unwrap_or_else(|| "not parsed".into());
-        let checked = in_sec
-            .iter()
-            .filter(|r| r.status != crate::verify::Status::Failed)
-            .count();
-        let cells = [
-            forces,
-            coord,
-            l,
-            law_cell,
-            size_cell,
-            if checked == in_sec.len() {
-                format!(
-                    "{} displays, all {}",
-                    in_sec.len(),
-                    term("checked", "checked")
-                )
-            } else {
-                format!(
-                    "{} displays, {checked} {}",
-                    in_sec.len(),
-                    term("checked", "checked")
-                )
-            },
-        ];
+        let (heading, cells) = column(sec, k, results, home);
+        head.push_str(&heading);
         for (row, c) in rows.iter_mut().zip(cells) {
             row.push_str(&format!("<td>{c}</td>"));
         }

@@ -104,31 +104,7 @@ pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
                 }));
             }
             Event::DisplayMath(latex) => {
-                let html = match pending.take() {
-                    Some(n) => match (hooks.display)(n, &latex) {
-                        Some(Ok(h)) => h,
-                        Some(Err(e)) => {
-                            problems.push(format!("{name}: {e}"));
-                            "<p class=\"math-error\">[this display did not typeset]</p>".into()
-                        }
-                        None => {
-                            problems.push(format!(
-                                "{name}: no verification result for {}",
-                                anchor_of(n)
-                            ));
-                            "<p class=\"math-error\">[no result for this display]</p>".into()
-                        }
-                    },
-                    None => match mathml(&latex, true) {
-                        Ok(m) => {
-                            format!("<div class=\"display\"><div class=\"formula\">{m}</div></div>")
-                        }
-                        Err(e) => {
-                            problems.push(format!("{name}: {e}"));
-                            "<p class=\"math-error\">[this display did not typeset]</p>".into()
-                        }
-                    },
-                };
+                let html = display_html(name, &latex, pending.take(), hooks, &mut problems);
                 out.push(Event::Html(format!("{html}\n").into()));
             }
             Event::InlineMath(latex) => match mathml(&latex, false) {
@@ -145,13 +121,7 @@ pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
                 id,
             }) => {
                 let (_, code) = text_until(&events, i, |e| matches!(e, Event::End(TagEnd::Link)));
-                let dest = match (hooks.link)(&dest_url, code.as_deref()) {
-                    Some(d) => CowStr::from(d),
-                    None => {
-                        problems.push(format!("{name}: the link to {dest_url} does not resolve"));
-                        dest_url
-                    }
-                };
+                let dest = book_address(name, dest_url, code.as_deref(), hooks, &mut problems);
                 out.push(Event::Start(Tag::Link {
                     link_type,
                     dest_url: dest,
@@ -169,6 +139,11 @@ pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
             other => out.push(other),
         }
     }
+    (linked_html(name, out, hooks), problems)
+}
+
+/// The page's events with references "(N)" and the glossary's terms linked, as HTML.
+fn linked_html(name: &str, out: Vec<Event>, hooks: &Hooks) -> String {
     let out = super::refs::link_references(out, hooks.equation);
     // The glossary explains these words; it does not link to itself.
     let out = if name.ends_with("glossary.md") {
@@ -178,7 +153,62 @@ pub fn render(name: &str, src: &str, hooks: &Hooks) -> (String, Vec<String>) {
     };
     let mut html_out = String::new();
     html::push_html(&mut html_out, out.into_iter());
-    (html_out, problems)
+    html_out
+}
+
+/// The HTML of a display: with `number` (a heading `(N)` precedes it) the numbered display and
+/// its panel from `hooks.display`, else the display alone in MathML. A display that cannot be
+/// typeset is a problem, shown as such on the page.
+fn display_html(
+    name: &str,
+    latex: &str,
+    number: Option<u32>,
+    hooks: &Hooks,
+    problems: &mut Vec<String>,
+) -> String {
+    match number {
+        Some(n) => match (hooks.display)(n, latex) {
+            Some(Ok(h)) => h,
+            Some(Err(e)) => {
+                problems.push(format!("{name}: {e}"));
+                "<p class=\"math-error\">[this display did not typeset]</p>".into()
+            }
+            None => {
+                problems.push(format!(
+                    "{name}: no verification result for {}",
+                    anchor_of(n)
+                ));
+                "<p class=\"math-error\">[no result for this display]</p>".into()
+            }
+        },
+        None => match mathml(latex, true) {
+            Ok(m) => {
+                format!("<div class=\"display\"><div class=\"formula\">{m}</div></div>")
+            }
+            Err(e) => {
+                problems.push(format!("{name}: {e}"));
+                "<p class=\"math-error\">[this display did not typeset]</p>".into()
+            }
+        },
+    }
+}
+
+/// The book's address of the link `dest_url` (with `code`, the inline code inside it); one that
+/// does not resolve is kept as written and is a problem.
+fn book_address<'a>(
+    name: &str,
+    dest_url: CowStr<'a>,
+    code: Option<&str>,
+    hooks: &Hooks,
+    problems: &mut Vec<String>,
+) -> CowStr<'a> {
+    match (hooks.link)(&dest_url, code) {
+        Some(d) => CowStr::from(d),
+        None => {
+            problems.push(format!("{name}: the link to {dest_url} does not resolve"));
+            dest_url
+        }
+    }
 }
 
 /// The indices of the `<p>` and `</p>` of each paragraph that holds nothing but display math:

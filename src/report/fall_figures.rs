@@ -73,79 +73,99 @@ pub fn files(scene: &Scene, o: &Outcome) -> Vec<OutFile> {
     let Some(trace) = &o.trace else { return v };
     // Every title says where the fall starts: the figures differ by θ0 (and θ̇0) alone.
     let start = start_words(scene);
-    let series = |name: &str, f: &dyn Fn(&Sample) -> Option<(f64, f64)>| Series {
-        name: name.into(),
-        points: trace.iter().filter_map(f).collect(),
-    };
     if scene.outputs.contains(&Output::Trajectory) {
-        v.push(OutFile::text("trajectory.csv", csv_rows(trace, false)));
-        let chart = Chart {
-            spec: PlotSpec {
-                title: format!("The fall: θ and θ̇ against t, {start}"),
-                x_label: "t (s)".into(),
-                y_label: "θ (rad), θ̇ (rad/s)".into(),
-                ..Default::default()
-            },
-            marks: time_marks(o),
-            ..Default::default()
-        };
-        let lines = vec![
-            series("θ (rad)", &|p| Some((p.t, p.theta))),
-            series("θ̇ (rad/s)", &|p| Some((p.t, p.rate))),
-        ];
-        v.push(OutFile::chart("trajectory.svg", chart, lines));
+        trajectory_files(&mut v, trace, o, &start);
     }
     if scene.outputs.contains(&Output::Forces) {
-        v.push(OutFile::text("forces.csv", csv_rows(trace, true)));
-        let fw = |x: fn(&Sample) -> f64| move |p: &Sample| p.forces.map(|f| (x(p), f.0));
-        let ff = |x: fn(&Sample) -> f64| move |p: &Sample| p.forces.map(|f| (x(p), f.1));
-        let wall_phase = |x: fn(&Sample) -> f64| -> Vec<(f64, f64)> {
-            trace
-                .iter()
-                .filter(|p| p.phase == 1)
-                .filter_map(|p| p.forces.map(|f| (x(p), f.0)))
-                .collect()
-        };
-        let mut t_marks = time_marks(o);
-        t_marks.extend(wall_force_zero(&wall_phase(|p| p.t)));
-        let t_chart = Chart {
-            spec: PlotSpec {
-                title: format!("Contact forces against t, {start}"),
-                x_label: "t (s)".into(),
-                y_label: "force (N)".into(),
-                hlines: vec![0.0],
-                ..Default::default()
-            },
-            marks: t_marks,
-            ..Default::default()
-        };
-        let lines = vec![
-            series("F_w, wall (N)", &fw(|p| p.t)),
-            series("F_f, floor (N)", &ff(|p| p.t)),
-        ];
-        v.push(OutFile::chart("forces_t.svg", t_chart, lines));
-        let cs = separation_cosine(scene.ladder.big_omega2(), scene.theta0, scene.rate0);
-        let mut th_marks = vec![Mark {
-            x: cs.acos(),
-            label: "cos θ = (2 cos θ0 + θ̇0²/Ω²)/3".into(),
-        }];
-        th_marks.extend(wall_force_zero(&wall_phase(|p| p.theta)));
-        let th_chart = Chart {
-            spec: PlotSpec {
-                title: format!("Contact forces against θ, {start}"),
-                x_label: "θ (rad)".into(),
-                y_label: "force (N)".into(),
-                hlines: vec![0.0],
-                ..Default::default()
-            },
-            marks: th_marks,
-            ..Default::default()
-        };
-        let lines = vec![
-            series("F_w, wall (N)", &fw(|p| p.theta)),
-            series("F_f, floor (N)", &ff(|p| p.theta)),
-        ];
-        v.push(OutFile::chart("forces_theta.svg", th_chart, lines));
+        force_files(&mut v, scene, (trace, o), &start);
     }
     v
+}
+
+/// One line of a chart: the samples of `trace` that `f` maps to a point.
+fn series(trace: &[Sample], name: &str, f: &dyn Fn(&Sample) -> Option<(f64, f64)>) -> Series {
+    Series {
+        name: name.into(),
+        points: trace.iter().filter_map(f).collect(),
+    }
+}
+
+/// `trajectory.csv` and `trajectory.svg`: θ and θ̇ against t.
+fn trajectory_files(v: &mut Vec<OutFile>, trace: &[Sample], o: &Outcome, start: &str) {
+    v.push(OutFile::text("trajectory.csv", csv_rows(trace, false)));
+    let chart = Chart {
+        spec: PlotSpec {
+            title: format!("The fall: θ and θ̇ against t, {start}"),
+            x_label: "t (s)".into(),
+            y_label: "θ (rad), θ̇ (rad/s)".into(),
+            ..Default::default()
+        },
+        marks: time_marks(o),
+        ..Default::default()
+    };
+    let lines = vec![
+        series(trace, "θ (rad)", &|p| Some((p.t, p.theta))),
+        series(trace, "θ̇ (rad/s)", &|p| Some((p.t, p.rate))),
+    ];
+    v.push(OutFile::chart("trajectory.svg", chart, lines));
+}
+
+/// `forces.csv`, `forces_t.svg` and `forces_theta.svg`: F_w and F_f against t and against θ,
+/// with where the wall force reaches zero.
+fn force_files(
+    v: &mut Vec<OutFile>,
+    scene: &Scene,
+    (trace, o): (&[Sample], &Outcome),
+    start: &str,
+) {
+    v.push(OutFile::text("forces.csv", csv_rows(trace, true)));
+    let fw = |x: fn(&Sample) -> f64| move |p: &Sample| p.forces.map(|f| (x(p), f.0));
+    let ff = |x: fn(&Sample) -> f64| move |p: &Sample| p.forces.map(|f| (x(p), f.1));
+    let wall_phase = |x: fn(&Sample) -> f64| -> Vec<(f64, f64)> {
+        trace
+            .iter()
+            .filter(|p| p.phase == 1)
+            .filter_map(|p| p.forces.map(|f| (x(p), f.0)))
+            .collect()
+    };
+    let mut t_marks = time_marks(o);
+    t_marks.extend(wall_force_zero(&wall_phase(|p| p.t)));
+    let t_chart = Chart {
+        spec: PlotSpec {
+            title: format!("Contact forces against t, {start}"),
+            x_label: "t (s)".into(),
+            y_label: "force (N)".into(),
+            hlines: vec![0.0],
+            ..Default::default()
+        },
+        marks: t_marks,
+        ..Default::default()
+    };
+    let lines = vec![
+        series(trace, "F_w, wall (N)", &fw(|p| p.t)),
+        series(trace, "F_f, floor (N)", &ff(|p| p.t)),
+    ];
+    v.push(OutFile::chart("forces_t.svg", t_chart, lines));
+    let cs = separation_cosine(scene.ladder.big_omega2(), scene.theta0, scene.rate0);
+    let mut th_marks = vec![Mark {
+        x: cs.acos(),
+        label: "cos θ = (2 cos θ0 + θ̇0²/Ω²)/3".into(),
+    }];
+    th_marks.extend(wall_force_zero(&wall_phase(|p| p.theta)));
+    let th_chart = Chart {
+        spec: PlotSpec {
+            title: format!("Contact forces against θ, {start}"),
+            x_label: "θ (rad)".into(),
+            y_label: "force (N)".into(),
+            hlines: vec![0.0],
+            ..Default::default()
+        },
+        marks: th_marks,
+        ..Default::default()
+    };
+    let lines = vec![
+        series(trace, "F_w, wall (N)", &fw(|p| p.theta)),
+        series(trace, "F_f, floor (N)", &ff(|p| p.theta)),
+    ];
+    v.push(OutFile::chart("forces_theta.svg", th_chart, lines));
 }

@@ -47,85 +47,98 @@ fn num(x: f64) -> Value {
 /// The JSON object of the outputs the scene asked for (`separation.angle`, `flat.time`, ...).
 pub fn to_json(scene: &Scene, o: &Outcome) -> Value {
     let mut m = Map::new();
-    let sep = o.separation;
     for out in &scene.outputs {
-        match out {
-            Output::SeparationAngle => insert(
-                &mut m,
-                "separation.angle",
-                sep.map_or(Value::Null, |s| num(s.angle)),
-            ),
-            Output::SeparationTime => insert(
-                &mut m,
-                "separation.time",
-                sep.map_or(Value::Null, |s| num(s.time)),
-            ),
-            Output::SeparationRate => insert(
-                &mut m,
-                "separation.rate",
-                sep.map_or(Value::Null, |s| num(s.rate)),
-            ),
-            Output::FlatTime => insert(
-                &mut m,
-                "flat.time",
-                o.flat.map_or(Value::Null, |f| num(f.time)),
-            ),
-            Output::FlatState => {
-                if let Some(f) = o.flat {
-                    insert(&mut m, "flat.rate", num(f.rate));
-                    insert(&mut m, "flat.centre_x", num(f.centre_x));
-                    insert(&mut m, "flat.centre_velocity_x", num(f.centre_velocity_x));
-                    insert(&mut m, "flat.centre_velocity_y", num(f.centre_velocity_y));
-                }
-            }
-            Output::FloorForceMin => insert(
-                &mut m,
-                "floor_phase.floor_force_min",
-                o.floor_report
-                    .map_or(Value::Null, |r| num(r.floor_force_min)),
-            ),
-            Output::TopClearanceMin => {
-                let v = o
-                    .floor_report
-                    .map_or(Value::Null, |r| num(r.top_clearance_min));
-                insert(&mut m, "floor_phase.top_clearance_min", v);
-            }
-            Output::MomentumError => insert(
-                &mut m,
-                "floor_phase.momentum_error",
-                o.momentum_error.map_or(Value::Null, num),
-            ),
-            Output::EnergyError => insert(
-                &mut m,
-                "energy_error",
-                o.energy_error.map_or(Value::Null, num),
-            ),
-            Output::FinalState => {
-                insert(&mut m, "final.time", num(o.last.0));
-                insert(&mut m, "final.angle", num(o.last.1));
-                insert(&mut m, "final.rate", num(o.last.2));
-            }
-            Output::RhsEvals => {
-                let w = &o.work;
-                let floor = w.floor.map_or(0, |s| s.rhs_evals);
-                insert(&mut m, "work.rhs_evals", json!(w.wall.rhs_evals + floor));
-                insert(
-                    &mut m,
-                    "work.steps",
-                    json!(w.wall.steps + w.floor.map_or(0, |s| s.steps)),
-                );
-                insert(&mut m, "work.force_evals", json!(w.force_evals));
-            }
-            Output::Trajectory | Output::Forces => {
-                insert(
-                    &mut m,
-                    &format!("{}.samples", out.name()),
-                    json!(o.work.stored_samples),
-                );
-            }
+        insert_output(&mut m, out, o);
+    }
+    insert_lying_flat(&mut m, o);
+    Value::Object(m)
+}
+
+/// The JSON fields of one output `out` of the run `o`; `null` for a result the run did not
+/// reach.
+fn insert_output(m: &mut Map<String, Value>, out: &Output, o: &Outcome) {
+    let sep = o.separation;
+    match out {
+        Output::SeparationAngle => insert(
+            m,
+            "separation.angle",
+            sep.map_or(Value::Null, |s| num(s.angle)),
+        ),
+        Output::SeparationTime => insert(
+            m,
+            "separation.time",
+            sep.map_or(Value::Null, |s| num(s.time)),
+        ),
+        Output::SeparationRate => insert(
+            m,
+            "separation.rate",
+            sep.map_or(Value::Null, |s| num(s.rate)),
+        ),
+        Output::FlatTime => insert(m, "flat.time", o.flat.map_or(Value::Null, |f| num(f.time))),
+        Output::FlatState => insert_flat_state(m, o),
+        Output::FloorForceMin => insert(
+            m,
+            "floor_phase.floor_force_min",
+            o.floor_report
+                .map_or(Value::Null, |r| num(r.floor_force_min)),
+        ),
+        Output::TopClearanceMin => {
+            let v = o
+                .floor_report
+                .map_or(Value::Null, |r| num(r.top_clearance_min));
+            insert(m, "floor_phase.top_clearance_min", v);
+        }
+        Output::MomentumError => insert(
+            m,
+            "floor_phase.momentum_error",
+            o.momentum_error.map_or(Value::Null, num),
+        ),
+        Output::EnergyError => insert(m, "energy_error", o.energy_error.map_or(Value::Null, num)),
+        Output::FinalState => insert_final_state(m, o),
+        Output::RhsEvals => insert_work(m, o),
+        Output::Trajectory | Output::Forces => {
+            insert(
+                m,
+                &format!("{}.samples", out.name()),
+                json!(o.work.stored_samples),
+            );
         }
     }
-    // A run past flat went on lying flat (`sim::impact`): the JSON says how, never silently.
+}
+
+/// `flat.*`: the state when the ladder lies flat, when it got there.
+fn insert_flat_state(m: &mut Map<String, Value>, o: &Outcome) {
+    if let Some(f) = o.flat {
+        insert(m, "flat.rate", num(f.rate));
+        insert(m, "flat.centre_x", num(f.centre_x));
+        insert(m, "flat.centre_velocity_x", num(f.centre_velocity_x));
+        insert(m, "flat.centre_velocity_y", num(f.centre_velocity_y));
+    }
+}
+
+/// `final.*`: the time and state at the end.
+fn insert_final_state(m: &mut Map<String, Value>, o: &Outcome) {
+    insert(m, "final.time", num(o.last.0));
+    insert(m, "final.angle", num(o.last.1));
+    insert(m, "final.rate", num(o.last.2));
+}
+
+/// `work.*`: the evaluation counters of both phases.
+fn insert_work(m: &mut Map<String, Value>, o: &Outcome) {
+    let w = &o.work;
+    let floor = w.floor.map_or(0, |s| s.rhs_evals);
+    insert(m, "work.rhs_evals", json!(w.wall.rhs_evals + floor));
+    insert(
+        m,
+        "work.steps",
+        json!(w.wall.steps + w.floor.map_or(0, |s| s.steps)),
+    );
+    insert(m, "work.force_evals", json!(w.force_evals));
+}
+
+/// `lying_flat`: a run past flat went on lying flat (`sim::impact`); the JSON says how, never
+/// silently.
+fn insert_lying_flat(m: &mut Map<String, Value>, o: &Outcome) {
     if let Some(sl) = o.slide {
         m.insert(
             "lying_flat".into(),
@@ -138,7 +151,6 @@ pub fn to_json(scene: &Scene, o: &Outcome) -> Value {
             }),
         );
     }
-    Value::Object(m)
 }
 
 /// The human-readable summary, ending with what was computed. Numbers by significant digits

@@ -66,6 +66,20 @@ pub trait Event<const N: usize> {
     }
 }
 
+/// Where [`newton_in_bracket`] starts: the secant's root (regula falsi) when it lies inside
+/// the bracket (on a smooth event it is much nearer the root than either end, which saves
+/// Newton iterations), else the end with the smaller value.
+fn first_iterate(a: f64, b: f64, fa: f64, fb: f64) -> f64 {
+    let secant = a - fa * ((b - a) / (fb - fa));
+    if secant > a.min(b) && secant < a.max(b) {
+        secant
+    } else if fa.abs() < fb.abs() {
+        a
+    } else {
+        b
+    }
+}
+
 /// A root of `f` in the bracket `[a, b]` (`f(a)`, `f(b)` of opposite signs or one zero) by
 /// Newton's method safeguarded by bisection, with `f` returning the value and its derivative.
 /// Stops when the Newton correction is within 8 ulps of the iterate (rounding noise), when two
@@ -90,16 +104,7 @@ pub fn newton_in_bracket(
     // a correction within the noise trusts the derivative: a slope k times too steep stops
     // within k times the noise.)
     let (mut lo, mut hi) = (a, b);
-    // Start at the secant's root (regula falsi) when it lies inside: on a smooth event it is
-    // much nearer the root than either end, which saves Newton iterations.
-    let secant = a - fa * ((b - a) / (fb - fa));
-    let mut t = if secant > a.min(b) && secant < a.max(b) {
-        secant
-    } else if fa.abs() < fb.abs() {
-        a
-    } else {
-        b
-    };
+    let mut t = first_iterate(a, b, fa, fb);
     let (mut dx, mut dx_old) = ((b - a).abs(), (b - a).abs());
     // The previous iteration's Newton correction (None after a bisection or at the start).
     let mut last_newton: Option<f64> = None;

@@ -103,10 +103,7 @@ pub fn integrate_phase<const N: usize, S: Ode<N>, St: Stepper<N>, O: Observer<N>
     let mut prev = [0.0; MAX_EVENTS];
     for (i, ev) in events.iter().enumerate() {
         let (t, y) = (stepper.t(), stepper.y());
-        prev[i] = match stepper.trig() {
-            Some(trig) => ev.value_with_trig(t, &y, trig),
-            None => ev.value(t, &y),
-        };
+        prev[i] = value_at(*ev, stepper, t, &y);
     }
     let mut steps = 0u64;
     loop {
@@ -120,41 +117,9 @@ pub fn integrate_phase<const N: usize, S: Ode<N>, St: Stepper<N>, O: Observer<N>
         let t0 = stepper.t();
         stepper.step(sys, t_end)?;
         let (t1, y1) = (stepper.t(), stepper.y());
-        // The earliest crossing among the events: (root time, event index).
-        let mut first: Option<(f64, usize)> = None;
-        for (i, ev) in events.iter().enumerate() {
-            let v1 = match stepper.trig() {
-                Some(trig) => ev.value_with_trig(t1, &y1, trig),
-                None => ev.value(t1, &y1),
-            };
-            let bracket = find_bracket(sys, stepper, *ev, (t0, prev[i]), (t1, v1));
-            prev[i] = v1;
-            if let Some((a, fa, b, fb)) = bracket {
-                if first.is_some_and(|(r, _)| r <= a) {
-                    continue;
-                }
-                let root = locate_root(sys, stepper, *ev, (a, fa), (b, fb));
-                if first.is_none_or(|(r, _)| root < r) {
-                    first = Some((root, i));
-                }
-            }
-        }
+        let first = earliest_crossing(sys, stepper, events, &mut prev, (t0, t1, &y1));
         let t_stop = first.map_or(t1, |(r, _)| r);
-        let k = observer.samples_per_step();
-        if k > 0 {
-            stepper.prepare_dense(sys);
-            for j in 1..=k {
-                let tj = t0 + (t1 - t0) * j as f64 / (k + 1) as f64;
-                if tj < t_stop {
-                    observer.observe(tj, &stepper.interpolate(tj));
-                }
-            }
-        }
-        if observer.wants_steps() {
-            stepper.prepare_dense(sys);
-            let dense = |t: f64| stepper.interpolate(t);
-            observer.step(t0, t_stop, &dense);
-        }
+        observe_step(sys, stepper, observer, t0, t1, t_stop);
         if let Some((root, i)) = first {
             let y = stepper.interpolate(root);
             observer.observe(root, &y);
@@ -172,6 +137,74 @@ pub fn integrate_phase<const N: usize, S: Ode<N>, St: Stepper<N>, O: Observer<N>
                 event: None,
             });
         }
+    }
+}
+
+/// Event `ev`'s value at `(t, y)`, the stepper's state, given the (sin, cos) the stepper
+/// carries when it does.
+fn value_at<const N: usize, St: Stepper<N>>(
+    ev: &dyn Event<N>,
+    stepper: &St,
+    t: f64,
+    y: &[f64; N],
+) -> f64 {
+    match stepper.trig() {
+        Some(trig) => ev.value_with_trig(t, y, trig),
+        None => ev.value(t, y),
+    }
+}
+
+/// The earliest crossing among the events over the step from `t0` to `(t1, y1)`: (root time,
+/// event index). `prev` holds each event's value at `t0` and is moved on to `t1`.
+fn earliest_crossing<const N: usize, S: Ode<N>, St: Stepper<N>>(
+    sys: &S,
+    stepper: &mut St,
+    events: &[&dyn Event<N>],
+    prev: &mut [f64; MAX_EVENTS],
+    (t0, t1, y1): (f64, f64, &[f64; N]),
+) -> Option<(f64, usize)> {
+    let mut first: Option<(f64, usize)> = None;
+    for (i, ev) in events.iter().enumerate() {
+        let v1 = value_at(*ev, stepper, t1, y1);
+        let bracket = find_bracket(sys, stepper, *ev, (t0, prev[i]), (t1, v1));
+        prev[i] = v1;
+        if let Some((a, fa, b, fb)) = bracket {
+            if first.is_some_and(|(r, _)| r <= a) {
+                continue;
+            }
+            let root = locate_root(sys, stepper, *ev, (a, fa), (b, fb));
+            if first.is_none_or(|(r, _)| root < r) {
+                first = Some((root, i));
+            }
+        }
+    }
+    first
+}
+
+/// Show the observer the step from `t0` to `t1`, cut at `t_stop`: its dense samples before
+/// `t_stop` and the step's interpolant, when it asks for them.
+fn observe_step<const N: usize, S: Ode<N>, St: Stepper<N>, O: Observer<N>>(
+    sys: &S,
+    stepper: &mut St,
+    observer: &mut O,
+    t0: f64,
+    t1: f64,
+    t_stop: f64,
+) {
+    let k = observer.samples_per_step();
+    if k > 0 {
+        stepper.prepare_dense(sys);
+        for j in 1..=k {
+            let tj = t0 + (t1 - t0) * j as f64 / (k + 1) as f64;
+            if tj < t_stop {
+                observer.observe(tj, &stepper.interpolate(tj));
+            }
+        }
+    }
+    if observer.wants_steps() {
+        stepper.prepare_dense(sys);
+        let dense = |t: f64| stepper.interpolate(t);
+        observer.step(t0, t_stop, &dense);
     }
 }
 

@@ -47,6 +47,8 @@
 //! stops short of the end it asked for is a failed run (the command exits 1), counted by the
 //! campaign, not here.
 
+/// The watchdog lived here first; it has its own file now.
+pub use super::watchdog::Watchdog;
 use crate::sim::complement::complement;
 use crate::sim::exact::flat::{floor_duration, floor_duration_from};
 use crate::sim::exact::near_flat::near_flat;
@@ -206,15 +208,8 @@ pub fn out_of_tolerance(scene: &Scene, o: &Outcome) -> Vec<Problem> {
     };
     let n_wall = o.work.wall.steps as f64;
     if let ContactModel::Penalty { stiffness, damping } = scene.contact {
-        let c = Contact::from_dimensional(&scene.ladder, stiffness, damping);
-        let rigid = cs.clamp(-1.0, 1.0).acos();
-        let bound = separation_bound(c.kappa, rigid, o.work.wall.steps, tau);
-        check(
-            &mut bad,
-            "separation_angle",
-            (sep.angle - rigid).abs(),
-            bound,
-        );
+        let springs = (stiffness, damping);
+        check_penalty(&mut bad, scene, springs, (sep.angle, cs), o, tau);
         return bad;
     }
     let e_wall = 10.0 * n_wall * (tau + U);
@@ -262,6 +257,72 @@ pub fn out_of_tolerance(scene: &Scene, o: &Outcome) -> Vec<Problem> {
         (sep.time / unit - ts_ref).abs(),
         ts_bound,
     );
+    let wall = WallPhase {
+        unit,
+        tau,
+        r0,
+        cs,
+        n_wall,
+        theta_s,
+        rate_s,
+        ts_ref,
+        ts_bound,
+    };
+    check_whole_fall(&mut bad, scene, o, &wall);
+    bad
+}
+
+/// A penalty run's separation angle against the rigid one, cos θ_s = `cs`, within the bound
+/// of `separation_bound` for its springs (stiffness, damping) and its steps at local error `tau`.
+fn check_penalty(
+    bad: &mut Vec<Problem>,
+    scene: &Scene,
+    (stiffness, damping): (f64, f64),
+    (angle, cs): (f64, f64),
+    o: &Outcome,
+    tau: f64,
+) {
+    let c = Contact::from_dimensional(&scene.ladder, stiffness, damping);
+    let rigid = cs.clamp(-1.0, 1.0).acos();
+    let bound = separation_bound(c.kappa, rigid, o.work.wall.steps, tau);
+    check(bad, "separation_angle", (angle - rigid).abs(), bound);
+}
+
+/// What the checks of the wall phase leave to those of the whole fall (times in units of
+/// `unit` = √(l/g) s, rates in 1/√(l/g)).
+#[derive(Clone, Copy)]
+struct WallPhase {
+    unit: f64,
+    /// The local error per step.
+    tau: f64,
+    /// θ̇0 scaled.
+    r0: f64,
+    /// cos θ_s of the separation, from the start.
+    cs: f64,
+    /// Steps of the wall phase.
+    n_wall: f64,
+    /// θ_s and θ̇_s at the separation.
+    theta_s: f64,
+    rate_s: f64,
+    /// The reference separation time and the bound on the run's.
+    ts_ref: f64,
+    ts_bound: f64,
+}
+
+/// The flat time, the energy error and the momentum balance of a whole fall, each within the
+/// error of all its steps.
+fn check_whole_fall(bad: &mut Vec<Problem>, scene: &Scene, o: &Outcome, w: &WallPhase) {
+    let WallPhase {
+        unit,
+        tau,
+        r0,
+        cs,
+        n_wall,
+        theta_s,
+        rate_s,
+        ts_ref,
+        ts_bound,
+    } = *w;
     let n_all = n_wall + o.work.floor.map_or(0, |s| s.steps) as f64;
     let e_all = 10.0 * n_all * (tau + U);
     let rate_end = o.flat.map_or(o.last.2, |f| f.rate) * unit;
@@ -279,72 +340,18 @@ pub fn out_of_tolerance(scene: &Scene, o: &Outcome) -> Vec<Problem> {
             + e_all * (theta_s.max(1.0) / rate_s + 2.0 / rate_f)
             + 16.0 * U * tf_ref
             + 1e-14 * d;
-        check(&mut bad, "flat_time", (f.time / unit - tf_ref).abs(), bound);
+        check(bad, "flat_time", (f.time / unit - tf_ref).abs(), bound);
     }
     if let Some(e) = o.energy_error {
         let bound = energy_slip + 16.0 * U * (1.0 + w_max * w_max);
-        check(&mut bad, "energy_error", e, bound);
+        check(bad, "energy_error", e, bound);
     }
     if let Some(p) = o.momentum_error {
         check(
-            &mut bad,
+            bad,
             "momentum_error",
             p,
             4.0 * (e_all * w_max.max(1.0) + 4.0 * U),
         );
-    }
-    bad
-}
-
-/// The campaign's per-scene watchdog: runs each job on a thread of its own and stops waiting
-/// for one still running after its time limit, so that a scene that hangs (an endless loop no
-/// step count sees, as `sim::minimum::minimum_on` once had at t ≈ 2e15) is counted over budget
-/// and named, not a stalled campaign. The job it gave up on is left to finish on its own
-/// thread (Rust cannot stop a thread); a new thread takes the next job, and a result that
-/// comes late is dropped with the old channel.
-pub struct Watchdog<J, R> {
-    work: std::sync::Arc<dyn Fn(J) -> R + Send + Sync>,
-    jobs: std::sync::mpsc::Sender<J>,
-    results: std::sync::mpsc::Receiver<R>,
-}
-
-impl<J: Send + 'static, R: Send + 'static> Watchdog<J, R> {
-    /// A watchdog over `work`, which should not panic (the campaign catches its panics).
-    pub fn new(work: impl Fn(J) -> R + Send + Sync + 'static) -> Self {
-        let work: std::sync::Arc<dyn Fn(J) -> R + Send + Sync> = std::sync::Arc::new(work);
-        let (jobs, results) = Self::spawn(&work);
-        Watchdog {
-            work,
-            jobs,
-            results,
-        }
-    }
-
-    fn spawn(
-        work: &std::sync::Arc<dyn Fn(J) -> R + Send + Sync>,
-    ) -> (std::sync::mpsc::Sender<J>, std::sync::mpsc::Receiver<R>) {
-        let (jobs, job_rx) = std::sync::mpsc::channel::<J>();
-        let (result_tx, results) = std::sync::mpsc::channel();
-        let work = work.clone();
-        std::thread::spawn(move || {
-            for job in job_rx {
-                if result_tx.send(work(job)).is_err() {
-                    break;
-                }
-            }
-        });
-        (jobs, results)
-    }
-
-    /// `work(job)`, or `None` if it has not returned within `limit` (or its thread died).
-    pub fn run(&mut self, job: J, limit: std::time::Duration) -> Option<R> {
-        let answer = match self.jobs.send(job) {
-            Ok(()) => self.results.recv_timeout(limit).ok(),
-            Err(_) => None,
-        };
-        if answer.is_none() {
-            (self.jobs, self.results) = Self::spawn(&self.work);
-        }
-        answer
     }
 }

@@ -28,6 +28,7 @@
 //! the field they name.
 
 pub mod judge;
+pub mod watchdog;
 
 use crate::sim::integrators::{any_model_names, is_adaptive, names};
 use crate::sim::scene::output::Output;
@@ -297,6 +298,23 @@ fn draw_among(seed: u64, index: u64, newcomers: bool) -> String {
         first.to_vec()
     };
     let method = pick_method(seed, index, first, pick, &current);
+    contact_lines(&mut text, rng, penalty, (m, l, g));
+    let _ = write!(text, "[integrator]\nmethod = \"{method}\"\n");
+    control_line(&mut text, rng, method, unit);
+    let end = end_lines(&mut text, rng, penalty || method == "exact", unit);
+    outputs_line(&mut text, rng, penalty, method, end);
+    text
+}
+
+/// The `[contact]` model of a drawn scene: rigid, or penalty springs with κ = k l/(m g) drawn
+/// over 1..1e12 and, half the time, a damping γ √κ with γ drawn over 1e-3..10.
+fn contact_lines(
+    text: &mut String,
+    rng: &mut ChaCha8Rng,
+    penalty: bool,
+    (m, l, g): (f64, f64, f64),
+) {
+    let unit = (l / g).sqrt();
     if penalty {
         let kappa = exp10(rng, 0.0, 12.0);
         let gamma = match rng.gen_bool(0.5) {
@@ -304,29 +322,38 @@ fn draw_among(seed: u64, index: u64, newcomers: bool) -> String {
             false => exp10(rng, -3.0, 1.0) * kappa.sqrt(),
         };
         let _ = write!(
-            text,
+            *text,
             "model = \"penalty\"\nstiffness = {}\ndamping = {}\n",
             num(kappa * (m * (g / l))),
             num(gamma * m / unit)
         );
     } else {
-        text += "model = \"rigid\"\n";
+        *text += "model = \"rigid\"\n";
     }
-    let _ = write!(text, "[integrator]\nmethod = \"{method}\"\n");
+}
+
+/// The integrator's control: none for "exact", a tolerance over 1e-16..0.1 for an adaptive
+/// method, else a step over 1e-6..1 √(l/g), given in s or scaled half the time.
+fn control_line(text: &mut String, rng: &mut ChaCha8Rng, method: &str, unit: f64) {
     match method {
         "exact" => {}
         _ if is_adaptive(method) => {
-            let _ = writeln!(text, "tolerance = {}", num(exp10(rng, -16.0, -1.0)));
+            let _ = writeln!(*text, "tolerance = {}", num(exp10(rng, -16.0, -1.0)));
         }
         _ => {
             let h = exp10(rng, -6.0, 0.0);
             let _ = match rng.gen_bool(0.5) {
-                true => writeln!(text, "scaled_step = {}", num(h)),
-                false => writeln!(text, "step = {}", num(h * unit)),
+                true => writeln!(*text, "scaled_step = {}", num(h)),
+                false => writeln!(*text, "step = {}", num(h * unit)),
             };
         }
     }
-    let end = if penalty || method == "exact" {
+}
+
+/// The `[end]` of a drawn scene: the separation when `separation_only`, else the separation,
+/// flat or a time over 1e-3..1e4 √(l/g) (in s or scaled half the time).
+fn end_lines(text: &mut String, rng: &mut ChaCha8Rng, separation_only: bool, unit: f64) -> End {
+    let end = if separation_only {
         End::Separation
     } else {
         match rng.gen_range(0..3) {
@@ -335,17 +362,23 @@ fn draw_among(seed: u64, index: u64, newcomers: bool) -> String {
             _ => End::Time(exp10(rng, -3.0, 4.0)),
         }
     };
-    text += "[end]\n";
+    *text += "[end]\n";
     match end {
-        End::Separation => text += "at = \"separation\"\n",
-        End::Flat => text += "at = \"flat\"\n",
+        End::Separation => *text += "at = \"separation\"\n",
+        End::Flat => *text += "at = \"flat\"\n",
         End::Time(t) => {
             let _ = match rng.gen_bool(0.5) {
-                true => write!(text, "at = \"time\"\nscaled_time = {}\n", num(t)),
-                false => write!(text, "at = \"time\"\ntime = {}\n", num(t * unit)),
+                true => write!(*text, "at = \"time\"\nscaled_time = {}\n", num(t)),
+                false => write!(*text, "at = \"time\"\ntime = {}\n", num(t * unit)),
             };
         }
     }
+    end
+}
+
+/// The `[outputs]` of a drawn scene: each output the run can produce with probability 0.3,
+/// at least one.
+fn outputs_line(text: &mut String, rng: &mut ChaCha8Rng, penalty: bool, method: &str, end: End) {
     let candidates: Vec<&str> = OUTPUTS
         .iter()
         .copied()
@@ -361,6 +394,5 @@ fn draw_among(seed: u64, index: u64, newcomers: bool) -> String {
         want.push(candidates[rng.gen_range(0..candidates.len())]);
     }
     let list: Vec<String> = want.iter().map(|w| format!("\"{w}\"")).collect();
-    let _ = writeln!(text, "[outputs]\nwant = [{}]", list.join(", "));
-    text
+    let _ = writeln!(*text, "[outputs]\nwant = [{}]", list.join(", "));
 }

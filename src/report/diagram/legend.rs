@@ -6,27 +6,47 @@ use crate::report::diagram::{arm_symbol, component_torques, length_symbol, Diagr
 use crate::report::svg_text::{n3, subscript, FORCE_COLOURS};
 use std::fmt::Write;
 
-/// The legend column: the state, each force with its arm and torque about P, the total.
-pub(in crate::report) fn legend(out: &mut String, d: &Diagram, left: f64) {
-    let (th, rate, acc) = d.state;
-    let x = left + 10.0;
-    let mut y = 28.0;
-    let mut put = |out: &mut String, text: &str, colour: &str, size: u32, dy: f64| {
+/// The legend's column of lines: where the next one goes.
+struct Column {
+    x: f64,
+    y: f64,
+}
+
+impl Column {
+    /// A line of `text` at `size` px, then `dy` px down to the next.
+    fn put(&mut self, out: &mut String, text: &str, colour: &str, size: u32, dy: f64) {
+        let (x, y) = (self.x, self.y);
         let _ = writeln!(
             out,
             "<text x=\"{x:.1}\" y=\"{y:.1}\" font-size=\"{size}\" fill=\"{colour}\" xml:space=\"preserve\">{}</text>",
             subscript(text, size)
         );
-        y += dy;
+        self.y += dy;
+    }
+}
+
+/// The legend column: the state, each force with its arm and torque about P, the total.
+pub(in crate::report) fn legend(out: &mut String, d: &Diagram, left: f64) {
+    let mut col = Column {
+        x: left + 10.0,
+        y: 28.0,
     };
-    put(
+    state_lines(&mut col, out, d);
+    force_lines(&mut col, out, d);
+    totals_and_key(&mut col, out, d);
+}
+
+/// The heading, the state θ, θ̇, θ̈, m and l, and where P is when it is not a corner.
+fn state_lines(col: &mut Column, out: &mut String, d: &Diagram) {
+    let (th, rate, acc) = d.state;
+    col.put(
         out,
         &format!("Torque analysis about {} (red ring)", d.point),
         "black",
         18,
         26.0,
     );
-    put(
+    col.put(
         out,
         &format!(
             "θ = {:.1}°, θ̇ = {} s⁻¹, θ̈ = {} s⁻²",
@@ -38,7 +58,7 @@ pub(in crate::report) fn legend(out: &mut String, d: &Diagram, left: f64) {
         15,
         20.0,
     );
-    put(
+    col.put(
         out,
         &format!("m = {} kg, l = {} m", d.mass_length.0, d.mass_length.1),
         "black",
@@ -46,8 +66,8 @@ pub(in crate::report) fn legend(out: &mut String, d: &Diagram, left: f64) {
         if d.description.is_some() { 20.0 } else { 30.0 },
     );
     if let Some(what) = &d.description {
-        put(out, what, "#D00", 15, 20.0);
-        put(
+        col.put(out, what, "#D00", 15, 20.0);
+        col.put(
             out,
             &format!("at ({}, {}) m", n3(d.p.0), n3(d.p.1)),
             "#D00",
@@ -55,9 +75,14 @@ pub(in crate::report) fn legend(out: &mut String, d: &Diagram, left: f64) {
             30.0,
         );
     }
+}
+
+/// Each force: its components and point, its arm and torque about P (by components when it is
+/// slanted), and for the coordinate force the acceleration it stands for.
+fn force_lines(col: &mut Column, out: &mut String, d: &Diagram) {
     for (i, a) in d.arrows.iter().enumerate() {
         let colour = FORCE_COLOURS[i % FORCE_COLOURS.len()];
-        put(
+        col.put(
             out,
             &format!(
                 "{} = ({}, {}) N at ({}, {}) m",
@@ -76,7 +101,7 @@ pub(in crate::report) fn legend(out: &mut String, d: &Diagram, left: f64) {
             None => n3(a.arm),
         };
         let split = component_torques(d, a);
-        put(
+        col.put(
             out,
             &format!(
                 "    arm {arm} m, torque about {} {} N·m",
@@ -88,15 +113,19 @@ pub(in crate::report) fn legend(out: &mut String, d: &Diagram, left: f64) {
             if split.is_some() { 20.0 } else { 28.0 },
         );
         if let Some(terms) = split {
-            put(out, &by_components(d, &terms), colour, 15, 28.0);
+            col.put(out, &by_components(d, &terms), colour, 15, 28.0);
         }
         if a.symbol == format!("F_{}", d.point) {
             if let Some(words) = super::marks::acceleration_words(d) {
-                put(out, &format!("    {words}"), colour, 14, 24.0);
+                col.put(out, &format!("    {words}"), colour, 14, 24.0);
             }
         }
     }
-    put(
+}
+
+/// The total torque, the model's dL/dt, and the key to the drawing.
+fn totals_and_key(col: &mut Column, out: &mut String, d: &Diagram) {
+    col.put(
         out,
         &format!(
             "total torque about {}: {} N·m",
@@ -107,7 +136,7 @@ pub(in crate::report) fn legend(out: &mut String, d: &Diagram, left: f64) {
         15,
         20.0,
     );
-    put(
+    col.put(
         out,
         &format!(
             "dL{}_{}/dt of the model (AD): {} N·m",
@@ -120,28 +149,28 @@ pub(in crate::report) fn legend(out: &mut String, d: &Diagram, left: f64) {
         15,
         30.0,
     );
-    put(
+    col.put(
         out,
         "arrows: forces to scale; dashed: lever arm from P,",
         "#444",
         14,
         18.0,
     );
-    put(
+    col.put(
         out,
         "perpendicular to the dotted line of action;",
         "#444",
         14,
         18.0,
     );
-    put(
+    col.put(
         out,
         "torque > 0 turns counter-clockwise (+ẑ);",
         "#444",
         14,
         18.0,
     );
-    put(
+    col.put(
         out,
         "the law of motion: total torque = dL/dt, on the motion only",
         "#444",

@@ -39,36 +39,10 @@ pub fn scale_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
     );
     let reference = scaled(&unit_scene);
     let mut cases = Vec::new();
-    let (lo, hi) = (1e-30, 1e30);
-    let mut corners = Vec::new();
-    for m in [lo, hi] {
-        for l in [lo, hi] {
-            for g in [lo, hi] {
-                corners.push((m, l, g, false));
-            }
-        }
-    }
-    corners.extend([
-        (1.0, hi, lo, false),
-        (1.0, lo, hi, false),
-        (75.0, 2.0, 9.81, false),
-        (hi, 1.0, 1.0, false),
-        (lo, hi, lo, true),
-        (hi, lo, hi, true),
-    ]);
-    let penalty = |sc: &mut Scene| {
-        let l = sc.ladder;
-        // κ = k l/(m g) = 1e4, formed as (1e4 m)(g/l) to stay within range; κ tol = 1e-9
-        // keeps an explicit method accurate (see `stability::stiff`).
-        sc.contact = ContactModel::Penalty {
-            stiffness: 1e4 * l.m * (l.g / l.l),
-            damping: 0.0,
-        };
-    };
     let mut unit_penalty = unit_scene.clone();
     penalty(&mut unit_penalty);
     let penalty_reference = scaled(&unit_penalty);
-    for (m, l, g, with_penalty) in corners {
+    for (m, l, g, with_penalty) in corners() {
         tick("scale", 1);
         let ladder = Ladder { m, l, g };
         let mut c = blank(
@@ -88,27 +62,72 @@ pub fn scale_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
         let t = Instant::now();
         let got = scaled(&sc);
         c.seconds = t.elapsed().as_secs_f64();
-        match (reference, &got) {
-            (Ok((r, ..)), Ok((v, steps, rhs))) => {
-                let (steps, rhs) = (*steps, *rhs);
-                (c.steps, c.rhs_evals) = (steps, rhs);
-                c.value = format!("θ_s = {:.15}, t_s/√(l/g) = {:.15}", v[0], v[1]);
-                let err = (0..4)
-                    .map(|i| ((v[i] - r[i]) / r[i]).abs())
-                    .fold(0.0, f64::max);
-                // Rigid: the 1e-12. Penalty: κ = (k/m)(l/g) and θ̇0 √(l/g) are rounded
-                // differently at each scale, which changes the adaptive step sequence; both runs
-                // then agree to their integration error, 2 × 10 N τ.
-                let bound = if with_penalty {
-                    (20.0 * steps as f64 * TOL).max(1e-12)
-                } else {
-                    1e-12
-                };
-                c.judge(err, bound);
-            }
-            (Err(e), _) | (_, Err(e)) => c.reason = e.clone(),
-        }
+        judge_scaled(&mut c, reference, &got, with_penalty);
         cases.push(c);
     }
     cases
+}
+
+/// The corners of the scale cube m, l, g ∈ {1e-30, 1e30}, then a few mixed scales; the last
+/// two with penalty springs (true).
+fn corners() -> Vec<(f64, f64, f64, bool)> {
+    let (lo, hi) = (1e-30, 1e30);
+    let mut corners = Vec::new();
+    for m in [lo, hi] {
+        for l in [lo, hi] {
+            for g in [lo, hi] {
+                corners.push((m, l, g, false));
+            }
+        }
+    }
+    corners.extend([
+        (1.0, hi, lo, false),
+        (1.0, lo, hi, false),
+        (75.0, 2.0, 9.81, false),
+        (hi, 1.0, 1.0, false),
+        (lo, hi, lo, true),
+        (hi, lo, hi, true),
+    ]);
+    corners
+}
+
+/// Give `sc` penalty springs of κ = 1e4.
+fn penalty(sc: &mut Scene) {
+    let l = sc.ladder;
+    // κ = k l/(m g) = 1e4, formed as (1e4 m)(g/l) to stay within range; κ tol = 1e-9
+    // keeps an explicit method accurate (see `stability::stiff`).
+    sc.contact = ContactModel::Penalty {
+        stiffness: 1e4 * l.m * (l.g / l.l),
+        damping: 0.0,
+    };
+}
+
+/// The verdict on a scaled run `got` against the unit-scale `reference`: the largest relative
+/// difference of θ_s, t_s, θ̇_s and F_f.
+fn judge_scaled(
+    c: &mut Case,
+    reference: &Result<([f64; 4], u64, u64), String>,
+    got: &Result<([f64; 4], u64, u64), String>,
+    with_penalty: bool,
+) {
+    match (reference, got) {
+        (Ok((r, ..)), Ok((v, steps, rhs))) => {
+            let (steps, rhs) = (*steps, *rhs);
+            (c.steps, c.rhs_evals) = (steps, rhs);
+            c.value = format!("θ_s = {:.15}, t_s/√(l/g) = {:.15}", v[0], v[1]);
+            let err = (0..4)
+                .map(|i| ((v[i] - r[i]) / r[i]).abs())
+                .fold(0.0, f64::max);
+            // Rigid: the 1e-12. Penalty: κ = (k/m)(l/g) and θ̇0 √(l/g) are rounded
+            // differently at each scale, which changes the adaptive step sequence; both runs
+            // then agree to their integration error, 2 × 10 N τ.
+            let bound = if with_penalty {
+                (20.0 * steps as f64 * TOL).max(1e-12)
+            } else {
+                1e-12
+            };
+            c.judge(err, bound);
+        }
+        (Err(e), _) | (_, Err(e)) => c.reason = e.clone(),
+    }
 }

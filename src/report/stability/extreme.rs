@@ -253,23 +253,35 @@ pub fn extreme_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
     }
     tick("equilibrium", 3);
     let expected = "never separates".to_string();
+    cases.push(equilibrium_rigid(&expected));
+    cases.push(equilibrium_penalty(&expected));
+    cases.push(equilibrium_scene());
+    cases
+}
+
+/// The equilibrium θ0 = θ̇0 = 0, rigid: the wall phase's release is the equilibrium.
+fn equilibrium_rigid(expected: &str) -> Case {
     let mut e = blank(
         "extreme",
         "equilibrium θ0=θ̇0=0".into(),
         "dop853 tol 1e-13".into(),
-        expected.clone(),
+        expected.to_string(),
     );
     if let Ok((WallRelease::Equilibrium, _)) =
         wall_release(&UNIT, 0.0, 0.0, "dop853", Control::Tolerance(TOL), 1000)
     {
-        (e.verdict, e.value) = (Verdict::Ok, expected.clone());
+        (e.verdict, e.value) = (Verdict::Ok, expected.to_string());
     }
-    cases.push(e);
+    e
+}
+
+/// The equilibrium with penalty springs: the run refuses it as the equilibrium.
+fn equilibrium_penalty(expected: &str) -> Case {
     let mut p = blank(
         "extreme",
         "equilibrium θ0=θ̇0=0, penalty κ=1e6".into(),
         "radau5 tol 1e-10".into(),
-        expected.clone(),
+        expected.to_string(),
     );
     let run = separation(
         Contact {
@@ -289,7 +301,11 @@ pub fn extreme_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
             p.verdict = Verdict::Ok;
         }
     }
-    cases.push(p);
+    p
+}
+
+/// The equilibrium as a scene run to t = 100 s: θ stays 0 and nothing separates.
+fn equilibrium_scene() -> Case {
     let mut s = blank(
         "extreme",
         "equilibrium θ0=θ̇0=0, scene to t=100 s".into(),
@@ -310,6 +326,5 @@ pub fn extreme_cases(tick: &mut impl FnMut(&str, u64)) -> Vec<Case> {
         }
         Err(err) => s.reason = err.to_string(),
     }
-    cases.push(s);
-    cases
+    s
 }

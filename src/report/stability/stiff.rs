@@ -161,77 +161,104 @@ pub fn penalty_cases(tick: &mut impl FnMut(&str, u64)) -> (Vec<Case>, Convergenc
             // 2 ulps away, so that a verdict is not a lucky sample (issue 17, item 2).
             let members: &[i64] = if implicit { &[0, -2, -1, 1, 2] } else { &[0] };
             let t = Instant::now();
-            let (mut worst, mut spread) = (None::<(f64, f64)>, (f64::INFINITY, f64::NEG_INFINITY));
-            for &d in members {
-                let k = f64::from_bits((kappa.to_bits() as i64 + d) as u64);
-                let run = separation(
-                    Contact {
-                        kappa: k,
-                        gamma: 0.0,
-                    },
-                    Law::Switched,
-                    THETA0,
-                    0.0,
-                    method,
-                    control,
-                    STEP_CAP,
-                );
-                (c.steps, c.rhs_evals) = (c.steps.max(run.stats.steps), run.stats.rhs_evals);
-                let s = match run.result {
-                    Err(e) => {
-                        c.reason = e.to_string();
-                        worst = None;
-                        break;
-                    }
-                    Ok(s) => s,
-                };
-                if d == 0 {
-                    c.value = format!(
-                        "θ_s = {:.12}, |ΔE| = {:.1e} m g l",
-                        s.angle, s.energy_change
-                    );
-                    if Some(method) == reference {
-                        errors.push((kappa, s.angle - rigid));
-                    }
-                }
-                // The penalty contact's error model (`sim::penalty::confirm`), as the judge's.
-                let err = (s.angle - rigid).abs();
-                let bound = separation_bound(k, rigid, run.stats.steps, tau);
-                if worst.is_none_or(|(e, b)| err / bound > e / b) {
-                    worst = Some((err, bound));
-                }
-                spread = (spread.0.min(s.angle), spread.1.max(s.angle));
-                // γ = 0 conserves energy: a change beyond the integration error is a blow-up.
-                if s.energy_change > 1e-6 {
-                    c.reason = format!(
-                        "blow-up: the energy changed by {:.1e} m g l",
-                        s.energy_change
-                    );
-                    worst = None;
-                    break;
-                }
-            }
+            let errs = (Some(method) == reference).then_some(&mut errors);
+            let (worst, spread) = run_ensemble(
+                &mut c,
+                (kappa, members),
+                (method, control),
+                tau,
+                rigid,
+                errs,
+            );
             c.seconds = t.elapsed().as_secs_f64();
-            if let Some((err, bound)) = worst {
-                c.judge(err, bound);
-                if members.len() > 1 {
-                    let width = spread.1 - spread.0;
-                    c.value += &format!(
-                        " [worst of {} with κ ± 2 ulp; θ_s spread {width:.1e}]",
-                        members.len()
-                    );
-                    if let Some(reason) = spread_failure(spread) {
-                        c.verdict = Verdict::Fail;
-                        c.reason = reason;
-                    }
-                }
-            } else {
-                c.verdict = Verdict::Fail;
-            }
+            judge_ensemble(&mut c, worst, spread, members.len());
             cases.push(c);
         }
     }
     (cases, convergence(reference.unwrap_or("none"), errors))
+}
+
+/// Run the penalty case of `c` for κ and each of its `members` (ulps away from κ): the worst
+/// (error, bound) over the members, `None` after a failure (its reason in `c`), and the spread
+/// (lowest, highest) of their separation angles. With `errors`, κ's own error against the
+/// rigid angle is recorded there (the convergence to the rigid limit).
+fn run_ensemble(
+    c: &mut Case,
+    (kappa, members): (f64, &[i64]),
+    (method, control): (&'static str, Control),
+    tau: f64,
+    rigid: f64,
+    mut errors: Option<&mut Vec<(f64, f64)>>,
+) -> (Option<(f64, f64)>, (f64, f64)) {
+    let (mut worst, mut spread) = (None::<(f64, f64)>, (f64::INFINITY, f64::NEG_INFINITY));
+    for &d in members {
+        let k = f64::from_bits((kappa.to_bits() as i64 + d) as u64);
+        let run = separation(
+            Contact {
+                kappa: k,
+                gamma: 0.0,
+            },
+            Law::Switched,
+            THETA0,
+            0.0,
+            method,
+            control,
+            STEP_CAP,
+        );
+        (c.steps, c.rhs_evals) = (c.steps.max(run.stats.steps), run.stats.rhs_evals);
+        let s = match run.result {
+            Err(e) => {
+                c.reason = e.to_string();
+                worst = None;
+                break;
+            }
+            Ok(s) => s,
+        };
+        if d == 0 {
+            c.value = format!(
+                "θ_s = {:.12}, |ΔE| = {:.1e} m g l",
+                s.angle, s.energy_change
+            );
+            if let Some(errors) = errors.as_deref_mut() {
+                errors.push((kappa, s.angle - rigid));
+            }
+        }
+        // The penalty contact's error model (`sim::penalty::confirm`), as the judge's.
+        let err = (s.angle - rigid).abs();
+        let bound = separation_bound(k, rigid, run.stats.steps, tau);
+        if worst.is_none_or(|(e, b)| err / bound > e / b) {
+            worst = Some((err, bound));
+        }
+        spread = (spread.0.min(s.angle), spread.1.max(s.angle));
+        // γ = 0 conserves energy: a change beyond the integration error is a blow-up.
+        if s.energy_change > 1e-6 {
+            c.reason = format!(
+                "blow-up: the energy changed by {:.1e} m g l",
+                s.energy_change
+            );
+            worst = None;
+            break;
+        }
+    }
+    (worst, spread)
+}
+
+/// The verdict of an ensemble of `members` runs: the worst error against its bound, and a
+/// spread of the separation angle beyond [`ULP_SPREAD_LIMIT`] fails; no worst is a failure.
+fn judge_ensemble(c: &mut Case, worst: Option<(f64, f64)>, spread: (f64, f64), members: usize) {
+    if let Some((err, bound)) = worst {
+        c.judge(err, bound);
+        if members > 1 {
+            let width = spread.1 - spread.0;
+            c.value += &format!(" [worst of {members} with κ ± 2 ulp; θ_s spread {width:.1e}]");
+            if let Some(reason) = spread_failure(spread) {
+                c.verdict = Verdict::Fail;
+                c.reason = reason;
+            }
+        }
+    } else {
+        c.verdict = Verdict::Fail;
+    }
 }
 
 /// Issue 17's target: the separation angle must not move by more than this (rad) when κ moves

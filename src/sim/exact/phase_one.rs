@@ -71,93 +71,108 @@ pub fn separation_cos(theta0: f64, rate0: f64, big_omega2: f64) -> f64 {
     (2.0 * theta0.cos() + rate0 * rate0 / big_omega2) / 3.0
 }
 
+/// θ₀ ∈ [0, π/2), θ̇₀ ≥ 0 and Ω² in [1e-100, 1e100], all finite.
+fn check_start(theta0: f64, rate0: f64, big_omega2: f64) -> Result<(), String> {
+    if !(theta0.is_finite() && (0.0..FRAC_PI_2).contains(&theta0)) {
+        return Err(format!(
+            "start angle theta0 = {theta0} rad is not in [0, pi/2)"
+        ));
+    }
+    if !(rate0.is_finite() && rate0 >= 0.0) {
+        return Err(format!(
+            "start rate theta0_dot = {rate0} rad/s is not finite and >= 0"
+        ));
+    }
+    if !(big_omega2.is_finite() && (1e-100..=1e100).contains(&big_omega2)) {
+        return Err(format!(
+            "big_omega^2 = 3g/(4l) = {big_omega2} 1/s^2 is not in [1e-100, 1e100]"
+        ));
+    }
+    Ok(())
+}
+
+/// A start off the equilibrium that f64 can follow: ρ = θ̇₀/(2Ω) whose square does not
+/// overflow, and (sin(θ₀/2), ρ) not within [`MIN_OFFSET`] of the unstable equilibrium.
+fn check_resolvable(
+    theta0: f64,
+    rate0: f64,
+    big_omega: f64,
+    s0: f64,
+    rho: f64,
+) -> Result<(), String> {
+    if rho > MAX_RATE_RATIO {
+        return Err(format!(
+            "start rate θ̇0/Ω = {} exceeds {MAX_RATE_RATIO:e}; its square \
+             would overflow",
+            rate0 / big_omega
+        ));
+    }
+    if s0.max(rho) < MIN_OFFSET {
+        return Err(format!(
+            "start (theta0 = {theta0}, θ̇0/Ω = {}) lies within {MIN_OFFSET:e} of \
+             the unstable equilibrium; f64 cannot resolve it",
+            rate0 / big_omega
+        ));
+    }
+    Ok(())
+}
+
+/// The orbit through a start off the equilibrium, (s0, c0) = (sin, cos)(θ₀/2) and
+/// ρ = θ̇₀/(2Ω): the separatrix when s0² = ρ², else a libration or a rotation.
+fn moving_orbit(theta0: f64, big_omega: f64, (s0, c0): (f64, f64), rho: f64) -> Orbit {
+    // a = s0² − ρ² as a product: no cancellation beyond that of s0 − ρ itself.
+    let a = (s0 - rho) * (s0 + rho);
+    if a == 0.0 {
+        Orbit::Separatrix {
+            tan_quarter0: (0.25 * theta0).tan(),
+        }
+    } else {
+        // e = 1 − a = c0² + ρ², a sum: k² for a libration, 1/k² for a rotation.
+        let e = c0 * c0 + rho * rho;
+        let rotation = a < 0.0;
+        let (kc, k, k2) = if rotation {
+            let h = (-a).sqrt();
+            (h / e.sqrt(), 1.0 / e.sqrt(), 1.0 / e)
+        } else {
+            (a.sqrt(), e.sqrt(), e)
+        };
+        let agm = Box::new(Agm::new(kc, k2));
+        let (u0, v0, phase_rate) = if rotation {
+            // Phase w = (Ω/k)(time since θ = 0); origin-to-start and start-to-bottom parts.
+            let h = (-a).sqrt();
+            let u0 = e.sqrt() * s0 * carlson_rf(c0 * c0 * h * h, rho * rho, h * h);
+            let v0 = c0 * e.sqrt() * carlson_rf(e * s0 * s0, e, rho * rho);
+            (u0, v0, big_omega * e.sqrt())
+        } else {
+            // Phase u = Ω (time since the turning point sin(θ/2) = k').
+            let u0 = rho * carlson_rf(kc * kc * e, s0 * s0 * e, kc * kc * c0 * c0);
+            let v0 = c0 * carlson_rf(s0 * s0 * e, e, rho * rho);
+            (u0, v0, big_omega)
+        };
+        Orbit::Elliptic {
+            rotation,
+            kc,
+            k,
+            agm,
+            u0,
+            v0,
+            phase_rate,
+        }
+    }
+}
+
 impl PhaseOne {
     /// The motion from θ₀ ∈ [0, π/2), θ̇₀ ≥ 0 with Ω² = 3g/(4l) > 0 (eq. (5)).
     pub fn new(theta0: f64, rate0: f64, big_omega2: f64) -> Result<PhaseOne, String> {
-        if !(theta0.is_finite() && (0.0..FRAC_PI_2).contains(&theta0)) {
-            return Err(format!(
-                "start angle theta0 = {theta0} rad is not in [0, pi/2)"
-            ));
-        }
-        if !(rate0.is_finite() && rate0 >= 0.0) {
-            return Err(format!(
-                "start rate theta0_dot = {rate0} rad/s is not finite and >= 0"
-            ));
-        }
-        if !(big_omega2.is_finite() && (1e-100..=1e100).contains(&big_omega2)) {
-            return Err(format!(
-                "big_omega^2 = 3g/(4l) = {big_omega2} 1/s^2 is not in [1e-100, 1e100]"
-            ));
-        }
+        check_start(theta0, rate0, big_omega2)?;
         let big_omega = big_omega2.sqrt();
         let (s0, c0) = (0.5 * theta0).sin_cos();
         let rho = 0.5 * rate0 / big_omega;
-        if theta0 == 0.0 && rate0 == 0.0 {
-            let orbit = Orbit::Equilibrium;
-            return Ok(PhaseOne {
-                theta0,
-                rate0,
-                big_omega2,
-                big_omega,
-                s0,
-                c0,
-                rho,
-                orbit,
-                margin: None,
-            });
-        }
-        if rho > MAX_RATE_RATIO {
-            return Err(format!(
-                "start rate θ̇0/Ω = {} exceeds {MAX_RATE_RATIO:e}; its square \
-                 would overflow",
-                rate0 / big_omega
-            ));
-        }
-        if s0.max(rho) < MIN_OFFSET {
-            return Err(format!(
-                "start (theta0 = {theta0}, θ̇0/Ω = {}) lies within {MIN_OFFSET:e} of \
-                 the unstable equilibrium; f64 cannot resolve it",
-                rate0 / big_omega
-            ));
-        }
-        // a = s0² − ρ² as a product: no cancellation beyond that of s0 − ρ itself.
-        let a = (s0 - rho) * (s0 + rho);
-        let orbit = if a == 0.0 {
-            Orbit::Separatrix {
-                tan_quarter0: (0.25 * theta0).tan(),
-            }
+        let orbit = if theta0 == 0.0 && rate0 == 0.0 {
+            Orbit::Equilibrium
         } else {
-            // e = 1 − a = c0² + ρ², a sum: k² for a libration, 1/k² for a rotation.
-            let e = c0 * c0 + rho * rho;
-            let rotation = a < 0.0;
-            let (kc, k, k2) = if rotation {
-                let h = (-a).sqrt();
-                (h / e.sqrt(), 1.0 / e.sqrt(), 1.0 / e)
-            } else {
-                (a.sqrt(), e.sqrt(), e)
-            };
-            let agm = Box::new(Agm::new(kc, k2));
-            let (u0, v0, phase_rate) = if rotation {
-                // Phase w = (Ω/k)(time since θ = 0); origin-to-start and start-to-bottom parts.
-                let h = (-a).sqrt();
-                let u0 = e.sqrt() * s0 * carlson_rf(c0 * c0 * h * h, rho * rho, h * h);
-                let v0 = c0 * e.sqrt() * carlson_rf(e * s0 * s0, e, rho * rho);
-                (u0, v0, big_omega * e.sqrt())
-            } else {
-                // Phase u = Ω (time since the turning point sin(θ/2) = k').
-                let u0 = rho * carlson_rf(kc * kc * e, s0 * s0 * e, kc * kc * c0 * c0);
-                let v0 = c0 * carlson_rf(s0 * s0 * e, e, rho * rho);
-                (u0, v0, big_omega)
-            };
-            Orbit::Elliptic {
-                rotation,
-                kc,
-                k,
-                agm,
-                u0,
-                v0,
-                phase_rate,
-            }
+            check_resolvable(theta0, rate0, big_omega, s0, rho)?;
+            moving_orbit(theta0, big_omega, (s0, c0), rho)
         };
         Ok(PhaseOne {
             theta0,

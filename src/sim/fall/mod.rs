@@ -4,18 +4,18 @@
 //! evaluated and stored; [`Work`] counts it so that tests can check that nothing else was done.
 //! The phases themselves are in `sim::fall::wall_phase` and `sim::fall::floor_phase`.
 
+mod beyond;
 pub mod floor_phase;
 pub mod observer;
 pub mod penalty;
 pub mod wall_phase;
 
-use self::floor_phase::{floor_phase, FloorEnd};
+use self::beyond::{beyond_separation, Beyond};
 use self::observer::{rigid_momentum_x, TraceObserver};
-use self::wall_phase::{wall_phase, WallStart};
+use self::wall_phase::{wall_phase, WallEnd, WallStart};
 use super::exact::PhaseOne;
 pub use super::fall::observer::momentum_balance;
 use super::floor;
-use super::impact;
 use super::lead_in::linear_state_at;
 use super::near_release;
 pub use super::outcome::{
@@ -85,38 +85,18 @@ fn run_rigid(
     let (m, l, g) = (ladder.m, ladder.l, ladder.g);
     let mut trace = plan.trace.then(Kept::default);
     let mut work = Work::default();
-    let t_end = match scene.end {
-        End::Time(t) => t,
-        _ => MAX_END_TIME,
-    };
+    let t_end = end_time(scene.end);
     let e0 = plan
         .energy
         .then(|| rigid::energy(&ladder, scene.theta0, scene.rate0));
-
-    // Tiny and subnormal starts: the exact linear motion up to where f64 can follow it.
-    let (t0, y_lead) = lead
-        .filter(|(t, _, _)| *t <= t_end)
-        .map_or((0.0, [scene.theta0, scene.rate0]), |(t, th, w)| {
-            (t, [th, w])
-        });
+    let (t0, y_lead) = lead_in_end(scene, lead, t_end);
     // The margin belongs to the start as given (a lead-in never meets the release push).
     let margin = margin.filter(|_| t0 == 0.0);
     if scene.control.is_none() {
         return exact_outcome(plan, &ladder, t0, y_lead, margin);
     }
     let y0 = [scene.theta0, scene.rate0];
-    let mut obs = TraceObserver {
-        ladder,
-        phase: 1,
-        trace: trace.as_mut(),
-        monitor: None,
-        force_evals: 0,
-        phase_start: 0.0,
-        // The linear lead-in's impulse is exact: m l Δ(cos θ θ̇) over it (eq. (7)).
-        impulse: plan.momentum.then(|| {
-            rigid_momentum_x(y_lead[0], y_lead[1]) - rigid_momentum_x(scene.theta0, scene.rate0)
-        }),
-    };
+    let mut obs = wall_observer(scene, &plan, trace.as_mut(), y_lead);
     obs.observe(0.0, &y0);
     if t0 > 0.0 {
         obs.observe(t0, &y_lead);
@@ -124,34 +104,23 @@ fn run_rigid(
     if t0 > 0.0 && t0 >= t_end {
         // The end came within the linear lead-in (`run` gave its state there): nothing to step.
         work.force_evals = obs.force_evals;
-        let trace = finished(trace, &ladder, plan.forces, &mut work);
-        let energy = rigid::energy(&ladder, y_lead[0], y_lead[1]);
-        return Ok(Outcome {
+        return Ok(lead_in_outcome(
             plan,
-            separation: None,
-            flat: None,
-            slide: None,
-            last: (t0, y_lead[0], y_lead[1]),
-            energy_error: e0.map(|e| (energy - e).abs() / (m * g * l)),
-            momentum_error: None,
-            floor_report: None,
             trace,
+            &ladder,
             work,
-        });
+            (t0, y_lead),
+            e0,
+        ));
     }
-    let start = WallStart {
-        y: y_lead,
-        // A start given as its complement φ0 (`angle_from_floor`) enters exactly.
-        phi0: scene.phi0.filter(|_| t0 == 0.0),
-        margin,
-    };
-    // The stepper runs in time since the lead-in (its step floor is relative to |t|).
-    let mut shifted = super::extreme::Shifted(&mut obs, t0);
-    let wall = wall_phase(scene, &start, t_end - t0, max_steps, &mut shifted)?;
-    let mut end1 = wall.end;
-    end1.t += t0;
-    work.wall = wall.stats;
-    work.force_evals += obs.force_evals;
+    let wall = stepped_wall_phase(
+        scene,
+        &mut obs,
+        (t0, y_lead, margin),
+        (t_end, max_steps),
+        &mut work,
+    )?;
+    let end1 = wall.end;
     let impulse = obs.impulse;
     let mut last = (end1.t, end1.y[0], end1.y[1]);
     let mut energy_end = e0.map(|_| rigid::energy(&ladder, end1.y[0], end1.y[1]));
@@ -166,101 +135,113 @@ fn run_rigid(
         let phi_s = wall
             .phi_s
             .unwrap_or_else(|| super::complement::complement(sep.angle));
-        let run = Beyond::run(scene, &plan, trace.as_mut(), sep, phi_s, t_end, max_steps)?;
-        beyond = run.0;
-        work.floor = Some(run.1.stats);
-        work.force_evals += run.1.force_evals;
+        let y;
+        (beyond, y) = beyond_separation(
+            scene,
+            &plan,
+            trace.as_mut(),
+            (sep, phi_s),
+            (t_end, max_steps),
+            &mut work,
+            impulse,
+        )?;
         last = beyond.last;
-        beyond.momentum_error = impulse.map(|j| {
-            momentum_balance(
-                run.1.end.y[3],
-                rigid_momentum_x(scene.theta0, scene.rate0),
-                j,
-            )
-        });
-        let y = run.1.end.y;
         // Over the integrated phases: up to flat (the impact's loss is the slide's own figure).
         energy_end = e0.map(|_| floor::energy(&ladder, y[0], y[2], y[3]));
     }
     let trace = finished(trace, &ladder, plan.forces, &mut work);
     let energy_error = e0.zip(energy_end).map(|(a, b)| (b - a).abs() / (m * g * l));
-    Ok(Outcome {
+    Ok(beyond.outcome(plan, separation, last, energy_error, trace, work))
+}
+
+/// The time a run ends at the latest: the scene's end time, else [`MAX_END_TIME`].
+fn end_time(end: End) -> f64 {
+    match end {
+        End::Time(t) => t,
+        _ => MAX_END_TIME,
+    }
+}
+
+/// Tiny and subnormal starts: the exact linear motion up to where f64 can follow it, when
+/// that is before `t_end`; (t0, [θ, θ̇]) where the stepping starts (the start itself, t0 = 0,
+/// without a lead-in).
+fn lead_in_end(scene: &Scene, lead: Option<(f64, f64, f64)>, t_end: f64) -> (f64, [f64; 2]) {
+    lead.filter(|(t, _, _)| *t <= t_end)
+        .map_or((0.0, [scene.theta0, scene.rate0]), |(t, th, w)| {
+            (t, [th, w])
+        })
+}
+
+/// The observer of the wall phase, keeping `trace`; with the momentum balance, the lead-in's
+/// impulse up to `y_lead`.
+fn wall_observer<'a>(
+    scene: &Scene,
+    plan: &Plan,
+    trace: Option<&'a mut Kept>,
+    y_lead: [f64; 2],
+) -> TraceObserver<'a> {
+    TraceObserver {
+        ladder: scene.ladder,
+        phase: 1,
+        trace,
+        monitor: None,
+        force_evals: 0,
+        phase_start: 0.0,
+        // The linear lead-in's impulse is exact: m l Δ(cos θ θ̇) over it (eq. (7)).
+        impulse: plan.momentum.then(|| {
+            rigid_momentum_x(y_lead[0], y_lead[1]) - rigid_momentum_x(scene.theta0, scene.rate0)
+        }),
+    }
+}
+
+/// The wall phase stepped from the lead-in's end (t0, [θ, θ̇]) with the start's `margin`,
+/// observed by `obs`; its end in the scene's time, its counts added to `work`.
+fn stepped_wall_phase(
+    scene: &Scene,
+    obs: &mut TraceObserver,
+    (t0, y_lead, margin): (f64, [f64; 2], Option<f64>),
+    (t_end, max_steps): (f64, u64),
+    work: &mut Work,
+) -> Result<WallEnd, RunError> {
+    let start = WallStart {
+        y: y_lead,
+        // A start given as its complement φ0 (`angle_from_floor`) enters exactly.
+        phi0: scene.phi0.filter(|_| t0 == 0.0),
+        margin,
+    };
+    // The stepper runs in time since the lead-in (its step floor is relative to |t|).
+    let mut shifted = super::extreme::Shifted(&mut *obs, t0);
+    let mut wall = wall_phase(scene, &start, t_end - t0, max_steps, &mut shifted)?;
+    wall.end.t += t0;
+    work.wall = wall.stats;
+    work.force_evals += obs.force_evals;
+    Ok(wall)
+}
+
+/// The outcome of a run whose end came within the linear lead-in: the lead-in's end state
+/// (t0, θ, θ̇) = `lead` is the last, nothing was stepped.
+fn lead_in_outcome(
+    plan: Plan,
+    trace: Option<Kept>,
+    ladder: &Ladder<f64>,
+    mut work: Work,
+    (t0, y_lead): (f64, [f64; 2]),
+    e0: Option<f64>,
+) -> Outcome {
+    let (m, l, g) = (ladder.m, ladder.l, ladder.g);
+    let trace = finished(trace, ladder, plan.forces, &mut work);
+    let energy = rigid::energy(ladder, y_lead[0], y_lead[1]);
+    Outcome {
         plan,
-        separation,
-        flat: beyond.flat,
-        slide: beyond.slide,
-        last,
-        energy_error,
-        momentum_error: beyond.momentum_error,
-        floor_report: beyond.floor_report,
+        separation: None,
+        flat: None,
+        slide: None,
+        last: (t0, y_lead[0], y_lead[1]),
+        energy_error: e0.map(|e| (energy - e).abs() / (m * g * l)),
+        momentum_error: None,
+        floor_report: None,
         trace,
         work,
-    })
-}
-
-/// What a run finds past the separation: the floor phase's report, the flat state and, for a
-/// run to a later time, the slide lying flat after the top's impact (`super::impact`).
-#[derive(Default)]
-struct Beyond {
-    flat: Option<FlatState>,
-    slide: Option<Slide>,
-    momentum_error: Option<f64>,
-    floor_report: Option<FloorReport>,
-    /// The last state (t, θ, θ̇).
-    last: (f64, f64, f64),
-}
-
-impl Beyond {
-    /// The floor phase from the separation `sep` (φ_s = π/2 − θ_s), then lying flat to `t_end`;
-    /// with the floor phase's own run for its counts and end state.
-    #[allow(clippy::too_many_arguments)]
-    fn run(
-        scene: &Scene,
-        plan: &Plan,
-        mut trace: Option<&mut Kept>,
-        sep: SeparationState,
-        phi_s: f64,
-        t_end: f64,
-        max_steps: u64,
-    ) -> Result<(Beyond, FloorEnd), RunError> {
-        let floor = floor_phase(
-            scene,
-            plan,
-            trace.as_deref_mut(),
-            sep,
-            phi_s,
-            t_end,
-            max_steps,
-        )?;
-        let (end2, y) = (floor.end, floor.end.y);
-        let mut b = Beyond {
-            floor_report: floor.report,
-            last: (end2.t, y[0], y[2]),
-            ..Beyond::default()
-        };
-        if end2.event != Some(0) {
-            return Ok((b, floor));
-        }
-        let f = FlatState {
-            time: end2.t,
-            rate: y[2],
-            centre_x: y[1],
-            centre_velocity_x: y[3],
-            centre_velocity_y: -scene.ladder.l * y[0].sin() * y[2],
-        };
-        b.flat = Some(f);
-        // A run to a later time goes on lying flat (module docs of `super::impact`).
-        if let (End::Time(_), true) = (scene.end, end2.t < t_end) {
-            let s = impact::slide(&scene.ladder, &f, t_end);
-            if let Some(tr) = trace {
-                for (t, x) in [(f.time, f.centre_x), (t_end, s.centre_x_end)] {
-                    tr.offer(impact::lying_flat_sample(t, x));
-                }
-            }
-            b.slide = Some(s);
-            b.last = (t_end, end2.y[0], 0.0);
-        }
-        Ok((b, floor))
     }
 }
 

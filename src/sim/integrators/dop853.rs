@@ -92,6 +92,45 @@ impl<const N: usize> Integrator<N> for Dop853<N> {
     }
 }
 
+/// The error of a step `h` from `y` to `y1` (dop853.f, labels 41-42): the fifth-order estimate
+/// `e5` damped by the third-order `e3`, err = h err5 / √(N (err5 + 0.01 err3)) with the sums of
+/// squares of the estimates over rtol times the larger scale of `y` and `y1`.
+fn combined_error<const N: usize, S: Ode<N>>(
+    sys: &S,
+    rtol: f64,
+    (y, y1): (&[f64; N], &[f64; N]),
+    (e5, e3): (&[f64; N], &[f64; N]),
+    h: f64,
+) -> f64 {
+    let (s0, s1) = (sys.scale(y), sys.scale(y1));
+    let (mut r5, mut r3) = ([0.0; N], [0.0; N]);
+    for i in 0..N {
+        let sk = (rtol * s0[i].max(s1[i])).max(f64::MIN_POSITIVE);
+        (r5[i], r3[i]) = (e5[i] / sk, e3[i] / sk);
+    }
+    // The sums of squares in units of the largest ratio when that is huge: a state of
+    // size 1e-273 (a start that close to the floor) gives ratios ~1e267 whose squares
+    // overflow, and inf/inf made every trial NaN down to a step of 0 (issue 17, F7).
+    // err = h big err5' / √(N deno') with the primed sums over ratios / big.
+    let big = r5.iter().chain(&r3).fold(0.0f64, |m, r| m.max(r.abs()));
+    let big = if big > 1e150 && big.is_finite() {
+        big
+    } else {
+        1.0
+    };
+    let (mut err5, mut err3) = (0.0, 0.0);
+    for i in 0..N {
+        err5 += (r5[i] / big).powi(2);
+        err3 += (r3[i] / big).powi(2);
+    }
+    let deno = if err5 + 0.01 * err3 > 0.0 {
+        err5 + 0.01 * err3
+    } else {
+        1.0
+    };
+    h * big * err5 / (N as f64 * deno).sqrt()
+}
+
 impl<const N: usize> Stepper<N> for Dop853<N> {
     fn t(&self) -> f64 {
         self.state.t
@@ -138,33 +177,7 @@ impl<const N: usize> Stepper<N> for Dop853<N> {
                 e5[i] = e;
                 e3[i] = b - BHH1 * k[0][i] - BHH2 * k[8][i] - BHH3 * k[11][i];
             }
-            let (s0, s1) = (sys.scale(&y), sys.scale(&y1));
-            let (mut r5, mut r3) = ([0.0; N], [0.0; N]);
-            for i in 0..N {
-                let sk = (self.state.rtol * s0[i].max(s1[i])).max(f64::MIN_POSITIVE);
-                (r5[i], r3[i]) = (e5[i] / sk, e3[i] / sk);
-            }
-            // The sums of squares in units of the largest ratio when that is huge: a state of
-            // size 1e-273 (a start that close to the floor) gives ratios ~1e267 whose squares
-            // overflow, and inf/inf made every trial NaN down to a step of 0 (issue 17, F7).
-            // err = h big err5' / √(N deno') with the primed sums over ratios / big.
-            let big = r5.iter().chain(&r3).fold(0.0f64, |m, r| m.max(r.abs()));
-            let big = if big > 1e150 && big.is_finite() {
-                big
-            } else {
-                1.0
-            };
-            let (mut err5, mut err3) = (0.0, 0.0);
-            for i in 0..N {
-                err5 += (r5[i] / big).powi(2);
-                err3 += (r3[i] / big).powi(2);
-            }
-            let deno = if err5 + 0.01 * err3 > 0.0 {
-                err5 + 0.01 * err3
-            } else {
-                1.0
-            };
-            let err = h * big * err5 / (N as f64 * deno).sqrt();
+            let err = combined_error(sys, self.state.rtol, (&y, &y1), (&e5, &e3), h);
             if !err.is_finite() || !all_finite(&y1) {
                 // Shrink hard: a non-finite trial step is treated as a large error.
                 self.state.reject_non_finite(h);

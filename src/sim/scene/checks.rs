@@ -161,19 +161,7 @@ pub(in crate::sim) fn check_integrator(
 ) -> Result<(String, Option<Control>), SceneError> {
     let method = i.method.get_ref().as_str();
     if method == "exact" {
-        for (key, v) in [
-            ("integrator.tolerance", &i.tolerance),
-            ("integrator.step", &i.step),
-            ("integrator.scaled_step", &i.scaled_step),
-        ] {
-            if let Some(v) = v {
-                return Err(cx.err(
-                    Some(v.span()),
-                    key,
-                    "method \"exact\" takes neither tolerance nor step; allowed: method = \"exact\" alone",
-                ));
-            }
-        }
+        check_exact(cx, i)?;
         return Ok((method.into(), None));
     }
     if card(method).is_none() {
@@ -187,59 +175,95 @@ pub(in crate::sim) fn check_integrator(
         ));
     }
     let control = if is_adaptive(method) {
-        if let Some(s) = i.step.as_ref().or(i.scaled_step.as_ref()) {
-            return Err(cx.err(
-                Some(s.span()),
-                "integrator.step",
-                format!("\"{method}\" is adaptive and takes no step; allowed: tolerance in [1e-16, 0.1]"),
-            ));
-        }
-        let Some(t) = &i.tolerance else {
-            return Err(cx.err(
-                Some(i.method.span()),
-                "integrator.tolerance",
-                format!("missing; \"{method}\" needs one; allowed: a tolerance in [1e-16, 0.1]"),
-            ));
-        };
-        Control::Tolerance(cx.number(
-            t,
-            "integrator.tolerance",
-            |x| (MIN_TOLERANCE..=0.1).contains(&x),
-            "a tolerance in [1e-16, 0.1]",
-        )?)
+        adaptive_control(cx, i, method)?
     } else {
-        if let Some(t) = &i.tolerance {
-            return Err(cx.err(
-                Some(t.span()),
-                "integrator.tolerance",
-                format!(
-                    "\"{method}\" has a fixed step and takes no tolerance; allowed: step (s) or scaled_step (units of √(l/g)) in [{MIN_STEP:e}, {MAX_STEP}] √(l/g)"
-                ),
-            ));
-        }
-        let allowed = format!(
-            "a step in [{MIN_STEP:e}, {MAX_STEP}] √(l/g) = [{:e}, {:e}] s (or scaled_step in [{MIN_STEP:e}, {MAX_STEP}])",
-            MIN_STEP * unit,
-            MAX_STEP * unit
-        );
-        let Some((h, _, _)) = cx.time_like(
-            i.step.as_ref(),
-            i.scaled_step.as_ref(),
-            ("integrator.step", "integrator.scaled_step"),
-            unit,
-            |x| (MIN_STEP..=MAX_STEP).contains(&x),
-            &allowed,
-        )?
-        else {
-            return Err(cx.err(
-                Some(i.method.span()),
-                "integrator.step",
-                format!("missing; \"{method}\" needs a step; allowed: {allowed}"),
-            ));
-        };
-        Control::Fixed(h)
+        fixed_control(cx, i, method, unit)?
     };
     Ok((method.into(), Some(control)))
+}
+
+/// `method = "exact"` alone: the closed form takes neither tolerance nor step.
+fn check_exact(cx: &Ctx, i: &RawIntegrator) -> Result<(), SceneError> {
+    for (key, v) in [
+        ("integrator.tolerance", &i.tolerance),
+        ("integrator.step", &i.step),
+        ("integrator.scaled_step", &i.scaled_step),
+    ] {
+        if let Some(v) = v {
+            return Err(cx.err(
+                Some(v.span()),
+                key,
+                "method \"exact\" takes neither tolerance nor step; allowed: method = \"exact\" alone",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// An adaptive method's control: its tolerance, and no step.
+fn adaptive_control(cx: &Ctx, i: &RawIntegrator, method: &str) -> Result<Control, SceneError> {
+    if let Some(s) = i.step.as_ref().or(i.scaled_step.as_ref()) {
+        return Err(cx.err(
+            Some(s.span()),
+            "integrator.step",
+            format!(
+                "\"{method}\" is adaptive and takes no step; allowed: tolerance in [1e-16, 0.1]"
+            ),
+        ));
+    }
+    let Some(t) = &i.tolerance else {
+        return Err(cx.err(
+            Some(i.method.span()),
+            "integrator.tolerance",
+            format!("missing; \"{method}\" needs one; allowed: a tolerance in [1e-16, 0.1]"),
+        ));
+    };
+    Ok(Control::Tolerance(cx.number(
+        t,
+        "integrator.tolerance",
+        |x| (MIN_TOLERANCE..=0.1).contains(&x),
+        "a tolerance in [1e-16, 0.1]",
+    )?))
+}
+
+/// A fixed-step method's control: its step (s, or scaled by `unit` = √(l/g) s), and no
+/// tolerance.
+fn fixed_control(
+    cx: &Ctx,
+    i: &RawIntegrator,
+    method: &str,
+    unit: f64,
+) -> Result<Control, SceneError> {
+    if let Some(t) = &i.tolerance {
+        return Err(cx.err(
+            Some(t.span()),
+            "integrator.tolerance",
+            format!(
+                "\"{method}\" has a fixed step and takes no tolerance; allowed: step (s) or scaled_step (units of √(l/g)) in [{MIN_STEP:e}, {MAX_STEP}] √(l/g)"
+            ),
+        ));
+    }
+    let allowed = format!(
+        "a step in [{MIN_STEP:e}, {MAX_STEP}] √(l/g) = [{:e}, {:e}] s (or scaled_step in [{MIN_STEP:e}, {MAX_STEP}])",
+        MIN_STEP * unit,
+        MAX_STEP * unit
+    );
+    let Some((h, _, _)) = cx.time_like(
+        i.step.as_ref(),
+        i.scaled_step.as_ref(),
+        ("integrator.step", "integrator.scaled_step"),
+        unit,
+        |x| (MIN_STEP..=MAX_STEP).contains(&x),
+        &allowed,
+    )?
+    else {
+        return Err(cx.err(
+            Some(i.method.span()),
+            "integrator.step",
+            format!("missing; \"{method}\" needs a step; allowed: {allowed}"),
+        ));
+    };
+    Ok(Control::Fixed(h))
 }
 
 /// `[integrator] order`: the Taylor method's order, a whole number in

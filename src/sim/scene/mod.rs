@@ -23,8 +23,8 @@ use super::scene::checks::{
 };
 use super::scene::errors::Ctx;
 pub use super::scene::errors::SceneError;
-use super::scene::parts::Raw;
 pub use super::scene::parts::{ContactModel, End, MAX_END_TIME, MAX_STEP, MIN_STEP, MIN_TOLERANCE};
+use super::scene::parts::{Raw, RawLadder};
 use super::scene::shape::{check_shape, value_error};
 use super::scene::work::check_work;
 use super::units::Units;
@@ -93,16 +93,12 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
     parse(&file, &text)
 }
 
-/// Validate the scene text `text` read from `file`.
-pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
-    let cx = Ctx { file, text };
-    check_shape(&cx)?;
-    let raw: Raw = toml::from_str(text).map_err(|e| value_error(&cx, &e))?;
-    let l = raw.ladder.get_ref();
+/// `[ladder]`: m, l and g, each positive.
+fn check_ladder(cx: &Ctx, l: &RawLadder) -> Result<Ladder<f64>, SceneError> {
     // Any scale from 1e-30 to 1e30: the simulator is checked to give the same angles, times
     // scaled by √(l/g) and forces by m g over that whole range (`ladder stability`).
     let positive = |x: f64| (1e-30..=1e30).contains(&x);
-    let ladder = Ladder {
+    Ok(Ladder {
         m: cx.number(
             &l.mass,
             "ladder.mass",
@@ -121,7 +117,15 @@ pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
             positive,
             "a number > 0 (m/s²) in [1e-30, 1e30]",
         )?,
-    };
+    })
+}
+
+/// Validate the scene text `text` read from `file`.
+pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
+    let cx = Ctx { file, text };
+    check_shape(&cx)?;
+    let raw: Raw = toml::from_str(text).map_err(|e| value_error(&cx, &e))?;
+    let ladder = check_ladder(&cx, raw.ladder.get_ref())?;
     let s = raw.start.get_ref();
     let start = start_angle(&cx, s)?;
     let theta0 = start.theta0;

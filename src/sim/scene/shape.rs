@@ -94,7 +94,20 @@ pub(in crate::sim) fn check_shape(cx: &Ctx) -> Result<(), SceneError> {
     }
     let doc = DeTable::parse(cx.text).map_err(|e| syntax(cx, &e))?;
     let schema = schema();
-    for (name, value) in doc.get_ref().iter() {
+    check_sections(cx, doc.get_ref(), &schema, sections)?;
+    check_missing_sections(cx, doc.get_ref(), &schema)?;
+    Ok(())
+}
+
+/// Every section of the scene is one of the schema's, a table, and holds only its own keys;
+/// a key of another section says where it belongs.
+fn check_sections(
+    cx: &Ctx,
+    doc: &DeTable,
+    schema: &[(&'static str, &'static [&'static str])],
+    sections: &[&str],
+) -> Result<(), SceneError> {
+    for (name, value) in doc.iter() {
         let section = name.get_ref().as_ref();
         let span = Some(name.span());
         let Some((_, keys)) = schema.iter().find(|(s, _)| *s == section) else {
@@ -136,9 +149,17 @@ pub(in crate::sim) fn check_shape(cx: &Ctx) -> Result<(), SceneError> {
             return Err(cx.err(Some(key.span()), &format!("{section}.{k}"), message));
         }
     }
+    Ok(())
+}
+
+/// Every section of the schema is present; the first missing one is named where it would go.
+fn check_missing_sections(
+    cx: &Ctx,
+    doc: &DeTable,
+    schema: &[(&'static str, &'static [&'static str])],
+) -> Result<(), SceneError> {
     let header = |name: &str| {
-        doc.get_ref()
-            .iter()
+        doc.iter()
             .find(|(k, _)| k.get_ref().as_ref() == name)
             .map(|(k, _)| cx.line_of(k.span().start))
     };

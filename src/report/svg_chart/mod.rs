@@ -13,6 +13,9 @@ use super::chart::{Chart, Series};
 use super::svg_text::esc;
 use std::fmt::Write;
 
+mod panel;
+use panel::panel_svg;
+
 /// The palette (Okabe–Ito, distinguishable with any colour vision), in series order.
 pub const PALETTE: [&str; 9] = [
     "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#8C6D31",
@@ -59,152 +62,6 @@ fn style(
         None if chart.dashed.contains(&ser.name) => (own, " stroke-dasharray=\"7 4\"", false),
         None => (own, "", chart.markers),
     }
-}
-
-/// The chart as [`chart_svg`] draws it; with `shared` (see [`style`]) it leaves out its own
-/// legend column, since the figure draws one legend for all its panels.
-fn panel_svg(
-    chart: &Chart,
-    series: &[Series],
-    w: f64,
-    h: f64,
-    id: &str,
-    shared: Option<&[String]>,
-) -> String {
-    let s = &chart.spec;
-    let xs = series.iter().flat_map(|p| p.points.iter().map(|q| q.0));
-    let marks = chart.marks.iter().map(|m| m.x);
-    let x = Axis::fit(xs.chain(s.vlines.iter().copied()).chain(marks), chart.log_x);
-    let ys = series.iter().flat_map(|p| p.points.iter().map(|q| q.1));
-    let y = Axis::fit(ys.chain(s.hlines.iter().copied()), chart.log_y);
-    let right = if shared.is_some() {
-        SHARED_RIGHT
-    } else {
-        RIGHT
-    };
-    let (x0, x1, y0, y1) = (LEFT, w - right, TOP, h - BOTTOM);
-    let px = |v: f64| x0 + (v - x.lo) / (x.hi - x.lo) * (x1 - x0);
-    let py = |v: f64| y1 - (v - y.lo) / (y.hi - y.lo) * (y1 - y0);
-    let mut o = String::new();
-    let _ = write!(
-        o,
-        "<rect x=\"0\" y=\"0\" width=\"{w}\" height=\"{h}\" fill=\"white\"/>\
-<text x=\"{:.1}\" y=\"26\" text-anchor=\"middle\" font-size=\"17\" font-weight=\"bold\">{}</text>\
-<clipPath id=\"clip-{id}\"><rect x=\"{x0}\" y=\"{y0}\" width=\"{:.1}\" height=\"{:.1}\"/></clipPath>",
-        (x0 + x1) / 2.0,
-        esc(&s.title),
-        x1 - x0,
-        y1 - y0
-    );
-    // Grid, ticks and tick labels.
-    for (v, label) in &x.ticks {
-        let p = px(*v);
-        let _ = write!(
-            o,
-            "<line x1=\"{p:.2}\" y1=\"{y0}\" x2=\"{p:.2}\" y2=\"{y1}\" stroke=\"#e3e3e3\"/>\
-<text x=\"{p:.2}\" y=\"{:.1}\" text-anchor=\"middle\" font-size=\"13\">{}</text>",
-            y1 + 18.0,
-            esc(label)
-        );
-    }
-    for (v, label) in &y.ticks {
-        let p = py(*v);
-        let _ = write!(
-            o,
-            "<line x1=\"{x0}\" y1=\"{p:.2}\" x2=\"{x1}\" y2=\"{p:.2}\" stroke=\"#e3e3e3\"/>\
-<text x=\"{:.1}\" y=\"{:.2}\" text-anchor=\"end\" font-size=\"13\">{}</text>",
-            x0 - 6.0,
-            p + 4.0,
-            esc(label)
-        );
-    }
-    let _ = write!(
-        o,
-        "<rect x=\"{x0}\" y=\"{y0}\" width=\"{:.1}\" height=\"{:.1}\" fill=\"none\" stroke=\"#444\"/>\
-<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\" font-size=\"14\">{}</text>\
-<text transform=\"translate({:.1},{:.1}) rotate(-90)\" text-anchor=\"middle\" font-size=\"14\">{}</text>",
-        x1 - x0,
-        y1 - y0,
-        (x0 + x1) / 2.0,
-        h - 14.0,
-        esc(&s.x_label),
-        22.0,
-        (y0 + y1) / 2.0,
-        esc(&s.y_label)
-    );
-    let _ = write!(o, "<g clip-path=\"url(#clip-{id})\">");
-    for v in s.vlines.iter().filter_map(|v| x.map(*v)) {
-        let _ = write!(
-            o,
-            "<line x1=\"{0:.2}\" y1=\"{y0}\" x2=\"{0:.2}\" y2=\"{y1}\" stroke=\"#777\"/>",
-            px(v)
-        );
-    }
-    for v in s.hlines.iter().filter_map(|v| y.map(*v)) {
-        let _ = write!(
-            o,
-            "<line x1=\"{x0}\" y1=\"{0:.2}\" x2=\"{x1}\" y2=\"{0:.2}\" stroke=\"#777\"/>",
-            py(v)
-        );
-    }
-    for (i, m) in chart.marks.iter().enumerate() {
-        if let Some(v) = x.map(m.x) {
-            let p = px(v);
-            // A label in the right half reads leftwards from its line, so it stays inside.
-            let right = p > (x0 + x1) / 2.0;
-            let _ = write!(o, "<line x1=\"{p:.2}\" y1=\"{y0}\" x2=\"{p:.2}\" y2=\"{y1}\" stroke=\"#555\" stroke-dasharray=\"3 3\"/>\
-<text x=\"{:.2}\" y=\"{:.1}\" font-size=\"12\" fill=\"#333\"{}>{}</text>", if right { p - 4.0 } else { p + 4.0 }, y0 + 15.0 + 15.0 * (i % 3) as f64, if right { " text-anchor=\"end\"" } else { "" }, esc(&m.label));
-        }
-    }
-    // The front first, under every method's line.
-    let front = |ser: &&Series| chart.front.as_deref() == Some(ser.name.as_str());
-    for ser in series.iter().filter(front) {
-        let pts: Vec<(f64, f64)> = ser
-            .points
-            .iter()
-            .filter_map(|&(a, b)| Some((px(x.map(a)?), py(y.map(b)?))))
-            .collect();
-        let line: Vec<String> = thin(&pts)
-            .iter()
-            .map(|(a, b)| format!("{a:.2},{b:.2}"))
-            .collect();
-        let _ = write!(o, "<polyline fill=\"none\" stroke=\"{FRONT}\" stroke-width=\"9\" stroke-linejoin=\"round\" stroke-linecap=\"round\" points=\"{}\"/>", line.join(" "));
-    }
-    for (i, ser) in series.iter().enumerate().filter(|(_, s)| !front(s)) {
-        let (k, dash, markers) = style(chart, series, shared, i, ser);
-        let color = PALETTE[k % PALETTE.len()];
-        let pts: Vec<(f64, f64)> = ser
-            .points
-            .iter()
-            .filter_map(|&(a, b)| Some((px(x.map(a)?), py(y.map(b)?))))
-            .collect();
-        let line: Vec<String> = thin(&pts)
-            .iter()
-            .map(|(a, b)| format!("{a:.2},{b:.2}"))
-            .collect();
-        let _ = write!(o, "<polyline fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"{dash} stroke-linejoin=\"round\" points=\"{}\"/>", line.join(" "));
-        if markers {
-            for (a, b) in &pts {
-                o.push_str(&marker(k, *a, *b, color));
-            }
-        }
-    }
-    o.push_str("</g>");
-    if shared.is_none() {
-        // The legend, in its own column.
-        for (i, ser) in series.iter().enumerate() {
-            let ly = y0 + 10.0 + 20.0 * i as f64;
-            legend_entry(
-                &mut o,
-                x1 + 14.0,
-                ly,
-                ser,
-                front(&ser),
-                style(chart, series, None, i, ser),
-            );
-        }
-    }
-    o
 }
 
 /// One legend entry at (`lx`, `ly`): a short stretch of the series' line (or the front's band)

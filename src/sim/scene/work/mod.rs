@@ -90,12 +90,13 @@
 //!   spurious zeros and 3 took more than 1e6 steps; `tests/sim/penalty/refusals.rs` sweeps it
 //!   again.
 
+mod springs;
+
 use crate::ladder::Ladder;
 use crate::sim::exact::{flat::floor_duration, PhaseOne};
 use crate::sim::integrators::card::PenaltyFit;
 use crate::sim::integrators::{card, Control, TABLE};
 use crate::sim::lead_in::linear_lead_in;
-use crate::sim::penalty::confirm::{rigid_separation_angle, separation_bound};
 use crate::sim::penalty::plan::too_close_to_flat;
 use crate::sim::penalty::start::{rigid_forces, OMEGA2};
 use crate::sim::penalty::Contact;
@@ -264,31 +265,14 @@ pub(in crate::sim) fn check_work(
             "penalty springs of k l/(m g) = {kappa:e}, c √(l/g)/m = {gamma:e} vibrate at up to 2√κ + 4γ = {omega:.3e} per √(l/g)"
         );
         match control {
-            Control::Fixed(h) => {
-                let (limit, why) = match card(method).filter(|c| c.gains_energy_on_oscillations()) {
-                    Some(c) => (
-                        (0.02 / (omega * omega * t_s)).min(MAX_STEP_FREQUENCY / omega),
-                        format!(
-                            "{} gains energy on every oscillation, by up to (h ω)² a step",
-                            c.title
-                        ),
-                    ),
-                    None => (
-                        MAX_STEP_FREQUENCY / omega,
-                        "h ω ≤ 0.2 to follow them".into(),
-                    ),
-                };
-                if h / unit > limit {
-                    return Err(cx.err(
-                        step_span,
-                        "integrator.step",
-                        format!(
-                            "{springs} ({why}); allowed: a step ≤ {:e} s ({limit:e} √(l/g)), or method = \"radau5\"",
-                            limit * unit
-                        ),
-                    ));
-                }
-            }
+            Control::Fixed(h) => springs::check_fixed_step(
+                cx,
+                step_span.clone(),
+                method,
+                (h, unit, t_s),
+                omega,
+                &springs,
+            )?,
             Control::Tolerance(_) if steps[0] > MAX_STEPS as f64 / EXPLICIT_MARGIN => {
                 return Err(cx.err(
                     Some(i.method.span()),
@@ -311,42 +295,7 @@ pub(in crate::sim) fn check_work(
                 }
             }
             Control::Tolerance(tol) => {
-                let rate = start.1 * unit;
-                let (theta_i, fw0) = starting_wall_force(start.0, rate);
-                let rigid = rigid_separation_angle(start.0, rate);
-                let to_go = (rigid - theta_i).abs();
-                let (least, largest) = (RESOLVED_WALL_FORCE * tol, fw0 / RESOLVED_WALL_FORCE);
-                let far = !is_implicit(method) && to_go > separation_bound(kappa, rigid, 1, tol);
-                let tol_span = i.tolerance.as_ref().map(|t| t.span());
-                if far && fw0 > 0.0 && tol > largest {
-                    return Err(cx.err(
-                        tol_span,
-                        "integrator.tolerance",
-                        format!(
-                            "the wall force where the integration starts is {fw0:.3e} m g, below {RESOLVED_WALL_FORCE} times the tolerance ({least:.3e} m g), {to_go:.3e} rad before the separation: \"{method}\" holds the spring forces to the tolerance a step, so its errors excite the contact's vibration (κ = {kappa:e}) by about the wall force and the force crosses zero at once (a spurious separation); allowed: tolerance ≤ {largest:e}, or method = \"radau5\""
-                        ),
-                    ));
-                }
-                // θ0 = 0 with a push (F8; or a subnormal θ0, where the force underflows to 0):
-                // no wall force at the start, only its rate.
-                let need = card(method).and_then(|c| c.penalty_fit);
-                if let Some(need) = need
-                    .map(|f| f.wall_force_rate)
-                    .filter(|_| far && fw0 == 0.0)
-                {
-                    let growth = wall_force_rate(theta_i, rate);
-                    let largest = growth / need;
-                    if tol > largest {
-                        return Err(cx.err(
-                            tol_span,
-                            "integrator.tolerance",
-                            format!(
-                                "the wall force starts at 0 m g (θ0 = {theta_i:e}) and grows by {growth:.3e} m g in the first √(l/g), below {need} times the tolerance ({:.3e} m g), {to_go:.3e} rad before the separation: \"{method}\" holds the spring forces to the tolerance a step, so while the wall force is that small its errors excite the contact's vibration (κ = {kappa:e}) by more and the force crosses zero early (a spurious separation); allowed: tolerance ≤ {largest:e}, or method = \"radau5\"",
-                                need * tol
-                            ),
-                        ));
-                    }
-                }
+                springs::check_wall_force_resolved(cx, i, method, tol, (start, unit), kappa)?
             }
         }
         // A start near the floor the springs cannot tell from flat (F3, `crate::sim::penalty::plan`).
@@ -362,6 +311,18 @@ pub(in crate::sim) fn check_work(
     let Control::Fixed(h) = control else {
         return Ok(());
     };
+    check_step_count(cx, step_span, h, steps, unit)
+}
+
+/// A fixed step `h` (s) makes at most [`MAX_STEPS`] steps in each phase of about `steps`
+/// steps; else the least step that does, in s and in units of `unit` = √(l/g) s.
+fn check_step_count(
+    cx: &Ctx,
+    step_span: Option<std::ops::Range<usize>>,
+    h: f64,
+    steps: [f64; 2],
+    unit: f64,
+) -> Result<(), SceneError> {
     for (phase, n) in ["wall", "floor"].into_iter().zip(steps) {
         if n > MAX_STEPS as f64 {
             let least = h * n / MAX_STEPS as f64;

@@ -12,17 +12,19 @@
 //! to a real and a complex system): for the ladder N is 2 or 4, where that is simplest and fast.
 //! The dense output is the collocation polynomial itself.
 
+mod stages;
+
 use super::adaptive::{advance_time, start_step, trial_step};
 use super::Integrator;
-use super::dense_lu::{lu_factor, lu_solve};
-use super::{all_finite, eval, Ode, Stats, StepError, Stepper};
+use super::dense_lu::lu_factor;
+use super::{all_finite, Ode, Stats, StepError, Stepper};
 use num_dual::Dual64;
 use super::card::{Card, ControlKind, Stiffness, Sweep};
 use super::Control;
 
 const SQ6: f64 = 2.449_489_742_783_178;
 /// Collocation nodes c1, c2, c3 = 1.
-const C: [f64; 3] = [(4.0 - SQ6) / 10.0, (4.0 + SQ6) / 10.0, 1.0];
+pub(super) const C: [f64; 3] = [(4.0 - SQ6) / 10.0, (4.0 + SQ6) / 10.0, 1.0];
 /// The Radau IIA(5) matrix (Hairer-Wanner II, Table IV.5.6).
 pub const A: [[f64; 3]; 3] = [
     [
@@ -38,13 +40,13 @@ pub const A: [[f64; 3]; 3] = [
     [(16.0 - SQ6) / 36.0, (16.0 + SQ6) / 36.0, 1.0 / 9.0],
 ];
 /// Error-estimate weights of radau5.f (`DD1`, `DD2`, `DD3`).
-const DD: [f64; 3] = [
+pub(super) const DD: [f64; 3] = [
     -(13.0 + 7.0 * SQ6) / 3.0,
     (-13.0 + 7.0 * SQ6) / 3.0,
     -1.0 / 3.0,
 ];
 /// Newton iterations allowed per step.
-const MAX_NEWTON: usize = 7;
+pub(super) const MAX_NEWTON: usize = 7;
 
 /// The real eigenvalue of A⁻¹ (radau5.f `U1`), 30 / (6 + 81^(1/3) - 9^(1/3)).
 pub fn u1() -> f64 {
@@ -68,7 +70,7 @@ pub fn jacobian<const N: usize, S: Ode<N>>(sys: &S, t: f64, y: &[f64; N]) -> [[f
 /// The weighted RMS norm of [`super::error_norm`] with the index-2 components' weights
 /// ([`Ode::index2`]) divided by min(h, 1): their values are known only to (rounding)/h, and a
 /// fixed weight would make the error estimate grow as h shrinks (a step-size collapse).
-fn step_norm<const N: usize, S: Ode<N>>(
+pub(super) fn step_norm<const N: usize, S: Ode<N>>(
     sys: &S,
     err: &[f64; N],
     y0: &[f64; N],
@@ -202,7 +204,7 @@ impl<const N: usize> Radau5<N> {
     }
 
     /// The collocation polynomial of the last step at `s = (t - t_prev) / h` (may extrapolate).
-    fn collocation(&self, s: f64) -> [f64; N] {
+    pub(super) fn collocation(&self, s: f64) -> [f64; N] {
         let mut out = self.y_prev;
         for a in 0..3 {
             let mut l = s / C[a];
@@ -245,8 +247,6 @@ impl<const N: usize> Stepper<N> for Radau5<N> {
         if self.jac.is_none() {
             self.refresh_jacobian(sys, t, &y);
         }
-        let n3 = 3 * N;
-        let fnewt = (10.0 * f64::EPSILON / self.newton_rtol).max(0.03);
         loop {
             let (h, last) = trial_step(self.h, h_max, t, t_stop)?;
             let Some(jac) = self.jac else {
@@ -257,63 +257,8 @@ impl<const N: usize> Stepper<N> for Radau5<N> {
                 self.stats.rejected += 1;
                 continue;
             }
-            // Predictor: extrapolate the last collocation polynomial (zero at the start).
-            let mut z = [[0.0; N]; 3];
-            if self.have_prev {
-                let hp = self.t - self.t_prev;
-                for (a, za) in z.iter_mut().enumerate() {
-                    let u = self.collocation(1.0 + C[a] * h / hp);
-                    *za = std::array::from_fn(|i| u[i] - y[i]);
-                }
-            }
-            let mut converged = false;
-            let mut prev_norm = f64::INFINITY;
-            let mut contraction = 0.0;
-            let mut eta = self.eta.max(f64::EPSILON).powf(0.8);
-            for _ in 0..MAX_NEWTON {
-                let mut fz = [[0.0; N]; 3];
-                for a in 0..3 {
-                    let ya: [f64; N] = std::array::from_fn(|i| y[i] + z[a][i]);
-                    fz[a] = eval(sys, t + C[a] * h, &ya);
-                }
-                self.stats.rhs_evals += 3;
-                let mut rhs = vec![0.0; n3];
-                for a in 0..3 {
-                    for i in 0..N {
-                        let hf: f64 = (0..3).map(|b| A[a][b] * fz[b][i]).sum();
-                        rhs[a * N + i] = h * hf - z[a][i];
-                    }
-                }
-                lu_solve(&self.lu, &self.piv, &mut rhs, n3);
-                let mut norm = 0.0f64;
-                for a in 0..3 {
-                    let dz: [f64; N] = std::array::from_fn(|i| rhs[a * N + i]);
-                    norm = norm.max(step_norm(sys, &dz, &y, &y, self.newton_rtol, h));
-                    for i in 0..N {
-                        z[a][i] += dz[i];
-                    }
-                }
-                if !norm.is_finite() {
-                    break;
-                }
-                // Convergence test of radau5.f: η ‖Δz‖ ≤ κ with η = θ/(1−θ) from the observed
-                // contraction θ; the first iteration uses the last step's η (damped), as there.
-                if prev_norm.is_finite() {
-                    let rate = norm / prev_norm;
-                    if rate >= 1.0 {
-                        break;
-                    }
-                    contraction = rate;
-                    eta = rate / (1.0 - rate);
-                }
-                if norm == 0.0 || eta * norm <= fnewt {
-                    self.eta = eta;
-                    converged = true;
-                    break;
-                }
-                prev_norm = norm;
-            }
-            if !converged {
+            let mut z = self.predict(&y, h);
+            let Some(contraction) = self.newton(sys, t, &y, h, &mut z) else {
                 self.stats.rejected += 1;
                 // An old Jacobian first: form it here and retry the same step (radau5.f).
                 if !self.jac_fresh {
@@ -325,32 +270,9 @@ impl<const N: usize> Stepper<N> for Radau5<N> {
                     return Err(StepError::NewtonFailed { t });
                 }
                 continue;
-            }
+            };
             let y1: [f64; N] = std::array::from_fn(|i| y[i] + z[2][i]);
-            // Embedded error estimate (radau5.f, ESTRAD): (U1/h I - J)^-1 (f0 + Σ DD_a z_a / h).
-            let ok = self.lu_h == h;
-            let f2: [f64; N] =
-                std::array::from_fn(|i| (0..3).map(|a| DD[a] * z[a][i]).sum::<f64>() / h);
-            let mut est: Vec<f64> = (0..N).map(|i| f0[i] + f2[i]).collect();
-            let mut err = f64::INFINITY; // clamp, not max: NaN.max(1e-10) is 1e-10; NaN rejects
-            if ok {
-                lu_solve(&self.e1, &self.piv1, &mut est, N);
-                let e: [f64; N] = std::array::from_fn(|i| est[i]);
-                err = step_norm(sys, &e, &y, &y1, self.rtol, h).clamp(1e-10, f64::INFINITY);
-                if err >= 1.0 {
-                    // The second estimate, (U1/h I − J)⁻¹ applied once more, filters the stiff
-                    // components. radau5.f forms it only on the first or a rejected step, so on
-                    // stiff springs (κ ≥ 1e8) nearly every step was first rejected on the raw
-                    // estimate and then accepted on this one (205 of 208 at κ = 1e12).
-                    let yt: [f64; N] = std::array::from_fn(|i| y[i] + e[i]);
-                    let ft = eval(sys, t, &yt);
-                    self.stats.rhs_evals += 1;
-                    let mut est2: Vec<f64> = (0..N).map(|i| ft[i] + f2[i]).collect();
-                    lu_solve(&self.e1, &self.piv1, &mut est2, N);
-                    let e2: [f64; N] = std::array::from_fn(|i| est2[i]);
-                    err = step_norm(sys, &e2, &y, &y1, self.rtol, h).clamp(1e-10, f64::INFINITY);
-                }
-            }
+            let err = self.error_estimate(sys, t, (&y, &y1), &f0, &z, h);
             let quot = (err.powf(0.25) / 0.9).clamp(0.125, 5.0);
             let h_new = h / quot;
             if err < 1.0 && all_finite(&y1) {
