@@ -45,7 +45,7 @@ pub fn twin_lines(e: &Equation) -> Vec<String> {
         .into_iter()
         .map(|t| {
             format!(
-                "{} and {} ({} and {}) are equal at every state of this display: writing one for the other is invisible here to the values; {} for {}: {}",
+                "{} and {} ({} and {}) are equal at every state of this display, so no value sees one written for the other (invisible here); {} for {}: {}",
                 unicode(&t.printed),
                 unicode(&t.other),
                 t.quantities.0,

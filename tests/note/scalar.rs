@@ -39,3 +39,13 @@ fn rational_ratio_is_exact() {
     assert_eq!(third.clone() + third.clone() + third, Rational::int(1));
     assert_ne!(f64::ratio(1, 3) * 3.0 - 1.0, f64::ratio(1, 7));
 }
+
+/// `to_f64` reads the value, never the derivative, in each type that carries one: a dual
+/// number 2.5 + 7ε and a jet are 2.5 (a derivative type's `to_f64` is reached by no path of the
+/// crate itself, so only this test holds it).
+#[test]
+fn to_f64_reads_the_value_part() {
+    assert_eq!(Scalar::to_f64(&Dual::<f64>::new(2.5, 7.0)), 2.5);
+    let jet = Rational::lift(Rational::ratio(5, 2), Rational::int(7));
+    assert_eq!(Scalar::to_f64(&jet), 2.5);
+}

@@ -52,7 +52,10 @@ fn reduce_square_rationalises_a_surd_in_the_denominator() {
     let var = v.as_var().expect("v is a variable");
     let two = Sym::int(2);
     let one_over = Sym::int(1) / (Sym::int(1) + v.clone());
-    assert_eq!(one_over.reduce_square(var, &two), (Sym::int(-1), Sym::int(1)));
+    assert_eq!(
+        one_over.reduce_square(var, &two),
+        (Sym::int(-1), Sym::int(1))
+    );
     let v_over = v.clone() / (Sym::int(1) + v.clone());
     assert_eq!(v_over.reduce_square(var, &two), (Sym::int(2), Sym::int(-1)));
     // A planted wrong relation (v² = 3) gives another pair: 1/(1 + √3) = (√3 − 1)/2.

@@ -12,7 +12,9 @@ use sliding_ladder::verify::table::{
     render, render_for, residual, width, wrap, COLUMNS, FULL_WIDTH, NARROW_COLUMNS, NARROW_WIDTH,
     TITLE_WIDTH,
 };
-use sliding_ladder::verify::{judge, verify_extensions, EquationResult, OffMotion, Status};
+use sliding_ladder::verify::{
+    judge, print_coverage, verify_extensions, EquationResult, OffMotion, Status,
+};
 
 fn tiny() -> Config {
     Config {
@@ -180,6 +182,39 @@ fn filling_keeps_labels_formulas_and_every_word() {
     }
     // A line that fits is left as it is, spacing and all.
     assert_eq!(fill_line("  a   b", 100), "  a   b");
+}
+
+/// A label of two words (one space inside it) is one label: the text continues after the
+/// label's gap of two or more spaces, not after its first word.
+#[test]
+fn filling_keeps_a_label_of_two_words_whole() {
+    let line =
+        "  off motion  what the display does when θ̈ is not the equation of motion's, as a word";
+    let filled = fill_line(line, 40);
+    let lines: Vec<&str> = filled.lines().collect();
+    assert!(lines.len() > 1, "{filled}");
+    assert!(lines[0].starts_with("  off motion  what"), "{filled}");
+    for l in &lines[1..] {
+        assert!(
+            l.starts_with(&" ".repeat(14)) && !l[14..].starts_with(' '),
+            "continues under the text, column 14: {filled}"
+        );
+    }
+}
+
+/// The print coverage of `ladder verify`, on three rows made by hand: one fully parsed with its
+/// Rust forms matching (2 of 2 forms), one parsed in part (1 of 3), one with no print at all
+/// (an extension, left out): 1 of 2 displays whole, 3 of 5 forms, 1 matching.
+#[test]
+fn print_coverage_counts_displays_forms_and_matches() {
+    let row = |forms: usize, parsed: usize, matches: bool| EquationResult {
+        print_forms: forms,
+        print_parsed: parsed,
+        print_matches_code: matches,
+        ..judge(&equation(25), &[])
+    };
+    let rows = [row(2, 2, true), row(3, 1, false), row(0, 0, true)];
+    assert_eq!(print_coverage(&rows), (1, 2, 3, 5, 1));
 }
 
 #[test]
