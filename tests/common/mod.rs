@@ -99,6 +99,14 @@ pub fn copy_dir(from: &Path, to: &Path) {
     }
 }
 
+/// The registered display numbered `n` (the note's (1)-(90) or an extension's).
+pub fn equation(n: u32) -> sliding_ladder::registry::Equation {
+    sliding_ladder::registry::equations()
+        .into_iter()
+        .find(|e| e.number == n)
+        .expect("registered")
+}
+
 /// A fresh copy of the crate's `equations/` (with its figures), `ladder-{tag}-{pid}-equations`
 /// under the system temp directory: a folder to edit and hand to `--equations`.
 pub fn copy_of_equations(tag: &str) -> PathBuf {

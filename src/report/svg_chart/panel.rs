@@ -179,36 +179,34 @@ fn guides(o: &mut String, f: &Frame, chart: &Chart) {
     }
 }
 
+/// A series' points in the panel's pixels, and its polyline's `points` attribute (thinned).
+fn plotted(f: &Frame, ser: &Series) -> (Vec<(f64, f64)>, String) {
+    let pts: Vec<(f64, f64)> = ser
+        .points
+        .iter()
+        .filter_map(|&(a, b)| Some((f.px(f.x.map(a)?), f.py(f.y.map(b)?))))
+        .collect();
+    let line: Vec<String> = thin(&pts)
+        .iter()
+        .map(|(a, b)| format!("{a:.2},{b:.2}"))
+        .collect();
+    (pts, line.join(" "))
+}
+
 /// The series: the front first, under every method's line, then each method's line with its
 /// markers.
 fn lines(o: &mut String, f: &Frame, chart: &Chart, series: &[Series], shared: Option<&[String]>) {
     // The front first, under every method's line.
     let front = |ser: &&Series| chart.front.as_deref() == Some(ser.name.as_str());
     for ser in series.iter().filter(front) {
-        let pts: Vec<(f64, f64)> = ser
-            .points
-            .iter()
-            .filter_map(|&(a, b)| Some((f.px(f.x.map(a)?), f.py(f.y.map(b)?))))
-            .collect();
-        let line: Vec<String> = thin(&pts)
-            .iter()
-            .map(|(a, b)| format!("{a:.2},{b:.2}"))
-            .collect();
-        let _ = write!(*o, "<polyline fill=\"none\" stroke=\"{FRONT}\" stroke-width=\"9\" stroke-linejoin=\"round\" stroke-linecap=\"round\" points=\"{}\"/>", line.join(" "));
+        let (_, line) = plotted(f, ser);
+        let _ = write!(*o, "<polyline fill=\"none\" stroke=\"{FRONT}\" stroke-width=\"9\" stroke-linejoin=\"round\" stroke-linecap=\"round\" points=\"{line}\"/>");
     }
     for (i, ser) in series.iter().enumerate().filter(|(_, s)| !front(s)) {
         let (k, dash, markers) = style(chart, series, shared, i, ser);
         let color = PALETTE[k % PALETTE.len()];
-        let pts: Vec<(f64, f64)> = ser
-            .points
-            .iter()
-            .filter_map(|&(a, b)| Some((f.px(f.x.map(a)?), f.py(f.y.map(b)?))))
-            .collect();
-        let line: Vec<String> = thin(&pts)
-            .iter()
-            .map(|(a, b)| format!("{a:.2},{b:.2}"))
-            .collect();
-        let _ = write!(*o, "<polyline fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"{dash} stroke-linejoin=\"round\" points=\"{}\"/>", line.join(" "));
+        let (pts, line) = plotted(f, ser);
+        let _ = write!(*o, "<polyline fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"{dash} stroke-linejoin=\"round\" points=\"{line}\"/>");
         if markers {
             for (a, b) in &pts {
                 o.push_str(&marker(k, *a, *b, color));

@@ -2,10 +2,11 @@
 //! models and holds as printed; an edited coefficient, a silently corrected misprint or a symbol
 //! the table does not know makes the display fail, naming the form.
 
+use crate::common::equation;
 use sliding_ladder::print::parser::canonical;
 use sliding_ladder::registry::check::{run_check, Config};
 use sliding_ladder::registry::print_check::{check_print, check_print_with, misprints};
-use sliding_ladder::registry::{equations, printed_latex, Equation};
+use sliding_ladder::registry::{equations, printed_latex};
 use sliding_ladder::verify::{judge, judge_print, Status};
 
 fn quick() -> Config {
@@ -14,13 +15,6 @@ fn quick() -> Config {
         exact_points: 1,
         seed: 9,
     }
-}
-
-fn equation(n: u32) -> Equation {
-    equations()
-        .into_iter()
-        .find(|e| e.number == n)
-        .expect("registered")
 }
 
 #[test]

@@ -5,9 +5,10 @@
 //! arms for (54); Hu's dL_C/dt by automatic differentiation for (62); the particle models of
 //! (28), (49), (68)), and the failure names the form and that value.
 
+use crate::common::equation;
 use sliding_ladder::registry::check::Config;
 use sliding_ladder::registry::print_check::check_print;
-use sliding_ladder::registry::{equations, printed_latex, Equation};
+use sliding_ladder::registry::{equations, printed_latex};
 
 fn quick() -> Config {
     Config {
@@ -15,13 +16,6 @@ fn quick() -> Config {
         exact_points: 1,
         seed: 37,
     }
-}
-
-fn equation(n: u32) -> Equation {
-    equations()
-        .into_iter()
-        .find(|e| e.number == n)
-        .expect("registered")
 }
 
 /// (display, printed text, typo in a correct form, the independent value the failure names).

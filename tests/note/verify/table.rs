@@ -3,8 +3,9 @@
 //! found, what a definition was checked against, the book line of each row, and a legend for
 //! every column. Each property is shown to fail on a table or legend that lacks it.
 
+use crate::common::equation;
 use sliding_ladder::registry::check::{run_check, Config, TOLERANCE_FACTOR};
-use sliding_ladder::registry::{equations, Equation};
+use sliding_ladder::registry::equations;
 use sliding_ladder::verify::fill::{fill, fill_line, widest, DEFAULT_WIDTH};
 use sliding_ladder::verify::legend::{legend, unexplained_columns};
 use sliding_ladder::verify::summary::schwartz_zippel_sentence;
@@ -22,10 +23,6 @@ fn tiny() -> Config {
         exact_points: 2,
         seed: 7,
     }
-}
-
-fn equation(n: u32) -> Equation {
-    equations().into_iter().find(|e| e.number == n).unwrap()
 }
 
 /// The row of `n`, judged from its checks run on a few states (fast).
