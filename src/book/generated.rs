@@ -83,43 +83,9 @@ pub fn errata_page(
     notes: &str,
     problems: &mut Vec<String>,
 ) -> String {
-    // A prose erratum is LaTeX when it holds a TeX command, words otherwise.
-    let mut prose = |s: &str| -> String {
-        if !s.contains('\\') {
-            return esc(s);
-        }
-        mathml(s, false).unwrap_or_else(|e| {
-            problems.push(format!("errata.html: {e}"));
-            "[did not typeset]".into()
-        })
-    };
     let mut claims = String::new();
     for c in &data.claims {
-        let verdict = match (c.holds, c.printed_fails, c.erratum) {
-            (true, Some(true), Some((p, k))) => format!(
-                "prose erratum{}: printed {} fails, corrected {} holds{}",
-                if c.imprecise { " (imprecise)" } else { "" },
-                prose(p),
-                prose(k),
-                c.reading_latex
-                    .as_deref()
-                    .and_then(|r| super::panel::markdown_math(r).ok())
-                    .map(|r| format!("; {r}"))
-                    .unwrap_or_default()
-            ),
-            (true, None, Some((p, k))) => format!(
-                "prose slip (the formula is right): printed {}, meant {}",
-                prose(p),
-                prose(k)
-            ),
-            (true, None, None) => "holds".into(),
-            _ => "<strong>FAILED</strong>".into(),
-        };
-        claims.push_str(&format!(
-            "<tr><td>{}</td><td>{}</td><td>{verdict}</td></tr>\n",
-            esc(c.location),
-            esc(c.claim)
-        ));
+        claims.push_str(&claim_row(c, problems));
     }
     let mut out = String::from(
         "<h1>Errata of the note</h1>\n<p>Each misprint below is computed when the book is built: \
@@ -127,33 +93,7 @@ the printed form fails exactly, the corrected form holds, and their difference i
 symbolically (with s = sin θ, c = cos θ, s² + c² = 1).</p>\n",
     );
     for e in &data.errata {
-        let label = format!("({})", e.number);
-        let title = data
-            .results
-            .iter()
-            .find(|r| r.number == e.number)
-            .map(|r| format!(" {}", esc(r.title)))
-            .unwrap_or_default();
-        out.push_str(&format!(
-            "<section class=\"erratum\" id=\"erratum-{n}\" data-erratum=\"{n}\"><h2>{link}{title}</h2>\n<dl>\
-<dt>Printed</dt><dd>{p}</dd><dt>Corrected</dt><dd>{c}</dd><dt>{dl}</dt><dd>{d}</dd>\
-<dt>Residual at an exact point (SI units)</dt><dd>printed {pr} {ru}, corrected {cr}</dd><dt>Units</dt><dd>{u}</dd>\
-<dt>Why</dt><dd>{why}</dd></dl></section>\n",
-            n = e.number,
-            link = eq_link(home, e.number, &label),
-            p = block(e.printed, &label, problems),
-            c = block(e.corrected, &label, problems),
-            dl = super::panel::misprint_label(e),
-            d = super::panel::misprint(e).unwrap_or_else(|x| {
-                problems.push(format!("errata.html: {label}: {x}"));
-                "<p class=\"math-error\">[did not typeset]</p>".into()
-            }),
-            ru = esc(&e.residual_unit),
-            pr = esc(&e.printed_residual_exact),
-            cr = esc(&e.corrected_residual),
-            u = esc(e.units.doc_line().trim_start_matches("- ")),
-            why = esc(e.why),
-        ));
+        out.push_str(&erratum_section(data, home, e, problems));
     }
     out.push_str("<h2>Claims of the prose</h2>\n<table><thead><tr><th>where</th><th>claim</th><th>verdict</th></tr></thead><tbody>\n");
     out.push_str(&claims);
@@ -164,6 +104,84 @@ symbolically (with s = sin θ, c = cos θ, s² + c² = 1).</p>\n",
             .replacen("</h1>", "</h2>", 1),
     );
     out
+}
+
+/// A prose erratum's wording: MathML when it holds a TeX command, words otherwise.
+fn prose(s: &str, problems: &mut Vec<String>) -> String {
+    if !s.contains('\\') {
+        return esc(s);
+    }
+    mathml(s, false).unwrap_or_else(|e| {
+        problems.push(format!("errata.html: {e}"));
+        "[did not typeset]".into()
+    })
+}
+
+/// One claim of the prose as a table row: where, what, and its verdict (holds, a prose erratum
+/// with printed and corrected wording, a slip of wording, or FAILED).
+fn claim_row(c: &crate::verify::claims::Claim, problems: &mut Vec<String>) -> String {
+    let verdict = match (c.holds, c.printed_fails, c.erratum) {
+        (true, Some(true), Some((p, k))) => format!(
+            "prose erratum{}: printed {} fails, corrected {} holds{}",
+            if c.imprecise { " (imprecise)" } else { "" },
+            prose(p, problems),
+            prose(k, problems),
+            c.reading_latex
+                .as_deref()
+                .and_then(|r| super::panel::markdown_math(r).ok())
+                .map(|r| format!("; {r}"))
+                .unwrap_or_default()
+        ),
+        (true, None, Some((p, k))) => format!(
+            "prose slip (the formula is right): printed {}, meant {}",
+            prose(p, problems),
+            prose(k, problems)
+        ),
+        (true, None, None) => "holds".into(),
+        _ => "<strong>FAILED</strong>".into(),
+    };
+    format!(
+        "<tr><td>{}</td><td>{}</td><td>{verdict}</td></tr>\n",
+        esc(c.location),
+        esc(c.claim)
+    )
+}
+
+/// One misprint's section: printed and corrected forms, their difference, the residuals at an
+/// exact point, the units verdict and why.
+fn erratum_section(
+    data: &BookData,
+    home: &BTreeMap<u32, String>,
+    e: &crate::verify::errata::ErratumReport,
+    problems: &mut Vec<String>,
+) -> String {
+    let label = format!("({})", e.number);
+    let title = data
+        .results
+        .iter()
+        .find(|r| r.number == e.number)
+        .map(|r| format!(" {}", esc(r.title)))
+        .unwrap_or_default();
+    format!(
+        "<section class=\"erratum\" id=\"erratum-{n}\" data-erratum=\"{n}\"><h2>{link}{title}</h2>\n<dl>\
+<dt>Printed</dt><dd>{p}</dd><dt>Corrected</dt><dd>{c}</dd><dt>{dl}</dt><dd>{d}</dd>\
+<dt>Residual at an exact point (SI units)</dt><dd>printed {pr} {ru}, corrected {cr}</dd><dt>Units</dt><dd>{u}</dd>\
+<dt>Why</dt><dd>{why}</dd></dl></section>\n",
+        n = e.number,
+        link = eq_link(home, e.number, &label),
+        p = block(e.printed, &label, problems),
+        c = block(e.corrected, &label, problems),
+        dl = super::panel::misprint_label(e),
+        d = super::panel::misprint(e).unwrap_or_else(|x| {
+            problems.push(format!("errata.html: {label}: {x}"));
+            "<p class=\"math-error\">[did not typeset]</p>".into()
+        }),
+        ru = esc(&e.residual_unit),
+        pr = esc(&e.printed_residual_exact),
+        cr = esc(&e.corrected_residual),
+        u = esc(e.units.doc_line().trim_start_matches("- ")),
+        why = esc(e.why),
+    )
 }
 
 /// The derivations of the equation of motion, checked.

@@ -3,6 +3,7 @@
 
 use crate::print::unicode::unicode;
 use crate::registry::check::Config;
+use crate::verify::claims::Claim;
 use crate::verify::errata::{errata, ErratumReport};
 use crate::verify::fill::fill;
 use clap::Args;
@@ -26,14 +27,9 @@ pub fn run(a: ErrataArgs) -> ExitCode {
     errata_command(a.json, &Config::default(), super::verify::columns(a.width))
 }
 
-/// Run `ladder errata`, its text filled to `columns`.
+/// Run `ladder errata`, its text filled to `columns`: the misprints, the prose claims and the
+/// units the prose states; exit 1 when a claim or an erratum's units witness does not hold.
 pub fn errata_command(json_out: bool, cfg: &Config, columns: usize) -> ExitCode {
-    // Every line of the text, filled to the terminal's width as it is printed.
-    macro_rules! say {
-        ($($arg:tt)*) => {
-            println!("{}", fill(&format!($($arg)*), columns))
-        };
-    }
     let list = errata(cfg);
     let prose = crate::verify::claims::claims();
     let all_good = prose
@@ -50,60 +46,14 @@ pub fn errata_command(json_out: bool, cfg: &Config, columns: usize) -> ExitCode 
         );
     } else {
         print!("{}", fill(&misprint_text(&list), columns));
-        say!("\nclaims made in the prose, checked exactly at three random states:");
+        say(
+            columns,
+            "\nclaims made in the prose, checked exactly at three random states:",
+        );
         for c in &prose {
-            let verdict = c.verdict();
-            say!("  {:<16} {}: {verdict}", c.location, c.claim);
-            if let Some((printed, corrected)) = c.erratum {
-                // LaTeX in --json; here, as the terminal reads it (a wording erratum is words,
-                // which the LaTeX reader would run together).
-                let read = |t: &str| {
-                    if t.contains('\\') {
-                        unicode(t)
-                    } else {
-                        t.to_string()
-                    }
-                };
-                say!(
-                    "  {:<16}   printed: {}   corrected: {}",
-                    "",
-                    read(printed),
-                    read(corrected)
-                );
-            }
-            if let Some(r) = &c.reading_latex {
-                say!(
-                    "  {:<16}   misprint: {}   (for any state; the correction is proved symbolically)",
-                    "",
-                    crate::verify::errata_reading::plain(r)
-                );
-            } else if let Some(d) = &c.difference_latex {
-                say!(
-                    "  {:<16}   printed − corrected = {}   (for any state; the correction is proved symbolically)",
-                    "",
-                    crate::print::unicode::unicode(d)
-                );
-            }
+            print_claim(c, columns);
         }
-    }
-    if !json_out {
-        say!("\nquantities stated in the prose, in dimensions (m: M, l: L, g: L T⁻², θ̇: T⁻¹):");
-        for p in crate::verify::units::prose_units() {
-            let detail = p
-                .units_detail
-                .map(|d| format!(" ({d})"))
-                .unwrap_or_default();
-            let fix = p
-                .corrected
-                .map(|c| format!("; corrected {}", c.name()))
-                .unwrap_or_default();
-            say!(
-                "  {:<20} {}: {}{detail}{fix}",
-                p.location,
-                p.stated,
-                p.units.name()
-            );
-        }
+        print_prose_units(columns);
     }
     if all_good {
         ExitCode::SUCCESS
@@ -117,6 +67,85 @@ pub fn errata_command(json_out: bool, cfg: &Config, columns: usize) -> ExitCode 
             "ladder errata: exit 1: {claims} prose claims do not hold as recorded, {units} errata fail their units witness"
         );
         ExitCode::from(1)
+    }
+}
+
+/// Print one line of the text, filled to the terminal's width.
+fn say(columns: usize, line: &str) {
+    println!("{}", fill(line, columns));
+}
+
+/// One claim of the prose with its verdict; for a prose erratum the printed and corrected
+/// wording and, when the correction is proved, the misprint's reading or difference.
+fn print_claim(c: &Claim, columns: usize) {
+    let verdict = c.verdict();
+    say(
+        columns,
+        &format!("  {:<16} {}: {verdict}", c.location, c.claim),
+    );
+    if let Some((printed, corrected)) = c.erratum {
+        // LaTeX in --json; here, as the terminal reads it (a wording erratum is words,
+        // which the LaTeX reader would run together).
+        let read = |t: &str| {
+            if t.contains('\\') {
+                unicode(t)
+            } else {
+                t.to_string()
+            }
+        };
+        say(
+            columns,
+            &format!(
+                "  {:<16}   printed: {}   corrected: {}",
+                "",
+                read(printed),
+                read(corrected)
+            ),
+        );
+    }
+    if let Some(r) = &c.reading_latex {
+        say(
+            columns,
+            &format!(
+                "  {:<16}   misprint: {}   (for any state; the correction is proved symbolically)",
+                "",
+                crate::verify::errata_reading::plain(r)
+            ),
+        );
+    } else if let Some(d) = &c.difference_latex {
+        say(columns, &format!(
+            "  {:<16}   printed − corrected = {}   (for any state; the correction is proved symbolically)",
+            "",
+            crate::print::unicode::unicode(d)
+        ));
+    }
+}
+
+/// The quantities the prose states, each with its dimensions (and the corrected form's, for a
+/// prose erratum).
+fn print_prose_units(columns: usize) {
+    say(
+        columns,
+        "\nquantities stated in the prose, in dimensions (m: M, l: L, g: L T⁻², θ̇: T⁻¹):",
+    );
+    for p in crate::verify::units::prose_units() {
+        let detail = p
+            .units_detail
+            .map(|d| format!(" ({d})"))
+            .unwrap_or_default();
+        let fix = p
+            .corrected
+            .map(|c| format!("; corrected {}", c.name()))
+            .unwrap_or_default();
+        say(
+            columns,
+            &format!(
+                "  {:<20} {}: {}{detail}{fix}",
+                p.location,
+                p.stated,
+                p.units.name()
+            ),
+        );
     }
 }
 

@@ -79,106 +79,33 @@ pub fn verify(
     let t = Instant::now();
     let results = match only {
         None => verify_all(cfg),
-        Some(spec) => {
-            // Pick the equations first (from rows judged without checks, which carry number,
-            // label and section), then run only their checks.
-            let all = crate::registry::equations();
-            let blank: Vec<_> = all.iter().map(|e| crate::verify::judge(e, &[])).collect();
-            match crate::verify::legend::only(blank, spec) {
-                Ok(keep) => crate::verify::verify_equations(
-                    all.into_iter()
-                        .filter(|e| keep.iter().any(|r| r.number == e.number))
-                        .collect(),
-                    cfg,
-                ),
-                Err(msg) => {
-                    eprintln!("ladder verify: {msg}");
-                    return ExitCode::from(2);
-                }
+        Some(spec) => match verify_only(spec, cfg) {
+            Ok(results) => results,
+            Err(msg) => {
+                eprintln!("ladder verify: {msg}");
+                return ExitCode::from(2);
             }
-        }
+        },
     };
     let docs = crate::docs::check_book(&crate::docs::note_dir());
     let methods = crate::verify::check_methods(cfg);
     let extensions = crate::verify::verify_extensions(cfg);
     let seconds = t.elapsed().as_secs_f64();
-    let (v, e, d, f) = counts(&results);
-    let (proved, sampled_only, proof_seconds) = proof_counts(&results);
+    let run = Run {
+        results: &results,
+        extensions: &extensions,
+        docs: &docs,
+        methods: &methods,
+        cfg,
+        seconds,
+    };
     if json_out {
-        let out = json!({
-            "equations": results,
-            "summary": {"verified": v, "erratum": e, "definition": d, "failed": f,
-                         "proved": proved, "sampled_only": sampled_only, "proof_seconds": proof_seconds,
-                         "proof_particle_counts": crate::registry::prove::PARTICLE_COUNTS.collect::<Vec<_>>(),
-                         "sz_bound_log10": worst_sz_log10(&results, |r| r.sz_bound_log10),
-                         "sz_bound_rational_log10": worst_sz_log10(&results, |r| r.sz_bound_rational_log10),
-                         "float_cases_per_check": cfg.float_cases, "exact_points_per_check": cfg.exact_points,
-                         "seed": cfg.seed, "seconds": seconds,
-                         "print": print_summary(&results)},
-            "docs": {"problems": docs.problems, "sections": docs.equations_found, "examples_run": docs.examples_run},
-            "methods": methods,
-            "extensions": extensions,
-        });
         println!(
             "{}",
-            serde_json::to_string_pretty(&out).expect("JSON of plain data")
+            serde_json::to_string_pretty(&json_report(&run)).expect("JSON of plain data")
         );
     } else {
-        let mut text = render_for(&results, wide, columns);
-        let line = |text: &mut String, s: String| {
-            text.push_str(&fill(&s, columns));
-            text.push('\n');
-        };
-        line(&mut text, summary_line(&results, cfg, seconds));
-        line(
-            &mut text,
-            format!("  {}", schwartz_zippel_sentence(&results)),
-        );
-        let (pd, nd, pf, nf, pm) = print_coverage(&results);
-        let (pp, ppf) = print_proof_counts(&results);
-        line(&mut text, format!(
-            "print: {pd} of {nd} displays parsed in full, {pf} of {nf} printed forms parsed and checked, {pm} displays with every Rust form matching the print (src/print/symbols.toml); {pp} of {nd} displays proved symbolically as printed ({ppf} forms)"
-        ));
-        text.push_str(&fill(&crate::verify::legend::legend(cfg), columns));
-        text.push_str(&fill(&crate::verify::legend::law_lines(&results), columns));
-        line(&mut text, "beyond the note: the floor phase after the ladder leaves the wall (equations/phase2.md)".into());
-        text.extend(
-            render_for(&extensions, wide, columns)
-                .lines()
-                .skip(if columns >= crate::verify::table::FULL_WIDTH {
-                    1
-                } else {
-                    2
-                })
-                .map(|l| format!("{l}\n")),
-        );
-        let failed_methods: Vec<_> = methods.iter().filter(|m| !m.passed).collect();
-        line(&mut text, format!(
-            "methods: {} derivations of the equation of motion checked (θ̈ solved from each equals (5); each residual vanishes on the motion only), {} failed",
-            methods.len(),
-            failed_methods.len()
-        ));
-        for m in failed_methods {
-            line(
-                &mut text,
-                format!("  ! {}: {}", m.name, m.problems.join("; ")),
-            );
-        }
-        line(
-            &mut text,
-            format!(
-                "docs: {} equations found in {}/*.md, {} example rows run, {} problems",
-                docs.equations_found,
-                crate::docs::note_dir().display(),
-                docs.examples_run,
-                docs.problems.len()
-            ),
-        );
-        for p in &docs.problems {
-            line(&mut text, format!("  ! {p}"));
-        }
-        line(&mut text, "details of one display: ladder show N (e.g. ladder show 25 --at \"m=2, l=1.5, theta=40deg\")".into());
-        print!("{text}");
+        print!("{}", text_report(&run, wide, columns));
     }
     let reasons = failure_reasons(&results, &extensions, docs.problems.len(), &methods);
     if reasons.is_empty() {
@@ -187,6 +114,122 @@ pub fn verify(
         eprintln!("ladder verify: exit 1: {}", reasons.join("; "));
         ExitCode::from(1)
     }
+}
+
+/// What one run of `ladder verify` found, for its JSON and its text.
+struct Run<'a> {
+    results: &'a [EquationResult],
+    extensions: &'a [EquationResult],
+    docs: &'a crate::docs::BookReport,
+    methods: &'a [crate::verify::MethodResult],
+    cfg: &'a Config,
+    seconds: f64,
+}
+
+/// `--only SPEC`: pick the equations first (from rows judged without checks, which carry
+/// number, label and section), then run only their checks.
+fn verify_only(spec: &str, cfg: &Config) -> Result<Vec<EquationResult>, String> {
+    let all = crate::registry::equations();
+    let blank: Vec<_> = all.iter().map(|e| crate::verify::judge(e, &[])).collect();
+    let keep = crate::verify::legend::only(blank, spec)?;
+    Ok(crate::verify::verify_equations(
+        all.into_iter()
+            .filter(|e| keep.iter().any(|r| r.number == e.number))
+            .collect(),
+        cfg,
+    ))
+}
+
+/// `ladder verify --json`: every row, the summary, the book's files, the derivations and the
+/// extension beyond the note.
+fn json_report(run: &Run) -> serde_json::Value {
+    let (results, cfg) = (run.results, run.cfg);
+    let (v, e, d, f) = counts(results);
+    let (proved, sampled_only, proof_seconds) = proof_counts(results);
+    json!({
+        "equations": results,
+        "summary": {"verified": v, "erratum": e, "definition": d, "failed": f,
+                     "proved": proved, "sampled_only": sampled_only, "proof_seconds": proof_seconds,
+                     "proof_particle_counts": crate::registry::prove::PARTICLE_COUNTS.collect::<Vec<_>>(),
+                     "sz_bound_log10": worst_sz_log10(results, |r| r.sz_bound_log10),
+                     "sz_bound_rational_log10": worst_sz_log10(results, |r| r.sz_bound_rational_log10),
+                     "float_cases_per_check": cfg.float_cases, "exact_points_per_check": cfg.exact_points,
+                     "seed": cfg.seed, "seconds": run.seconds,
+                     "print": print_summary(results)},
+        "docs": {"problems": run.docs.problems, "sections": run.docs.equations_found, "examples_run": run.docs.examples_run},
+        "methods": run.methods,
+        "extensions": run.extensions,
+    })
+}
+
+/// One line of the text, filled to `columns`.
+fn push_line(text: &mut String, s: &str, columns: usize) {
+    text.push_str(&fill(s, columns));
+    text.push('\n');
+}
+
+/// `ladder verify` as a teacher reads it: the table, the summary and its legend, the extension
+/// beyond the note, the derivations and the book's files, filled to `columns`.
+fn text_report(run: &Run, wide: bool, columns: usize) -> String {
+    let (results, cfg) = (run.results, run.cfg);
+    let mut text = render_for(results, wide, columns);
+    push_line(&mut text, &summary_line(results, cfg, run.seconds), columns);
+    push_line(
+        &mut text,
+        &format!("  {}", schwartz_zippel_sentence(results)),
+        columns,
+    );
+    let (pd, nd, pf, nf, pm) = print_coverage(results);
+    let (pp, ppf) = print_proof_counts(results);
+    push_line(&mut text, &format!(
+        "print: {pd} of {nd} displays parsed in full, {pf} of {nf} printed forms parsed and checked, {pm} displays with every Rust form matching the print (src/print/symbols.toml); {pp} of {nd} displays proved symbolically as printed ({ppf} forms)"
+    ), columns);
+    text.push_str(&fill(&crate::verify::legend::legend(cfg), columns));
+    text.push_str(&fill(&crate::verify::legend::law_lines(results), columns));
+    push_line(
+        &mut text,
+        "beyond the note: the floor phase after the ladder leaves the wall (equations/phase2.md)",
+        columns,
+    );
+    text.extend(
+        render_for(run.extensions, wide, columns)
+            .lines()
+            .skip(if columns >= crate::verify::table::FULL_WIDTH {
+                1
+            } else {
+                2
+            })
+            .map(|l| format!("{l}\n")),
+    );
+    let failed_methods: Vec<_> = run.methods.iter().filter(|m| !m.passed).collect();
+    push_line(&mut text, &format!(
+        "methods: {} derivations of the equation of motion checked (θ̈ solved from each equals (5); each residual vanishes on the motion only), {} failed",
+        run.methods.len(),
+        failed_methods.len()
+    ), columns);
+    for m in failed_methods {
+        push_line(
+            &mut text,
+            &format!("  ! {}: {}", m.name, m.problems.join("; ")),
+            columns,
+        );
+    }
+    push_line(
+        &mut text,
+        &format!(
+            "docs: {} equations found in {}/*.md, {} example rows run, {} problems",
+            run.docs.equations_found,
+            crate::docs::note_dir().display(),
+            run.docs.examples_run,
+            run.docs.problems.len()
+        ),
+        columns,
+    );
+    for p in &run.docs.problems {
+        push_line(&mut text, &format!("  ! {p}"), columns);
+    }
+    push_line(&mut text, "details of one display: ladder show N (e.g. ladder show 25 --at \"m=2, l=1.5, theta=40deg\")", columns);
+    text
 }
 
 /// Why `ladder verify` exits 1, one phrase per reason (empty: it exits 0).

@@ -91,7 +91,9 @@ fn num(x: f64) -> String {
     }
 }
 
-/// The worked example of torque analysis `number`, as markdown.
+/// The worked example of torque analysis `number`, as markdown: the state, a table of the
+/// forces (14), (15) and the two sides of the law on and off the motion, the misprints, and
+/// what the numbers show.
 pub fn worked_example(number: u32) -> Result<String, String> {
     let e = equations()
         .into_iter()
@@ -101,32 +103,8 @@ pub fn worked_example(number: u32) -> Result<String, String> {
     let k = law.step as usize;
     let (ladder, on) = example_state(true);
     let (_, off) = example_state(false);
-    let (mut f_on, mut f_off) = (forms(number, &ladder, &on)?, forms(number, &ladder, &off)?);
-    // A display whose first printed form is dL/dt (as (53): "dL_C/dt = ...") may carry it in
-    // the chain as the reference it is checked against (dL_C/dt of the particles, by AD);
-    // then that reference is the display's first form.
-    if k == f_on.len() {
-        let first = |st| sides(number, &ladder, st, &[Role::Reference]).map(|r| r.first().copied());
-        if let (Some(a), Some(b)) = (first(&on)?, first(&off)?) {
-            f_on.insert(0, a);
-            f_off.insert(0, b);
-        }
-    }
-    if k >= f_on.len() {
-        return Err(format!("({number}): law step {k} but {} forms", f_on.len()));
-    }
-    let (m, l, g, deg) = EXAMPLE;
-    let mut out = String::new();
-    out.push_str(&format!(
-        "**Worked example** (generated from the code, `docs::worked`): m = {m} kg, l = {l} m, \
-         g = {g} m/s², θ = {deg}°, released from rest upright, so θ̇ = {:.3} s⁻¹ by (10). On the \
-         motion θ̈ = {:.3} s⁻² by (5); off it, the same θ and θ̇ with θ̈ = 0. The law is the {} `=` of \
-         the display: {}.\n\n",
-        on.rate,
-        on.accel,
-        crate::docs::ordinal(law.step),
-        law.statement
-    ));
+    let (f_on, f_off) = display_forms(number, k, &ladder, &on, &off)?;
+    let mut out = opening(law, &on);
     out.push_str("| quantity | on the motion | off the motion (θ̈ = 0) |\n|---|---|---|\n");
     out.push_str(&format!(
         "| F_w, (14) | {} N | {} N |\n| F_f, (15) | {} N | {} N |\n",
@@ -136,24 +114,7 @@ pub fn worked_example(number: u32) -> Result<String, String> {
         num(floor_force(&ladder, &off)),
     ));
     let last = f_on.len() - 1;
-    out.push_str(&format!(
-        "| left of the law: {} | {} N·m | {} N·m |\n| right of the law: {} | {} N·m | {} N·m |\n",
-        f_on[k - 1].0,
-        num(f_on[k - 1].1),
-        num(f_off[k - 1].1),
-        f_on[k].0,
-        num(f_on[k].1),
-        num(f_off[k].1),
-    ));
-    // The display's last form, unless the right of the law is the last form already.
-    if last > k {
-        out.push_str(&format!(
-            "| last form of the display: {} | {} N·m | {} N·m |\n",
-            f_on[last].0,
-            num(f_on[last].1),
-            num(f_off[last].1),
-        ));
-    }
+    out.push_str(&law_rows(&f_on, &f_off, k));
     out.push('\n');
     // A misprinted form (kept as printed in the code) agrees with neither side, on the motion
     // or off it: the reader sees the erratum in numbers.
@@ -172,12 +133,85 @@ pub fn worked_example(number: u32) -> Result<String, String> {
         }
         out.push('\n');
     }
-    out.push_str(if m_on.is_empty() {
-        "On the motion every form agrees. Off it"
-    } else {
+    out.push_str(&closing(!m_on.is_empty(), last > k));
+    Ok(out)
+}
+
+/// The forms of display `number` on and off the motion, checked to reach the law's `=` no. `k`.
+/// A display whose first printed form is dL/dt (as (53): "dL_C/dt = ...") may carry it in the
+/// chain as the reference it is checked against (dL_C/dt of the particles, by AD); then that
+/// reference is the display's first form.
+#[allow(clippy::type_complexity)]
+fn display_forms(
+    number: u32,
+    k: usize,
+    ladder: &Ladder<f64>,
+    on: &State<f64>,
+    off: &State<f64>,
+) -> Result<(Vec<(&'static str, f64)>, Vec<(&'static str, f64)>), String> {
+    let (mut f_on, mut f_off) = (forms(number, ladder, on)?, forms(number, ladder, off)?);
+    if k == f_on.len() {
+        let first = |st| sides(number, ladder, st, &[Role::Reference]).map(|r| r.first().copied());
+        if let (Some(a), Some(b)) = (first(on)?, first(off)?) {
+            f_on.insert(0, a);
+            f_off.insert(0, b);
+        }
+    }
+    if k >= f_on.len() {
+        return Err(format!("({number}): law step {k} but {} forms", f_on.len()));
+    }
+    Ok((f_on, f_off))
+}
+
+/// The paragraph before the table: the example's state, θ̇ by (10), θ̈ on and off the motion,
+/// and which `=` is the law.
+fn opening(law: crate::registry::Law, on: &State<f64>) -> String {
+    let (m, l, g, deg) = EXAMPLE;
+    format!(
+        "**Worked example** (generated from the code, `docs::worked`): m = {m} kg, l = {l} m, \
+         g = {g} m/s², θ = {deg}°, released from rest upright, so θ̇ = {:.3} s⁻¹ by (10). On the \
+         motion θ̈ = {:.3} s⁻² by (5); off it, the same θ and θ̇ with θ̈ = 0. The law is the {} `=` of \
+         the display: {}.\n\n",
+        on.rate,
+        on.accel,
+        crate::docs::ordinal(law.step),
+        law.statement
+    )
+}
+
+/// The table's rows for the two sides of the law (`=` no. `k`) and, unless the right of the
+/// law is the last form already, the display's last form.
+fn law_rows(f_on: &[(&'static str, f64)], f_off: &[(&'static str, f64)], k: usize) -> String {
+    let last = f_on.len() - 1;
+    let mut out = format!(
+        "| left of the law: {} | {} N·m | {} N·m |\n| right of the law: {} | {} N·m | {} N·m |\n",
+        f_on[k - 1].0,
+        num(f_on[k - 1].1),
+        num(f_off[k - 1].1),
+        f_on[k].0,
+        num(f_on[k].1),
+        num(f_off[k].1),
+    );
+    if last > k {
+        out.push_str(&format!(
+            "| last form of the display: {} | {} N·m | {} N·m |\n",
+            f_on[last].0,
+            num(f_on[last].1),
+            num(f_off[last].1),
+        ));
+    }
+    out
+}
+
+/// The sentence after the table: what agrees on the motion (every form, or all but the
+/// misprint) and why the chain breaks off it at the law alone.
+fn closing(has_misprint: bool, forms_after_law: bool) -> String {
+    let mut out = String::from(if has_misprint {
         "On the motion every form agrees but the misprint. Off it"
+    } else {
+        "On the motion every form agrees. Off it"
     });
-    out.push_str(if last > k {
+    out.push_str(if forms_after_law {
         " the two sides of the law differ, while the forms \
          right of the law still agree with one another: each `=` among them is algebra with the \
          forces the motion requires, (14) and (15), and holds for any θ̈. The chain breaks at the \
@@ -188,7 +222,7 @@ pub fn worked_example(number: u32) -> Result<String, String> {
          for any θ̈. The chain breaks at the law alone, which is why the display holds on the \
          motion only.\n"
     });
-    Ok(out)
+    out
 }
 
 /// The opening and closing markers of a generated block.

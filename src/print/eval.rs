@@ -124,41 +124,9 @@ pub fn eval<S: Scalar, D: Depth>(e: &Expr, ctx: &Ctx<S>) -> Result<Value<S>, Str
             (Ve(x), Ve(y)) => Ve(x.cross(&y)),
             _ => return Err("× of a scalar".into()),
         },
-        Expr::Sin(a) | Expr::Cos(a) => {
-            let is_angle =
-                matches!(&**a, Expr::Sym(k) if quantity_of(k, ctx).as_deref() == Some("theta"));
-            if !is_angle {
-                return Err("sin/cos of anything but θ".into());
-            }
-            let sin = matches!(e, Expr::Sin(_));
-            ctx.model.trig(sin)?
-        }
-        Expr::Tuple(items) => {
-            let mut c = Vec::new();
-            for it in items {
-                match ev(it)? {
-                    Sc(x) => c.push(x),
-                    Ve(_) => return Err("a vector inside a tuple".into()),
-                }
-            }
-            match c.len() {
-                2 => Ve(Vec3::planar(c[0].clone(), c[1].clone())),
-                3 => Ve(Vec3::new(c[0].clone(), c[1].clone(), c[2].clone())),
-                _ => return Err("a tuple of other than 2 or 3 components".into()),
-            }
-        }
-        Expr::Sum(a) => {
-            let n = ctx.model.particle_count()?;
-            let mut acc: Option<Value<S>> = None;
-            for i in 0..n {
-                let v = eval::<S, D>(a, &ctx.at(i))?;
-                acc = Some(match acc {
-                    None => v,
-                    Some(s) => s.add(v)?,
-                });
-            }
-            acc.ok_or("a sum over no particles")?
-        }
+        Expr::Sin(a) | Expr::Cos(a) => trig(a, matches!(e, Expr::Sin(_)), ctx)?,
+        Expr::Tuple(items) => tuple::<S, D>(items, ctx)?,
+        Expr::Sum(a) => sum::<S, D>(a, ctx)?,
         // d/dt[…]_{cond}: the rate at the instant where the condition holds.
         Expr::Deriv(a) => match &**a {
             Expr::At(inner, conds) => {
@@ -166,20 +134,66 @@ pub fn eval<S: Scalar, D: Depth>(e: &Expr, ctx: &Ctx<S>) -> Result<Value<S>, Str
             }
             _ => D::derive(a, ctx, Lift::Motion)?,
         },
-        Expr::Partial(a, wrt) => {
-            let how = match quantity_of(wrt, ctx).as_deref() {
-                Some("theta") => Lift::Angle,
-                Some("theta_rate") => Lift::Rate,
-                _ => return Err(format!("∂/∂{wrt} is not supported")),
-            };
-            D::derive(a, ctx, how)?
-        }
+        Expr::Partial(a, wrt) => partial::<S, D>(a, wrt, ctx)?,
         Expr::ZComp(a) => match ev(a)? {
             Ve(v) => Sc(v.z),
             Sc(_) => return Err("|_z of a scalar".into()),
         },
         Expr::At(a, conds) => eval::<S, D>(a, &at_condition::<S, D>(conds, ctx)?)?,
     })
+}
+
+/// `\sin\theta` or `\cos\theta`: the state's carried sin θ or cos θ (no sine is ever taken).
+fn trig<S: Scalar>(a: &Expr, sin: bool, ctx: &Ctx<S>) -> Result<Value<S>, String> {
+    let is_angle = matches!(a, Expr::Sym(k) if quantity_of(k, ctx).as_deref() == Some("theta"));
+    if !is_angle {
+        return Err("sin/cos of anything but θ".into());
+    }
+    ctx.model.trig(sin)
+}
+
+/// A tuple of two or three scalars: a planar or a 3-vector.
+fn tuple<S: Scalar, D: Depth>(items: &[Expr], ctx: &Ctx<S>) -> Result<Value<S>, String> {
+    let mut c = Vec::new();
+    for it in items {
+        match eval::<S, D>(it, ctx)? {
+            Value::Scalar(x) => c.push(x),
+            Value::Vector(_) => return Err("a vector inside a tuple".into()),
+        }
+    }
+    match c.len() {
+        2 => Ok(Value::Vector(Vec3::planar(c[0].clone(), c[1].clone()))),
+        3 => Ok(Value::Vector(Vec3::new(
+            c[0].clone(),
+            c[1].clone(),
+            c[2].clone(),
+        ))),
+        _ => Err("a tuple of other than 2 or 3 components".into()),
+    }
+}
+
+/// Σ over the particles: the operand at each particle index, added.
+fn sum<S: Scalar, D: Depth>(a: &Expr, ctx: &Ctx<S>) -> Result<Value<S>, String> {
+    let n = ctx.model.particle_count()?;
+    let mut acc: Option<Value<S>> = None;
+    for i in 0..n {
+        let v = eval::<S, D>(a, &ctx.at(i))?;
+        acc = Some(match acc {
+            None => v,
+            Some(s) => s.add(v)?,
+        });
+    }
+    Ok(acc.ok_or("a sum over no particles")?)
+}
+
+/// ∂/∂θ or ∂/∂θ̇ of the operand: the context lifted in that variable alone.
+fn partial<S: Scalar, D: Depth>(a: &Expr, wrt: &str, ctx: &Ctx<S>) -> Result<Value<S>, String> {
+    let how = match quantity_of(wrt, ctx).as_deref() {
+        Some("theta") => Lift::Angle,
+        Some("theta_rate") => Lift::Rate,
+        _ => return Err(format!("∂/∂{wrt} is not supported")),
+    };
+    D::derive(a, ctx, how)
 }
 
 /// The context with the condition of an evaluation bar imposed ([`super::condition`]): a

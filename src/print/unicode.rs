@@ -92,6 +92,9 @@ fn argument(c: &[char], p: &mut usize) -> String {
     }
 }
 
+/// A `\command` (after its backslash) with its arguments, read as Unicode: accents combine,
+/// fonts and layout drop, operators and Greek letters become their symbols, an unknown command
+/// stays as written.
 fn command(c: &[char], p: &mut usize) -> String {
     let start = *p;
     while *p < c.len() && c[*p].is_ascii_alphabetic() {
@@ -103,33 +106,8 @@ fn command(c: &[char], p: &mut usize) -> String {
         *p += 1;
         return " ".into();
     }
-    let accent = |c: &[char], p: &mut usize, mark: char| {
-        let mut a = argument(c, p);
-        a.push(mark);
-        a
-    };
     match word.as_str() {
-        "frac" => {
-            let (n, d) = (argument(c, p), argument(c, p));
-            if n == "d" && d == "dt" {
-                return "d/dt ".into();
-            }
-            let f = format!("{}/{}", wrap(&n), wrap(&d));
-            // A fraction multiplied by what follows reads `(ml²θ̇/3) ẑ`, not `ml²θ̇/3ẑ`.
-            let mut q = *p;
-            while c.get(q) == Some(&' ') {
-                q += 1;
-            }
-            if c.get(q)
-                .is_some_and(|x| x.is_alphanumeric() || matches!(x, '\\' | '('))
-                && !starts_operator(c, q)
-            {
-                let gap = if c.get(q) == Some(&'(') { "" } else { " " };
-                format!("({f}){gap}")
-            } else {
-                f
-            }
-        }
+        "frac" => fraction(c, p),
         "dot" => accent(c, p, '\u{307}'),
         "ddot" => accent(c, p, '\u{308}'),
         "hat" => accent(c, p, '\u{302}'),
@@ -153,16 +131,7 @@ fn command(c: &[char], p: &mut usize) -> String {
         }
         "left" | "right" | "Big" | "big" | "Bigl" | "Bigr" => String::new(),
         "quad" | "qquad" => "   ".into(),
-        "sin" | "cos" => {
-            // `\sin^2\theta` reads `sin²θ`; the argument (one symbol) is taken with it, so a
-            // factor after it stands apart: `sin θ θ̇²`.
-            let mut sup = String::new();
-            if c.get(*p) == Some(&'^') {
-                *p += 1;
-                sup = script(&argument(c, p), true);
-            }
-            format!(" {word}{sup} {} ", argument(c, p))
-        }
+        "sin" | "cos" => trig(c, p, &word),
         "times" => " × ".into(),
         "wedge" => " ∧ ".into(),
         "cdot" => "·".into(),
@@ -173,6 +142,47 @@ fn command(c: &[char], p: &mut usize) -> String {
         "prime" => "′".into(),
         w => greek(w).map_or_else(|| format!("\\{w}"), String::from),
     }
+}
+
+/// An accented argument: the argument followed by the combining `mark` (θ̇, ẑ, r̄).
+fn accent(c: &[char], p: &mut usize, mark: char) -> String {
+    let mut a = argument(c, p);
+    a.push(mark);
+    a
+}
+
+/// `\frac{n}{d}` as `n/d` (parentheses around a compound part), `d/dt` for the derivative;
+/// a fraction multiplied by what follows reads `(ml²θ̇/3) ẑ`, not `ml²θ̇/3ẑ`.
+fn fraction(c: &[char], p: &mut usize) -> String {
+    let (n, d) = (argument(c, p), argument(c, p));
+    if n == "d" && d == "dt" {
+        return "d/dt ".into();
+    }
+    let f = format!("{}/{}", wrap(&n), wrap(&d));
+    let mut q = *p;
+    while c.get(q) == Some(&' ') {
+        q += 1;
+    }
+    if c.get(q)
+        .is_some_and(|x| x.is_alphanumeric() || matches!(x, '\\' | '('))
+        && !starts_operator(c, q)
+    {
+        let gap = if c.get(q) == Some(&'(') { "" } else { " " };
+        format!("({f}){gap}")
+    } else {
+        f
+    }
+}
+
+/// `\sin` or `\cos` with its argument: `\sin^2\theta` reads `sin²θ`; the argument (one
+/// symbol) is taken with it, so a factor after it stands apart: `sin θ θ̇²`.
+fn trig(c: &[char], p: &mut usize, word: &str) -> String {
+    let mut sup = String::new();
+    if c.get(*p) == Some(&'^') {
+        *p += 1;
+        sup = script(&argument(c, p), true);
+    }
+    format!(" {word}{sup} {} ", argument(c, p))
 }
 
 /// True when a command that is not a factor starts at `q` (`\\`, `\end`, `\quad`, `\times`, …).

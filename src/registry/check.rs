@@ -148,133 +148,180 @@ pub(crate) fn residual_degree(chains: &[Chain<Degree>]) -> u32 {
     d
 }
 
-/// Run one check.
+/// Run one check: its float states against the error model, its exact points, and the
+/// Schwartz-Zippel bound those points give.
 pub fn run_check(check: &Check, cfg: &Config) -> CheckReport {
-    // Each check gets its own stream, derived from the seed and its name (FNV-1a).
-    let name_hash = check.name.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
-        (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
-    });
-    let mut rng = ChaCha8Rng::seed_from_u64(cfg.seed ^ name_hash);
+    // Each check gets its own stream, derived from the seed and its name.
+    let mut rng = ChaCha8Rng::seed_from_u64(cfg.seed ^ fnv1a(check.name));
     let mut rep = CheckReport {
         name: check.name,
         ..Default::default()
     };
     let mut misprint_ok: Vec<(&'static str, bool)> = Vec::new();
-    let mut note_misprints = |found: Vec<(&'static str, bool)>| {
-        for (k, (label, differs)) in found.into_iter().enumerate() {
-            match misprint_ok.get_mut(k) {
-                Some(m) => m.1 &= differs,
-                None => misprint_ok.push((label, differs)),
-            }
-        }
-    };
     match check.eval {
-        Eval::Ladder(sort, f) => {
-            for _ in 0..cfg.float_cases {
-                let ((l, s), (lb, sb)) = RawLadder::draw(&mut rng).build(sort);
-                record_float(&mut rep, (f.float)(&l, &s), (f.bound)(&lb, &sb));
-            }
-            let degree_chains = {
-                let (l, s) = exact_ladder(sort, [Degree::variable(); LADDER_DRAWS]);
-                (f.degree)(&l, &s)
-            };
-            rep.degree = residual_degree(&degree_chains);
-            let mut off_shell_all_fail = true;
-            let mut breaks: Option<Option<Vec<u32>>> = None;
-            for k in 0..cfg.exact_points {
-                let ints = exact_ladder_ints(&mut rng);
-                let pt = at_point(
-                    k,
-                    || ladder_point(sort, f.modular, ints),
-                    || ladder_point(sort, f.exact, ints),
-                );
-                rep.exact_failures += usize::from(!pt.ok);
-                note_misprints(pt.misprints);
-                if let Some((ok_off, here)) = pt.off {
-                    off_shell_all_fail &= !ok_off;
-                    // Keep the breaks only while every point agrees.
-                    breaks = Some(match breaks {
-                        None => here,
-                        Some(prev) if prev == here => prev,
-                        Some(_) => None,
-                    });
-                }
-            }
-            if sort.on_shell() {
-                rep.off_shell_fails = Some(off_shell_all_fail);
-                rep.off_motion_breaks = breaks.flatten();
-            }
-        }
-        Eval::Floor(sort, f) => {
-            for _ in 0..cfg.float_cases {
-                let raw = RawLadder::draw(&mut rng);
-                let ((l, s), (lb, sb)) = raw.build(LadderSample::Kinematic);
-                let (lg, g) = (l.l, l.g);
-                let t = (lg / g).sqrt();
-                let units = [lg, lg / t, lg / (t * t), lg / (t * t * t)];
-                let v: [f64; 4] =
-                    std::array::from_fn(|i| 3.0 * rng.gen_range(-1.0..1.0) * units[i]);
-                let (s, x) = super::sample::floor_state(sort, &l, s, v);
-                let (sb, xb) = super::sample::floor_state(sort, &lb, sb, v.map(Bound::exact));
-                record_float(&mut rep, (f.float)(&l, &s, &x), (f.bound)(&lb, &sb, &xb));
-            }
-            let vars = [Degree::variable(); 4];
-            let (ld, sd) =
-                exact_ladder(LadderSample::Kinematic, [Degree::variable(); LADDER_DRAWS]);
-            let (sd, xd) = super::sample::floor_state(sort, &ld, sd, vars);
-            rep.degree = residual_degree(&(f.degree)(&ld, &sd, &xd));
-            let mut off_shell_all_fail = true;
-            for k in 0..cfg.exact_points {
-                let ints = exact_ladder_ints(&mut rng);
-                let motion: [i64; 4] = std::array::from_fn(|_| signed(&mut rng));
-                let pt = at_point(
-                    k,
-                    || floor_point(sort, f.modular, ints, motion),
-                    || floor_point(sort, f.exact, ints, motion),
-                );
-                rep.exact_failures += usize::from(!pt.ok);
-                note_misprints(pt.misprints);
-                if let Some((ok_off, _)) = pt.off {
-                    off_shell_all_fail &= !ok_off;
-                }
-            }
-            if sort.on_shell() {
-                rep.off_shell_fails = Some(off_shell_all_fail);
-            }
-        }
+        Eval::Ladder(sort, f) => run_ladder(sort, f, cfg, &mut rng, &mut rep, &mut misprint_ok),
+        Eval::Floor(sort, f) => run_floor(sort, f, cfg, &mut rng, &mut rep, &mut misprint_ok),
         Eval::Particles(sort, f) => {
-            for _ in 0..cfg.float_cases {
-                let raw = RawParticles::draw(&mut rng);
-                let ((sys, p), (sysb, pb)) = super::sample::float_particles(sort, &raw);
-                record_float(&mut rep, (f.float)(&sys, &p), (f.bound)(&sysb, &pb));
-            }
-            // The degree depends on the number of particles only.
-            let mut degree_of = [None; 9];
-            for k in 0..cfg.exact_points {
-                let (n, ints) = exact_particle_ints(&mut rng);
-                let pt = at_point(
-                    k,
-                    || particle_point(sort, f.modular, n, &ints),
-                    || particle_point(sort, f.exact, n, &ints),
-                );
-                rep.exact_failures += usize::from(!pt.ok);
-                note_misprints(pt.misprints);
-                let d = *degree_of[n].get_or_insert_with(|| {
-                    let vars = vec![Degree::variable(); ints.len()];
-                    let (sd, pd) = particle_system(sort, n, &vars);
-                    residual_degree(&(f.degree)(&sd, &pd))
-                });
-                rep.degree = rep.degree.max(d);
-            }
+            run_particles(sort, f, cfg, &mut rng, &mut rep, &mut misprint_ok);
         }
     }
     rep.exact_points = cfg.exact_points;
     rep.misprints = misprint_ok;
+    schwartz_zippel(&mut rep, cfg);
+    rep
+}
+
+/// The FNV-1a hash of a check's name: what makes each check's random stream its own.
+fn fnv1a(name: &str) -> u64 {
+    name.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
+    })
+}
+
+/// Fold one exact point's misprints into the running list: a misprint is shown wrong only if it
+/// differs at every point.
+fn note_misprints(misprint_ok: &mut Vec<(&'static str, bool)>, found: Vec<(&'static str, bool)>) {
+    for (k, (label, differs)) in found.into_iter().enumerate() {
+        match misprint_ok.get_mut(k) {
+            Some(m) => m.1 &= differs,
+            None => misprint_ok.push((label, differs)),
+        }
+    }
+}
+
+/// A ladder check: float states of its sort, the residual degree, and exact points, with the
+/// `=` at which an on-shell chain breaks off the motion (the law step, [`super::law`]).
+fn run_ladder(
+    sort: LadderSample,
+    f: super::LadderFns,
+    cfg: &Config,
+    rng: &mut ChaCha8Rng,
+    rep: &mut CheckReport,
+    misprint_ok: &mut Vec<(&'static str, bool)>,
+) {
+    for _ in 0..cfg.float_cases {
+        let ((l, s), (lb, sb)) = RawLadder::draw(rng).build(sort);
+        record_float(rep, (f.float)(&l, &s), (f.bound)(&lb, &sb));
+    }
+    let degree_chains = {
+        let (l, s) = exact_ladder(sort, [Degree::variable(); LADDER_DRAWS]);
+        (f.degree)(&l, &s)
+    };
+    rep.degree = residual_degree(&degree_chains);
+    let mut off_shell_all_fail = true;
+    let mut breaks: Option<Option<Vec<u32>>> = None;
+    for k in 0..cfg.exact_points {
+        let ints = exact_ladder_ints(rng);
+        let pt = at_point(
+            k,
+            || ladder_point(sort, f.modular, ints),
+            || ladder_point(sort, f.exact, ints),
+        );
+        rep.exact_failures += usize::from(!pt.ok);
+        note_misprints(misprint_ok, pt.misprints);
+        if let Some((ok_off, here)) = pt.off {
+            off_shell_all_fail &= !ok_off;
+            // Keep the breaks only while every point agrees.
+            breaks = Some(match breaks {
+                None => here,
+                Some(prev) if prev == here => prev,
+                Some(_) => None,
+            });
+        }
+    }
+    if sort.on_shell() {
+        rep.off_shell_fails = Some(off_shell_all_fail);
+        rep.off_motion_breaks = breaks.flatten();
+    }
+}
+
+/// A floor-phase check: ladder states with the centre's motion (X, Ẋ, Ẍ, X⃛) drawn in units of
+/// l and √(l/g), then the residual degree and exact points.
+fn run_floor(
+    sort: LadderSample,
+    f: super::FloorFns,
+    cfg: &Config,
+    rng: &mut ChaCha8Rng,
+    rep: &mut CheckReport,
+    misprint_ok: &mut Vec<(&'static str, bool)>,
+) {
+    for _ in 0..cfg.float_cases {
+        let raw = RawLadder::draw(rng);
+        let ((l, s), (lb, sb)) = raw.build(LadderSample::Kinematic);
+        let (lg, g) = (l.l, l.g);
+        let t = (lg / g).sqrt();
+        let units = [lg, lg / t, lg / (t * t), lg / (t * t * t)];
+        let v: [f64; 4] = std::array::from_fn(|i| 3.0 * rng.gen_range(-1.0..1.0) * units[i]);
+        let (s, x) = super::sample::floor_state(sort, &l, s, v);
+        let (sb, xb) = super::sample::floor_state(sort, &lb, sb, v.map(Bound::exact));
+        record_float(rep, (f.float)(&l, &s, &x), (f.bound)(&lb, &sb, &xb));
+    }
+    let vars = [Degree::variable(); 4];
+    let (ld, sd) = exact_ladder(LadderSample::Kinematic, [Degree::variable(); LADDER_DRAWS]);
+    let (sd, xd) = super::sample::floor_state(sort, &ld, sd, vars);
+    rep.degree = residual_degree(&(f.degree)(&ld, &sd, &xd));
+    let mut off_shell_all_fail = true;
+    for k in 0..cfg.exact_points {
+        let ints = exact_ladder_ints(rng);
+        let motion: [i64; 4] = std::array::from_fn(|_| signed(rng));
+        let pt = at_point(
+            k,
+            || floor_point(sort, f.modular, ints, motion),
+            || floor_point(sort, f.exact, ints, motion),
+        );
+        rep.exact_failures += usize::from(!pt.ok);
+        note_misprints(misprint_ok, pt.misprints);
+        if let Some((ok_off, _)) = pt.off {
+            off_shell_all_fail &= !ok_off;
+        }
+    }
+    if sort.on_shell() {
+        rep.off_shell_fails = Some(off_shell_all_fail);
+    }
+}
+
+/// A particle check: float systems of its sort, then exact points, each with the residual
+/// degree of its particle count.
+fn run_particles(
+    sort: ParticleSample,
+    f: super::ParticleFns,
+    cfg: &Config,
+    rng: &mut ChaCha8Rng,
+    rep: &mut CheckReport,
+    misprint_ok: &mut Vec<(&'static str, bool)>,
+) {
+    for _ in 0..cfg.float_cases {
+        let raw = RawParticles::draw(rng);
+        let ((sys, p), (sysb, pb)) = super::sample::float_particles(sort, &raw);
+        record_float(rep, (f.float)(&sys, &p), (f.bound)(&sysb, &pb));
+    }
+    // The degree depends on the number of particles only.
+    let mut degree_of = [None; 9];
+    for k in 0..cfg.exact_points {
+        let (n, ints) = exact_particle_ints(rng);
+        let pt = at_point(
+            k,
+            || particle_point(sort, f.modular, n, &ints),
+            || particle_point(sort, f.exact, n, &ints),
+        );
+        rep.exact_failures += usize::from(!pt.ok);
+        note_misprints(misprint_ok, pt.misprints);
+        let d = *degree_of[n].get_or_insert_with(|| {
+            let vars = vec![Degree::variable(); ints.len()];
+            let (sd, pd) = particle_system(sort, n, &vars);
+            residual_degree(&(f.degree)(&sd, &pd))
+        });
+        rep.degree = rep.degree.max(d);
+    }
+}
+
+/// The Schwartz-Zippel bound of the exact points: (degree / set size)^points, and its log10
+/// over all points and over the rational points alone.
+fn schwartz_zippel(rep: &mut CheckReport, cfg: &Config) {
     rep.sz_bound = (f64::from(rep.degree.max(1)) / EXACT_SET_SIZE).powi(cfg.exact_points as i32);
     let per_point = (f64::from(rep.degree.max(1)) / EXACT_SET_SIZE).log10();
     rep.sz_bound_log10 = cfg.exact_points as f64 * per_point;
     rep.sz_bound_rational_log10 = cfg.exact_points.min(RATIONAL_POINTS) as f64 * per_point;
-    rep
 }
 
 fn record_float(rep: &mut CheckReport, values: Vec<Chain<f64>>, bounds: Vec<Chain<Bound>>) {

@@ -172,7 +172,8 @@ fn guarded<T>(f: impl FnOnce() -> T) -> Result<T, String> {
     })
 }
 
-/// Prove one check.
+/// Prove one check: its chains in every symbolic instance of its sort, each non-misprint side
+/// reduced against the first, and (on shell) the same chains with θ̈ free.
 pub fn prove_check(check: &Check) -> CheckProof {
     let t = std::time::Instant::now();
     let mut out = CheckProof {
@@ -185,62 +186,8 @@ pub fn prove_check(check: &Check) -> CheckProof {
         seconds: 0.0,
     };
     let result = guarded(|| {
-        let mut instances: Vec<(Vec<Chain<Sym>>, Relation)> = Vec::new();
-        let mut off_shell: Option<Vec<Chain<Sym>>> = None;
-        match check.eval {
-            Eval::Ladder(sort, f) => {
-                let (l, s, rel) = symbolic_ladder(sort);
-                instances.push(((f.symbolic)(&l, &s), rel));
-                if sort.on_shell() {
-                    let (l, s, _) = symbolic_ladder(LadderSample::Kinematic);
-                    off_shell = Some((f.symbolic)(&l, &s));
-                }
-            }
-            Eval::Floor(sort, f) => {
-                let floor = |sort| {
-                    let (l, s, _) = symbolic_ladder(LadderSample::Kinematic);
-                    let v = [
-                        sym("X", "X"),
-                        sym("Ẋ", "\\dot X"),
-                        sym("Ẍ", "\\ddot X"),
-                        sym("X⃛", "\\dddot X"),
-                    ];
-                    let (s, x) = floor_state(sort, &l, s, v);
-                    (f.symbolic)(&l, &s, &x)
-                };
-                instances.push((floor(sort), None));
-                if sort.on_shell() {
-                    off_shell = Some(floor(LadderSample::Kinematic));
-                }
-            }
-            Eval::Particles(sort, f) => {
-                for n in PARTICLE_COUNTS {
-                    let values = symbolic_particle_values(n);
-                    let (sys, p) = particle_system(sort, n, &values);
-                    instances.push(((f.symbolic)(&sys, &p), None));
-                }
-            }
-        }
-        let mut proved = true;
-        let mut failure = None;
-        let mut misprints: Vec<(&'static str, Sym)> = Vec::new();
-        for (chains, rel) in &instances {
-            let (ok, fail, mis) = judge_chains(chains, rel);
-            proved &= ok;
-            if failure.is_none() {
-                failure = fail;
-            }
-            for (k, m) in mis.into_iter().enumerate() {
-                match misprints.get_mut(k) {
-                    // A misprint must be wrong in every instance: keep a zero difference if any.
-                    Some(prev) if !prev.1.is_zero() && m.1.is_zero() => *prev = m,
-                    Some(_) => {}
-                    None => misprints.push(m),
-                }
-            }
-        }
-        let off = off_shell.map(|chains| !judge_chains(&chains, &None).0);
-        (proved, failure, misprints, off)
+        let (instances, off_shell) = symbolic_instances(check);
+        judge_instances(&instances, off_shell)
     });
     match result {
         Ok((proved, failure, misprints, off)) => {
@@ -253,6 +200,86 @@ pub fn prove_check(check: &Check) -> CheckProof {
     }
     out.seconds = t.elapsed().as_secs_f64();
     out
+}
+
+/// A check's chains in symbols: one instance per symbolic state of its sort (the ladder, the
+/// floor phase, or [`PARTICLE_COUNTS`] particle systems) with the relation its differences are
+/// reduced by, and for an on-shell check the chains at kinematic states (θ̈ free).
+#[allow(clippy::type_complexity)]
+fn symbolic_instances(
+    check: &Check,
+) -> (Vec<(Vec<Chain<Sym>>, Relation)>, Option<Vec<Chain<Sym>>>) {
+    let mut instances: Vec<(Vec<Chain<Sym>>, Relation)> = Vec::new();
+    let mut off_shell: Option<Vec<Chain<Sym>>> = None;
+    match check.eval {
+        Eval::Ladder(sort, f) => {
+            let (l, s, rel) = symbolic_ladder(sort);
+            instances.push(((f.symbolic)(&l, &s), rel));
+            if sort.on_shell() {
+                let (l, s, _) = symbolic_ladder(LadderSample::Kinematic);
+                off_shell = Some((f.symbolic)(&l, &s));
+            }
+        }
+        Eval::Floor(sort, f) => {
+            let floor = |sort| {
+                let (l, s, _) = symbolic_ladder(LadderSample::Kinematic);
+                let v = [
+                    sym("X", "X"),
+                    sym("Ẋ", "\\dot X"),
+                    sym("Ẍ", "\\ddot X"),
+                    sym("X⃛", "\\dddot X"),
+                ];
+                let (s, x) = floor_state(sort, &l, s, v);
+                (f.symbolic)(&l, &s, &x)
+            };
+            instances.push((floor(sort), None));
+            if sort.on_shell() {
+                off_shell = Some(floor(LadderSample::Kinematic));
+            }
+        }
+        Eval::Particles(sort, f) => {
+            for n in PARTICLE_COUNTS {
+                let values = symbolic_particle_values(n);
+                let (sys, p) = particle_system(sort, n, &values);
+                instances.push(((f.symbolic)(&sys, &p), None));
+            }
+        }
+    }
+    (instances, off_shell)
+}
+
+/// The verdicts over every instance: all proved, the first failure, each misprint's difference
+/// (a zero one kept if any instance has it: a misprint must be wrong in every instance), and
+/// whether the chains fail off shell.
+#[allow(clippy::type_complexity)]
+fn judge_instances(
+    instances: &[(Vec<Chain<Sym>>, Relation)],
+    off_shell: Option<Vec<Chain<Sym>>>,
+) -> (
+    bool,
+    Option<(&'static str, Sym)>,
+    Vec<(&'static str, Sym)>,
+    Option<bool>,
+) {
+    let mut proved = true;
+    let mut failure = None;
+    let mut misprints: Vec<(&'static str, Sym)> = Vec::new();
+    for (chains, rel) in instances {
+        let (ok, fail, mis) = judge_chains(chains, rel);
+        proved &= ok;
+        if failure.is_none() {
+            failure = fail;
+        }
+        for (k, m) in mis.into_iter().enumerate() {
+            match misprints.get_mut(k) {
+                Some(prev) if !prev.1.is_zero() && m.1.is_zero() => *prev = m,
+                Some(_) => {}
+                None => misprints.push(m),
+            }
+        }
+    }
+    let off = off_shell.map(|chains| !judge_chains(&chains, &None).0);
+    (proved, failure, misprints, off)
 }
 
 /// The difference printed − corrected of every chain of a check that holds both a misprint and

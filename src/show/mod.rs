@@ -227,17 +227,7 @@ pub fn show(
         .ok_or_else(|| format!("show: ({number}) is not a display of the note"))?;
     let point = state::build(&at.cloned().unwrap_or_else(state::default_at));
     let place = values::place_of(&e);
-    let forms = values::form_values(&e, &point)?;
-    // Overflow is the state's fault, not the print's: refuse it as bad input.
-    if let Some(f) = forms
-        .iter()
-        .find(|f| f.error.as_deref() == Some(values::NOT_FINITE))
-    {
-        return Err(format!(
-            "show: at this state form {} of ({number}) overflows a double; choose m, l, g nearer 1",
-            f.index
-        ));
-    }
+    let forms = finite_form_values(&e, &point)?;
     let (row, details) = if run_checks {
         let (r, d) = checks::run(&e, cfg);
         (Some(r), d)
@@ -245,44 +235,12 @@ pub fn show(
         (None, Vec::new())
     };
     let assumption = expectation(&e, &point.summary, place.as_ref());
-    let printed = |f: &&values::FormValue| f.role == "printed" || f.role == "continued";
-    let forms_agree = forms
-        .iter()
-        .filter(printed)
-        .all(|f| f.agrees != Some(false) && f.error.is_none());
-    let forms_agree_exactly = point.exact.as_ref().map(|_| {
-        forms
-            .iter()
-            .filter(printed)
-            .all(|f| f.exact_agrees != Some(false))
-    });
-    let misprints_differ = forms.iter().filter(|f| f.role == "misprint").all(|f| {
-        f.agrees == Some(false)
-            || f.exact_agrees == Some(false)
-            || f.unit.starts_with("inconsistent")
-    });
+    let agreement = Agreement::of(&forms, point.exact.is_some());
     let mut problems = row.as_ref().map_or_else(Vec::new, |r| r.problems.clone());
     if assumption.is_none() {
-        for f in forms.iter().filter(printed) {
-            if f.agrees == Some(false) || f.exact_agrees == Some(false) {
-                problems.push(format!(
-                    "form {} '{}' disagrees with its chain at this state (residual {:.3e} bounds)",
-                    f.index,
-                    f.unicode,
-                    f.residual.unwrap_or(f64::NAN)
-                ));
-            }
-        }
+        problems.extend(disagreements(&forms));
     }
-    let erratum = e
-        .erratum
-        .is_some()
-        .then(|| {
-            crate::verify::errata::errata(cfg)
-                .into_iter()
-                .find(|r| r.number == number)
-        })
-        .flatten();
+    let erratum = erratum_of(&e, cfg);
     Ok(Shown {
         number,
         label: e.label(),
@@ -301,9 +259,9 @@ pub fn show(
         place,
         encoded_by: checks::encodings(&e),
         forms,
-        forms_agree,
-        forms_agree_exactly,
-        misprints_differ,
+        forms_agree: agreement.forms_agree,
+        forms_agree_exactly: agreement.forms_agree_exactly,
+        misprints_differ: agreement.misprints_differ,
         checks: details,
         verify: row,
         code: e.functions.iter().map(|f| source::function(f)).collect(),
@@ -311,6 +269,90 @@ pub fn show(
         erratum,
         problems,
     })
+}
+
+/// Every printed form of `e` at `point`; a form that overflows a double is the state's fault,
+/// not the print's, and is refused as bad input.
+fn finite_form_values(
+    e: &Equation,
+    point: &state::Point,
+) -> Result<Vec<values::FormValue>, String> {
+    let forms = values::form_values(e, point)?;
+    if let Some(f) = forms
+        .iter()
+        .find(|f| f.error.as_deref() == Some(values::NOT_FINITE))
+    {
+        return Err(format!(
+            "show: at this state form {} of ({}) overflows a double; choose m, l, g nearer 1",
+            f.index, e.number
+        ));
+    }
+    Ok(forms)
+}
+
+/// A printed form of the display (its continued first form included), not a misprint.
+fn is_printed(f: &&values::FormValue) -> bool {
+    f.role == "printed" || f.role == "continued"
+}
+
+/// Whether the forms agree at the state: the printed ones in f64 and exactly, the misprints
+/// differing in value or in units.
+struct Agreement {
+    forms_agree: bool,
+    forms_agree_exactly: Option<bool>,
+    misprints_differ: bool,
+}
+
+impl Agreement {
+    /// The agreement of `forms`; exactly only when the state is exact.
+    fn of(forms: &[values::FormValue], exact: bool) -> Self {
+        Agreement {
+            forms_agree: forms
+                .iter()
+                .filter(is_printed)
+                .all(|f| f.agrees != Some(false) && f.error.is_none()),
+            forms_agree_exactly: exact.then(|| {
+                forms
+                    .iter()
+                    .filter(is_printed)
+                    .all(|f| f.exact_agrees != Some(false))
+            }),
+            misprints_differ: forms.iter().filter(|f| f.role == "misprint").all(|f| {
+                f.agrees == Some(false)
+                    || f.exact_agrees == Some(false)
+                    || f.unit.starts_with("inconsistent")
+            }),
+        }
+    }
+}
+
+/// A problem for each printed form that disagrees with its chain (when they must agree).
+fn disagreements(forms: &[values::FormValue]) -> Vec<String> {
+    forms
+        .iter()
+        .filter(is_printed)
+        .filter(|f| f.agrees == Some(false) || f.exact_agrees == Some(false))
+        .map(|f| {
+            format!(
+                "form {} '{}' disagrees with its chain at this state (residual {:.3e} bounds)",
+                f.index,
+                f.unicode,
+                f.residual.unwrap_or(f64::NAN)
+            )
+        })
+        .collect()
+}
+
+/// For an erratum, its report from `ladder errata` (printed and corrected forms, difference).
+fn erratum_of(e: &Equation, cfg: &Config) -> Option<ErratumReport> {
+    e.erratum
+        .is_some()
+        .then(|| {
+            crate::verify::errata::errata(cfg)
+                .into_iter()
+                .find(|r| r.number == e.number)
+        })
+        .flatten()
 }
 
 /// What `ladder show QUERY` finds: the displays a query names, shown at the state, or the

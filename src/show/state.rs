@@ -79,125 +79,46 @@ pub fn default_at() -> At {
     }
 }
 
-/// Complete a user state (missing m, l, g, θ from the worked example) and build it.
+/// Complete a user state (missing m, l, g, θ from the worked example) and build it: θ̇ given or
+/// from the energy, θ̈ given or from (5), in f64, with error bounds, and exactly when it can be.
 pub fn build(at: &At) -> Point {
     let d = default_at();
     let mut how = Vec::new();
-    let mut pick = |v: &Option<Rational>, dv: &Option<Rational>, name: &str| {
-        v.clone().unwrap_or_else(|| {
-            how.push(format!("{name} from the worked example"));
-            dv.clone().unwrap_or_else(Rational::one)
-        })
+    let ladder_q = Ladder {
+        m: given_or_example(&at.m, &d.m, "m", &mut how),
+        l: given_or_example(&at.l, &d.l, "l", &mut how),
+        g: given_or_example(&at.g, &d.g, "g", &mut how),
     };
-    let (m, l, g) = (
-        pick(&at.m, &d.m, "m"),
-        pick(&at.l, &d.l, "l"),
-        pick(&at.g, &d.g, "g"),
-    );
     let theta = at.theta.clone().unwrap_or_else(|| {
         how.push("θ = 30° from the worked example".into());
         d.theta.clone().unwrap_or(Angle::Radians(0.0))
     });
-    let mut why_not: Option<String> = None;
     let exact_theta = theta.exact();
-    if exact_theta.is_none() {
-        why_not = Some(
-            "θ has no rational sin and cos (give sin_theta=3/5, cos_theta=…, or tan_half_theta=… for an exact state)"
-                .into(),
-        );
-    }
-    let (s, c, trig_units) = theta.float();
-    let flt = |q: &Rational| to_f64(q);
-    let bnd = |q: &Rational| {
-        let x = to_f64(q);
-        // A rational that is not a double is rounded once.
-        let units = if Rational::from_float(x).as_ref() == Some(q) {
-            0.0
-        } else {
-            1.0
-        };
-        Bound::inexact(x, units)
-    };
-    let ladder_f = Ladder {
-        m: flt(&m),
-        l: flt(&l),
-        g: flt(&g),
-    };
-    let ladder_b = Ladder {
-        m: bnd(&m),
-        l: bnd(&l),
-        g: bnd(&g),
-    };
-    let ladder_q = Ladder {
-        m: m.clone(),
-        l: l.clone(),
-        g: g.clone(),
-    };
-    let (sb, cb) = (Bound::inexact(s, trig_units), Bound::inexact(c, trig_units));
-
-    // θ̇: given, or from the energy of a release at rest at θ0.
-    let (rate_f, rate_b, rate_q, theta0) = match &at.rate {
-        Some(r) => {
-            how.push("θ̇ given".into());
-            (flt(r), bnd(r), Some(r.clone()), None)
-        }
-        None => {
-            let t0 = at.theta0.clone().unwrap_or(Angle::Radians(0.0));
-            let (_, c0, u0) = t0.float();
-            let q_b = Bound::ratio(3, 2) * ladder_b.g / ladder_b.l * (Bound::inexact(c0, u0) - cb);
-            let (rate_f, rate_b) = sqrt_bound(q_b);
-            let rate_q = match (t0.exact(), &exact_theta) {
-                (Some((_, c0q)), Some((_, cq))) => {
-                    let q = Rational::new(3.into(), 2.into()) * g.clone() / l.clone()
-                        * (c0q - cq.clone());
-                    let r = rational_sqrt(&q);
-                    if r.is_none() && why_not.is_none() {
-                        why_not = Some(format!(
-                            "θ̇² = (3g/2l)(cos θ0 − cos θ) = {q} is not the square of a rational (give theta_dot for an exact state)"
-                        ));
-                    }
-                    r
-                }
-                _ => {
-                    if why_not.is_none() {
-                        why_not = Some("θ0 has no rational cos (give cos_theta0=…)".into());
-                    }
-                    None
-                }
-            };
-            how.push(format!(
-                "θ̇ from the energy, released at rest at θ0 = {}° (θ̇² = (3g/2l)(cos θ0 − cos θ); (10) when θ0 = 0)",
-                format!("{:.6}", t0.radians().to_degrees()).trim_end_matches('0').trim_end_matches('.')
-            ));
-            (rate_f, rate_b, rate_q, Some(t0.radians()))
-        }
-    };
-    let on_motion = at.accel.is_none();
-    how.push(if on_motion {
-        "θ̈ from (5), θ⃛ = Ω² cos θ θ̇ (its d/dt): on the motion".into()
-    } else {
-        format!(
-            "θ̈ given (off the motion unless it equals (5)), θ⃛ {}",
-            if at.jerk.is_some() { "given" } else { "= 0" }
-        )
+    let mut why_not = exact_theta.is_none().then(|| {
+        "θ has no rational sin and cos (give sin_theta=3/5, cos_theta=…, or tan_half_theta=… for an exact state)"
+            .to_string()
     });
-    let float = complete(
-        ladder_f,
-        s,
-        c,
-        rate_f,
-        at.accel.as_ref().map(flt),
-        at.jerk.as_ref().map(flt),
-    );
-    let bound = complete(
-        ladder_b,
-        sb,
+    let (s, c, trig_units) = theta.float();
+    let (ladder_f, ladder_b) = (float_ladder(&ladder_q), bound_ladder(&ladder_q));
+    let (sb, cb) = (Bound::inexact(s, trig_units), Bound::inexact(c, trig_units));
+    let rate = rate_of(
+        at,
+        (&ladder_q, &ladder_b),
         cb,
-        rate_b,
-        at.accel.as_ref().map(bnd),
-        at.jerk.as_ref().map(bnd),
+        &exact_theta,
+        &mut why_not,
+        &mut how,
     );
-    let exact = match (exact_theta, rate_q) {
+    let on_motion = at.accel.is_none();
+    how.push(accel_source(at));
+    let (accel_f, jerk_f) = (at.accel.as_ref().map(to_f64), at.jerk.as_ref().map(to_f64));
+    let float = complete(ladder_f, s, c, rate.float, accel_f, jerk_f);
+    let (accel_b, jerk_b) = (
+        at.accel.as_ref().map(bound_of),
+        at.jerk.as_ref().map(bound_of),
+    );
+    let bound = complete(ladder_b, sb, cb, rate.bound, accel_b, jerk_b);
+    let exact = match (exact_theta, rate.exact) {
         (Some((sq, cq)), Some(rq)) => Some(complete(
             ladder_q,
             sq,
@@ -208,27 +129,179 @@ pub fn build(at: &At) -> Point {
         )),
         _ => None,
     };
-    let fs = &float.1;
-    let phase = super::phase::phase(&float, &bound, on_motion, theta0);
+    let phase = super::phase::phase(&float, &bound, on_motion, rate.theta0);
+    let why_not_exact = if exact.is_some() { None } else { why_not };
+    let summary = summary(
+        &float,
+        &theta,
+        rate.theta0,
+        on_motion,
+        how,
+        why_not_exact,
+        phase,
+    );
     Point {
-        summary: Summary {
-            m: float.0.m,
-            l: float.0.l,
-            g: float.0.g,
-            theta: theta.radians(),
-            theta_deg: theta.radians().to_degrees(),
-            theta0,
-            theta_dot: fs.rate,
-            theta_ddot: fs.accel,
-            theta_dddot: fs.jerk,
-            on_motion,
-            how,
-            why_not_exact: if exact.is_some() { None } else { why_not },
-            phase,
-        },
+        summary,
         float,
         bound,
         exact,
+    }
+}
+
+/// A value the user gave, else the worked example's (noted in `how`).
+fn given_or_example(
+    v: &Option<Rational>,
+    example: &Option<Rational>,
+    name: &str,
+    how: &mut Vec<String>,
+) -> Rational {
+    v.clone().unwrap_or_else(|| {
+        how.push(format!("{name} from the worked example"));
+        example.clone().unwrap_or_else(Rational::one)
+    })
+}
+
+/// m, l, g in f64.
+fn float_ladder(q: &Ladder<Rational>) -> Ladder<f64> {
+    Ladder {
+        m: to_f64(&q.m),
+        l: to_f64(&q.l),
+        g: to_f64(&q.g),
+    }
+}
+
+/// m, l, g with their rounding as error bounds.
+fn bound_ladder(q: &Ladder<Rational>) -> Ladder<Bound> {
+    Ladder {
+        m: bound_of(&q.m),
+        l: bound_of(&q.l),
+        g: bound_of(&q.g),
+    }
+}
+
+/// A rational input as a `Bound`: a rational that is not a double is rounded once.
+fn bound_of(q: &Rational) -> Bound {
+    let x = to_f64(q);
+    let units = if Rational::from_float(x).as_ref() == Some(q) {
+        0.0
+    } else {
+        1.0
+    };
+    Bound::inexact(x, units)
+}
+
+/// θ̇: given, or from the energy of a release at rest at θ0 ([`energy_rate`]).
+fn rate_of(
+    at: &At,
+    ladders: (&Ladder<Rational>, &Ladder<Bound>),
+    cb: Bound,
+    exact_theta: &Option<(Rational, Rational)>,
+    why_not: &mut Option<String>,
+    how: &mut Vec<String>,
+) -> Rate {
+    let Some(r) = &at.rate else {
+        return energy_rate(at, ladders, cb, exact_theta, why_not, how);
+    };
+    how.push("θ̇ given".into());
+    Rate {
+        float: to_f64(r),
+        bound: bound_of(r),
+        exact: Some(r.clone()),
+        theta0: None,
+    }
+}
+
+/// θ̇ in every scalar, and θ0 when it comes from the energy.
+struct Rate {
+    float: f64,
+    bound: Bound,
+    exact: Option<Rational>,
+    theta0: Option<f64>,
+}
+
+/// θ̇ from the energy of a release at rest at θ0 (θ0 = 0 unless given):
+/// θ̇² = (3g/2l)(cos θ0 − cos θ), which is (10) for θ0 = 0; exact when cos θ0 and cos θ are
+/// rational and θ̇² is a rational square (else `why_not` says why, unless it already does).
+fn energy_rate(
+    at: &At,
+    (ladder_q, ladder_b): (&Ladder<Rational>, &Ladder<Bound>),
+    cb: Bound,
+    exact_theta: &Option<(Rational, Rational)>,
+    why_not: &mut Option<String>,
+    how: &mut Vec<String>,
+) -> Rate {
+    let t0 = at.theta0.clone().unwrap_or(Angle::Radians(0.0));
+    let (_, c0, u0) = t0.float();
+    let q_b = Bound::ratio(3, 2) * ladder_b.g / ladder_b.l * (Bound::inexact(c0, u0) - cb);
+    let (rate_f, rate_b) = sqrt_bound(q_b);
+    let rate_q = match (t0.exact(), exact_theta) {
+        (Some((_, c0q)), Some((_, cq))) => {
+            let q = Rational::new(3.into(), 2.into()) * ladder_q.g.clone() / ladder_q.l.clone()
+                * (c0q - cq.clone());
+            let r = rational_sqrt(&q);
+            if r.is_none() && why_not.is_none() {
+                *why_not = Some(format!(
+                    "θ̇² = (3g/2l)(cos θ0 − cos θ) = {q} is not the square of a rational (give theta_dot for an exact state)"
+                ));
+            }
+            r
+        }
+        _ => {
+            if why_not.is_none() {
+                *why_not = Some("θ0 has no rational cos (give cos_theta0=…)".into());
+            }
+            None
+        }
+    };
+    how.push(format!(
+        "θ̇ from the energy, released at rest at θ0 = {}° (θ̇² = (3g/2l)(cos θ0 − cos θ); (10) when θ0 = 0)",
+        format!("{:.6}", t0.radians().to_degrees()).trim_end_matches('0').trim_end_matches('.')
+    ));
+    Rate {
+        float: rate_f,
+        bound: rate_b,
+        exact: rate_q,
+        theta0: Some(t0.radians()),
+    }
+}
+
+/// Where θ̈ and θ⃛ come from, in words: (5) and its d/dt on the motion, else as given.
+fn accel_source(at: &At) -> String {
+    if at.accel.is_none() {
+        "θ̈ from (5), θ⃛ = Ω² cos θ θ̇ (its d/dt): on the motion".into()
+    } else {
+        format!(
+            "θ̈ given (off the motion unless it equals (5)), θ⃛ {}",
+            if at.jerk.is_some() { "given" } else { "= 0" }
+        )
+    }
+}
+
+/// The state in words and numbers, from its f64 values.
+fn summary(
+    float: &(Ladder<f64>, State<f64>),
+    theta: &Angle,
+    theta0: Option<f64>,
+    on_motion: bool,
+    how: Vec<String>,
+    why_not_exact: Option<String>,
+    phase: super::phase::Phase,
+) -> Summary {
+    let fs = &float.1;
+    Summary {
+        m: float.0.m,
+        l: float.0.l,
+        g: float.0.g,
+        theta: theta.radians(),
+        theta_deg: theta.radians().to_degrees(),
+        theta0,
+        theta_dot: fs.rate,
+        theta_ddot: fs.accel,
+        theta_dddot: fs.jerk,
+        on_motion,
+        how,
+        why_not_exact,
+        phase,
     }
 }
 

@@ -23,6 +23,7 @@ use crate::registry::{Equation, ParticleSample, Role, Side};
 use crate::scalar::{Bound, Rational, Scalar};
 use crate::system::{Point as PPoint, Spin, System};
 use serde::Serialize;
+use std::rc::Rc;
 
 type Chains<S> = Vec<Vec<Side<S>>>;
 
@@ -182,11 +183,7 @@ pub fn place_of(e: &Equation) -> Option<Place> {
     }
 }
 
-fn eval_form<S: Scalar>(
-    e: &Equation,
-    f: &Form,
-    m: &std::rc::Rc<Model<S>>,
-) -> Result<Value<S>, String> {
+fn eval_form<S: Scalar>(e: &Equation, f: &Form, m: &Rc<Model<S>>) -> Result<Value<S>, String> {
     let ctx = Ctx {
         model: m.clone(),
         section: e.section,
@@ -202,7 +199,7 @@ fn eval_form<S: Scalar>(
 fn exact_guarded(
     e: &Equation,
     f: &Form,
-    m: &std::rc::Rc<Model<Rational>>,
+    m: &Rc<Model<Rational>>,
 ) -> Result<Value<Rational>, String> {
     std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| eval_form(e, f, m)))
         .unwrap_or_else(|_| Err("undefined here exactly (a division by zero)".into()))
@@ -232,11 +229,13 @@ pub fn form_values(e: &Equation, point: &Point) -> Result<Vec<FormValue>, String
 /// [`form_values`] of a given print of `e` (a perturbed copy, in tests).
 pub fn form_values_of(e: &Equation, latex: &str, point: &Point) -> Result<Vec<FormValue>, String> {
     let (_, chains) = print_chains(e.number, latex)?;
-    let mf = std::rc::Rc::new(model(e, &point.float.0, &point.float.1)?);
-    let mb = std::rc::Rc::new(model(e, &point.bound.0, &point.bound.1)?);
-    let mq = match &point.exact {
-        Some((l, s)) => Some(std::rc::Rc::new(model(e, l, s)?)),
-        None => None,
+    let models = Models {
+        float: Rc::new(model(e, &point.float.0, &point.float.1)?),
+        bound: Rc::new(model(e, &point.bound.0, &point.bound.1)?),
+        exact: match &point.exact {
+            Some((l, s)) => Some(Rc::new(model(e, l, s)?)),
+            None => None,
+        },
     };
     // Each form's unit, as `ladder verify` judges it (the same forms in the same order).
     let units: Vec<String> = match print_form_units(e, latex) {
@@ -245,85 +244,125 @@ pub fn form_values_of(e: &Equation, latex: &str, point: &Point) -> Result<Vec<Fo
     };
     let mut out = Vec::new();
     for (ci, chain) in chains.iter().enumerate() {
-        let vf: Vec<_> = chain.iter().map(|f| eval_form(e, f, &mf)).collect();
-        let vb: Vec<_> = chain.iter().map(|f| eval_form(e, f, &mb)).collect();
-        let vq: Vec<Option<Result<Value<Rational>, String>>> = chain
-            .iter()
-            .map(|f| mq.as_ref().map(|m| exact_guarded(e, f, m)))
-            .collect();
-        let width = vf
-            .iter()
-            .flatten()
-            .map(|v| v.components().len())
-            .max()
-            .unwrap_or(1);
-        let base = chain
-            .iter()
-            .position(|f| f.role != Role::Misprint)
-            .unwrap_or(0);
-        for (k, f) in chain.iter().enumerate() {
-            let role = if e.continues.is_some() && ci == 0 && k == 0 {
-                "continued"
-            } else if f.role == Role::Misprint {
-                "misprint"
-            } else {
-                "printed"
-            };
-            let mut row = FormValue {
-                index: out.len() + 1,
-                chain: ci + 1,
-                latex: f.text.clone(),
-                unicode: crate::print::unicode::unicode(&f.text),
-                role,
-                milne: f.milne,
-                value: Vec::new(),
-                bound: Vec::new(),
-                exact: None,
-                unit: units[out.len()].clone(),
-                residual: None,
-                agrees: None,
-                exact_agrees: None,
-                error: None,
-            };
-            match (&vf[k], &vb[k]) {
-                (Ok(x), Ok(xb)) => {
-                    row.value = comps(x, width);
-                    row.bound = comps(xb, width).iter().map(Bound::abs_error).collect();
-                    if row.value.iter().any(|v| !v.is_finite()) {
-                        row.error = Some(NOT_FINITE.into());
-                        row.value = Vec::new();
-                        out.push(row);
-                        continue;
-                    }
-                    if let (true, Ok(b0), Ok(bb0)) = (k != base, &vf[base], &vb[base]) {
-                        let pairs: (Chains<f64>, Chains<Bound>) = comps(b0, width)
-                            .into_iter()
-                            .zip(comps(x, width))
-                            .zip(comps(bb0, width).into_iter().zip(comps(xb, width)))
-                            .map(|((a, b), (ab, bb))| {
-                                (vec![side(a), side(b)], vec![side(ab), side(bb)])
-                            })
-                            .unzip();
-                        let (scaled, _) = float_residual(&pairs.0, &pairs.1);
-                        row.residual = Some(scaled);
-                        row.agrees = Some(scaled <= TOLERANCE_FACTOR);
-                    }
-                }
-                (Err(err), _) | (_, Err(err)) => row.error = Some(err.clone()),
-            }
-            if let Some(Ok(q)) = &vq[k] {
-                row.exact = Some(comps(q, width).iter().map(ToString::to_string).collect());
-                if let (true, Some(Ok(q0))) = (k != base, &vq[base]) {
-                    let chains: Vec<Vec<Side<Rational>>> = comps(q0, width)
-                        .into_iter()
-                        .zip(comps(q, width))
-                        .map(|(a, b)| vec![side(a), side(b)])
-                        .collect();
-                    row.exact_agrees = Some(exact_residual(&chains).0);
-                }
-            }
-            out.push(row);
-        }
+        chain_rows(e, ci, chain, &models, &units, &mut out);
     }
     Ok(out)
+}
+
+/// The display's model at the state in each scalar (exact when the state is).
+struct Models {
+    float: Rc<Model<f64>>,
+    bound: Rc<Model<Bound>>,
+    exact: Option<Rc<Model<Rational>>>,
+}
+
+/// The rows of chain `ci` (from 0): each form's value, bound and exact value, held against the
+/// chain's first form that is not a misprint.
+fn chain_rows(
+    e: &Equation,
+    ci: usize,
+    chain: &[Form],
+    models: &Models,
+    units: &[String],
+    out: &mut Vec<FormValue>,
+) {
+    let vf: Vec<_> = chain
+        .iter()
+        .map(|f| eval_form(e, f, &models.float))
+        .collect();
+    let vb: Vec<_> = chain
+        .iter()
+        .map(|f| eval_form(e, f, &models.bound))
+        .collect();
+    let vq: Vec<Option<Result<Value<Rational>, String>>> = chain
+        .iter()
+        .map(|f| models.exact.as_ref().map(|m| exact_guarded(e, f, m)))
+        .collect();
+    let width = vf
+        .iter()
+        .flatten()
+        .map(|v| v.components().len())
+        .max()
+        .unwrap_or(1);
+    let base = chain
+        .iter()
+        .position(|f| f.role != Role::Misprint)
+        .unwrap_or(0);
+    for (k, f) in chain.iter().enumerate() {
+        let mut row = blank_row(e, ci, k, f, out.len() + 1, units[out.len()].clone());
+        match (&vf[k], &vb[k]) {
+            (Ok(x), Ok(xb)) => {
+                row.value = comps(x, width);
+                row.bound = comps(xb, width).iter().map(Bound::abs_error).collect();
+                if row.value.iter().any(|v| !v.is_finite()) {
+                    row.error = Some(NOT_FINITE.into());
+                    row.value = Vec::new();
+                    out.push(row);
+                    continue;
+                }
+                if let (true, Ok(b0), Ok(bb0)) = (k != base, &vf[base], &vb[base]) {
+                    float_agreement(&mut row, (b0, bb0), (x, xb), width);
+                }
+            }
+            (Err(err), _) | (_, Err(err)) => row.error = Some(err.clone()),
+        }
+        if let Some(Ok(q)) = &vq[k] {
+            row.exact = Some(comps(q, width).iter().map(ToString::to_string).collect());
+            if let (true, Some(Ok(q0))) = (k != base, &vq[base]) {
+                let chains: Vec<Vec<Side<Rational>>> = comps(q0, width)
+                    .into_iter()
+                    .zip(comps(q, width))
+                    .map(|(a, b)| vec![side(a), side(b)])
+                    .collect();
+                row.exact_agrees = Some(exact_residual(&chains).0);
+            }
+        }
+        out.push(row);
+    }
+}
+
+/// Form `k` of chain `ci` before evaluation: its place (`index`, from 1), print, role and unit.
+fn blank_row(e: &Equation, ci: usize, k: usize, f: &Form, index: usize, unit: String) -> FormValue {
+    let role = if e.continues.is_some() && ci == 0 && k == 0 {
+        "continued"
+    } else if f.role == Role::Misprint {
+        "misprint"
+    } else {
+        "printed"
+    };
+    FormValue {
+        index,
+        chain: ci + 1,
+        latex: f.text.clone(),
+        unicode: crate::print::unicode::unicode(&f.text),
+        role,
+        milne: f.milne,
+        value: Vec::new(),
+        bound: Vec::new(),
+        exact: None,
+        unit,
+        residual: None,
+        agrees: None,
+        exact_agrees: None,
+        error: None,
+    }
+}
+
+/// A form's f64 agreement with its chain's first form: the residual in units of the running
+/// error bounds (the registry's verdict, [`float_residual`]), component by component.
+fn float_agreement(
+    row: &mut FormValue,
+    (b0, bb0): (&Value<f64>, &Value<Bound>),
+    (x, xb): (&Value<f64>, &Value<Bound>),
+    width: usize,
+) {
+    let pairs: (Chains<f64>, Chains<Bound>) = comps(b0, width)
+        .into_iter()
+        .zip(comps(x, width))
+        .zip(comps(bb0, width).into_iter().zip(comps(xb, width)))
+        .map(|((a, b), (ab, bb))| (vec![side(a), side(b)], vec![side(ab), side(bb)]))
+        .unzip();
+    let (scaled, _) = float_residual(&pairs.0, &pairs.1);
+    row.residual = Some(scaled);
+    row.agrees = Some(scaled <= TOLERANCE_FACTOR);
 }

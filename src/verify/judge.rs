@@ -3,8 +3,45 @@
 
 use super::*;
 
-/// Judge one equation from its check reports.
+/// Judge one equation from its check reports: its problems (residuals, misprints, units, the
+/// law step off the motion), its status, and the row `ladder verify` prints.
 pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
+    let mut problems = report_problems(reports);
+    // Dimensional analysis: a side that must hold and mixes units is a defect like a residual.
+    let units_found = equation_units(e);
+    problems.extend(units_found.problems.iter().map(|p| format!("units: {p}")));
+    let (units, units_detail) = units_found.verdict();
+    // A display with no Rust check is judged off the motion from its print
+    // ([`super::print_judge`]).
+    if let Some(law) = e.law.filter(|_| !e.checks.is_empty()) {
+        problems.extend(law_problems(law.step, reports));
+    }
+    let on_shell = reports
+        .iter()
+        .filter_map(|r| r.off_shell_fails)
+        .collect::<Vec<_>>();
+    let status = if !problems.is_empty() {
+        Status::Failed
+    } else if e.erratum.is_some() {
+        Status::Erratum
+    } else if e.kind == Kind::Definition {
+        Status::Definition
+    } else {
+        Status::Verified
+    };
+    result_row(
+        e,
+        reports,
+        status,
+        problems,
+        (units, units_detail),
+        &on_shell,
+    )
+}
+
+/// What the check reports found wrong: float states out of tolerance, nonzero exact residuals,
+/// misprints that did not fail, on-shell checks that hold off the motion too.
+fn report_problems(reports: &[CheckReport]) -> Vec<String> {
     let mut problems = Vec::new();
     for r in reports {
         if r.float_failures > 0 {
@@ -31,48 +68,45 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
             ));
         }
     }
-    // Dimensional analysis: a side that must hold and mixes units is a defect like a residual.
-    let units_found = equation_units(e);
-    problems.extend(units_found.problems.iter().map(|p| format!("units: {p}")));
-    let (units, units_detail) = units_found.verdict();
-    // A display with no Rust check is judged off the motion from its print
-    // ([`super::print_judge`]).
-    if let Some(law) = e.law.filter(|_| !e.checks.is_empty()) {
-        // Every on-shell check of the display must break off the motion at the marked `=` only.
-        let found: Vec<_> = reports
-            .iter()
-            .filter(|r| r.off_shell_fails.is_some())
-            .map(|r| (r.name, r.off_motion_breaks.clone()))
-            .collect();
-        if found.is_empty() {
+    problems
+}
+
+/// Every on-shell check of a display with a law marked at `=` no. `step` must break off the
+/// motion at that `=` only; the problems where one does not, or where no check looks.
+fn law_problems(step: u32, reports: &[CheckReport]) -> Vec<String> {
+    let mut problems = Vec::new();
+    let found: Vec<_> = reports
+        .iter()
+        .filter(|r| r.off_shell_fails.is_some())
+        .map(|r| (r.name, r.off_motion_breaks.clone()))
+        .collect();
+    if found.is_empty() {
+        problems.push(format!(
+            "the law is marked at `=` no. {step} but no check evaluates the display off the motion"
+        ));
+    }
+    for (name, b) in found {
+        if b.as_deref() != Some(&[step][..]) {
             problems.push(format!(
-                "the law is marked at `=` no. {} but no check evaluates the display off the motion",
-                law.step
+                "{name}: the law is marked at `=` no. {step}, but off the motion the display breaks at {:?}",
+                b.unwrap_or_default()
             ));
         }
-        for (name, b) in found {
-            if b.as_deref() != Some(&[law.step][..]) {
-                problems.push(format!(
-                    "{name}: the law is marked at `=` no. {}, but off the motion the display breaks at {:?}",
-                    law.step,
-                    b.unwrap_or_default()
-                ));
-            }
-        }
     }
-    let on_shell = reports
-        .iter()
-        .filter_map(|r| r.off_shell_fails)
-        .collect::<Vec<_>>();
-    let status = if !problems.is_empty() {
-        Status::Failed
-    } else if e.erratum.is_some() {
-        Status::Erratum
-    } else if e.kind == Kind::Definition {
-        Status::Definition
-    } else {
-        Status::Verified
-    };
+    problems
+}
+
+/// The row of an equation: the judge's verdicts, and the check reports' figures summed (cases,
+/// exact points, worst residual, Schwartz-Zippel bounds); its proof and print are the later
+/// passes' to fill.
+fn result_row(
+    e: &Equation,
+    reports: &[CheckReport],
+    status: Status,
+    problems: Vec<String>,
+    (units, units_detail): (Units, Option<String>),
+    on_shell: &[bool],
+) -> EquationResult {
     EquationResult {
         number: e.number,
         label: e.label(),
@@ -106,7 +140,7 @@ pub fn judge(e: &Equation, reports: &[CheckReport]) -> EquationResult {
         } else {
             Some(on_shell.iter().all(|&b| b))
         },
-        off_motion: off_motion(e, &on_shell),
+        off_motion: off_motion(e, on_shell),
         law_step: e.law.map(|l| l.step),
         law: e.law.map(|l| l.statement),
         problems,

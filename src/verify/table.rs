@@ -123,57 +123,78 @@ pub fn render_for(results: &[EquationResult], wide: bool, columns: usize) -> Str
             line.to_string(),
         ];
         if one_line {
-            let title = wrap(r.title, TITLE_WIDTH);
-            let [c0, c1, c2, c3, c4, c5, c6, c7, c8] = cells;
-            let all = [
-                r.label.clone(),
-                r.section.to_string(),
-                title[0].clone(),
-                c0,
-                c1,
-                c2,
-                c3,
-                c4,
-                c5,
-                c6,
-                c7,
-                c8,
-            ];
-            out.push_str(&row(&COLUMNS, &all));
-            for more in &title[1..] {
-                out.push_str(&format!("{indent}{more}\n"));
-            }
+            out.push_str(&one_line_row(r, cells, &indent));
         } else {
-            let head = COLUMNS[0].1 + COLUMNS[1].1 + 2;
-            let title = wrap(r.title, columns.saturating_sub(head).max(TITLE_WIDTH));
-            out.push_str(&format!("{:>5} {:<5} {}\n", r.label, r.section, title[0]));
-            for more in &title[1..] {
-                out.push_str(&format!("{}{more}\n", " ".repeat(head)));
-            }
-            out.push_str(&indent);
-            out.push_str(&row(&NARROW_COLUMNS, &cells));
+            out.push_str(&narrow_row(r, &cells, &indent, columns));
         }
-        let mut under = Vec::new();
-        if wide || r.kind == Kind::Definition {
-            under.push(format!("checked: {}", r.checks.join("; ")));
-        }
-        if let (true, Some(step), Some(law)) = (wide, r.law_step, r.law) {
-            under.push(format!(
-                "law of motion at the {} `=`: {law}",
-                crate::docs::ordinal(step)
-            ));
-        }
-        under.extend(r.print_unparsed.iter().map(|u| format!("· print: {u}")));
-        under.extend(r.problems.iter().map(|p| format!("! {p}")));
-        if let (Units::Inconsistent, Some(d)) = (r.units, &r.units_detail) {
-            under.push(format!("units: {d}"));
-        }
-        for u in under {
+        for u in lines_under(r, wide) {
             out.push_str(&super::fill::fill_line(&format!("{indent}{u}"), columns));
             out.push('\n');
         }
     }
     out
+}
+
+/// A display in the one-line layout: number, section, the title's first line and the cells,
+/// then the rest of the title under the title column.
+fn one_line_row(r: &EquationResult, cells: [String; 9], indent: &str) -> String {
+    let title = wrap(r.title, TITLE_WIDTH);
+    let [c0, c1, c2, c3, c4, c5, c6, c7, c8] = cells;
+    let all = [
+        r.label.clone(),
+        r.section.to_string(),
+        title[0].clone(),
+        c0,
+        c1,
+        c2,
+        c3,
+        c4,
+        c5,
+        c6,
+        c7,
+        c8,
+    ];
+    let mut out = row(&COLUMNS, &all);
+    for more in &title[1..] {
+        out.push_str(&format!("{indent}{more}\n"));
+    }
+    out
+}
+
+/// A display in the narrow layout: number, section and the full title (wrapped to the
+/// terminal), then the cells on a line of their own.
+fn narrow_row(r: &EquationResult, cells: &[String; 9], indent: &str, columns: usize) -> String {
+    let head = COLUMNS[0].1 + COLUMNS[1].1 + 2;
+    let title = wrap(r.title, columns.saturating_sub(head).max(TITLE_WIDTH));
+    let mut out = format!("{:>5} {:<5} {}\n", r.label, r.section, title[0]);
+    for more in &title[1..] {
+        out.push_str(&format!("{}{more}\n", " ".repeat(head)));
+    }
+    out.push_str(indent);
+    out.push_str(&row(&NARROW_COLUMNS, cells));
+    out
+}
+
+/// The lines under a display's row: what a definition (or, with `wide`, any display) was
+/// checked against, the law of motion it uses (`wide`), what of its print did not parse, its
+/// problems, and a units clash.
+fn lines_under(r: &EquationResult, wide: bool) -> Vec<String> {
+    let mut under = Vec::new();
+    if wide || r.kind == Kind::Definition {
+        under.push(format!("checked: {}", r.checks.join("; ")));
+    }
+    if let (true, Some(step), Some(law)) = (wide, r.law_step, r.law) {
+        under.push(format!(
+            "law of motion at the {} `=`: {law}",
+            crate::docs::ordinal(step)
+        ));
+    }
+    under.extend(r.print_unparsed.iter().map(|u| format!("· print: {u}")));
+    under.extend(r.problems.iter().map(|p| format!("! {p}")));
+    if let (Units::Inconsistent, Some(d)) = (r.units, &r.units_detail) {
+        under.push(format!("units: {d}"));
+    }
+    under
 }
 
 /// One line of cells padded to the columns (the last cell unpadded).

@@ -151,86 +151,110 @@ pub fn footnote_4(l: &Ladder<Dim>, s: &State<Dim>, big_omega_squared: Dim) -> Un
 /// names (computed by the code's independent route).
 pub fn prose_units() -> Vec<ProseUnits> {
     let (l, s) = dimensioned_ladder(LadderSample::Kinematic);
+    vec![
+        prose_row(
+            "sec. 2.1, footnote 4",
+            "F_w = m l sin θ Ω² (3 cos θ − 2 cos θ0), zero at cos θ = (2/3) cos θ0",
+            footnote_4(&l, &s, l.big_omega2()),
+            false,
+        ),
+        prose_row(
+            "sec. 2.2",
+            "x_cm × m v_cm about A = −m l² θ̇",
+            orbital_about_a(&l, &s),
+            false,
+        ),
+        prose_row("sec. 2.2", "L'_C = I_C θ̇", spin_about_c(&l, &s), false),
+        prose_row(
+            "sec. A.5",
+            "L = L_A = −(2/3) m l θ̇ (printed; corrected −(2/3) m l² θ̇)",
+            l_a_erratum(&l, &s),
+            true,
+        ),
+        prose_row(
+            "sec. A.5 (end)",
+            "τ_A = τ_C + x_C × m a_cm",
+            torque_a_from_c(&l, &s),
+            false,
+        ),
+    ]
+}
+
+/// One prose claim's row: the verdict on its stated form and, for a prose erratum, whether its
+/// corrected form is consistent.
+fn prose_row(
+    location: &'static str,
+    stated: &'static str,
+    f: UnitsFindings,
+    erratum: bool,
+) -> ProseUnits {
+    let (units, units_detail) = f.verdict();
+    ProseUnits {
+        location,
+        stated,
+        units,
+        units_detail,
+        corrected: erratum.then_some(if f.problems.is_empty() {
+            Units::Consistent
+        } else {
+            Units::Inconsistent
+        }),
+    }
+}
+
+/// Sec. A.5: L = L_A written as −(2/3) m l θ̇ (a prose erratum), corrected −(2/3) m l² θ̇,
+/// against L_A of (12).
+fn l_a_erratum(l: &Ladder<Dim>, s: &State<Dim>) -> UnitsFindings {
     let (m, len, w) = (l.m.clone(), l.l.clone(), s.rate.clone());
-    let sys = as_system(&l, &s);
-    let l_a = angular_momentum_about_a(&l, &s);
-    // sec. A.5: L = L_A written as −(2/3) m l θ̇ (a prose erratum), corrected −(2/3) m l² θ̇.
-    let la = judge_chains(&[vec![
-        reference("(12): L_A", l_a),
+    judge_chains(&[vec![
+        reference("(12): L_A", angular_momentum_about_a(l, s)),
         misprint(
             "−(2/3) m l θ̇",
             -(Dim::ratio(2, 3) * m.clone() * len.clone() * w.clone()),
         ),
-        corrected(
-            "−(2/3) m l² θ̇",
-            -(Dim::ratio(2, 3) * m.clone() * sq(&len) * w.clone()),
-        ),
-    ]]);
-    // sec. 2.2: the orbital angular momentum of the centre of mass about A is −m l² θ̇.
+        corrected("−(2/3) m l² θ̇", -(Dim::ratio(2, 3) * m * sq(&len) * w)),
+    ]])
+}
+
+/// Sec. 2.2: the orbital angular momentum of the centre of mass about A is −m l² θ̇.
+fn orbital_about_a(l: &Ladder<Dim>, s: &State<Dim>) -> UnitsFindings {
+    let sys = as_system(l, s);
+    let m = l.m.clone();
     let orbital = sys.centre_of_mass().cross(&sys.cm_velocity().scale(&m)).z;
-    let orbital = judge_chains(&[vec![
+    judge_chains(&[vec![
         reference("x_cm × m v_cm of the particles", orbital),
-        printed("−m l² θ̇", -(m.clone() * sq(&len) * w.clone())),
-    ]]);
-    let footnote = footnote_4(&l, &s, l.big_omega2());
-    // sec. 2.2: L'_C = I_C θ̇.
+        printed("−m l² θ̇", -(m * sq(&l.l) * s.rate.clone())),
+    ]])
+}
+
+/// Sec. 2.2: the spin angular momentum about C is L'_C = I_C θ̇, I_C of (13).
+fn spin_about_c(l: &Ladder<Dim>, s: &State<Dim>) -> UnitsFindings {
     let c = Reference::Corner(Corner::C);
-    let rigid = judge_chains(&[vec![
+    judge_chains(&[vec![
         reference(
             "L'_C of the particles",
-            angular_momentum_about(&c, AngularMomentum::Relative, &l, &s),
+            angular_momentum_about(&c, AngularMomentum::Relative, l, s),
         ),
         printed(
             "I_C θ̇",
-            eq13_moment_of_inertia_about_corner(&l)[1].clone() * w,
+            eq13_moment_of_inertia_about_corner(l)[1].clone() * s.rate.clone(),
         ),
-    ]]);
-    // sec. A.5 (end): τ_A = τ_C + x_C × m a_cm.
-    let x_c = corner_position(Corner::C, &l, &s);
-    let torque = judge_chains(&[vec![
+    ]])
+}
+
+/// Sec. A.5 (end): the torque about A from the torque about C, τ_A = τ_C + x_C × m a_cm.
+fn torque_a_from_c(l: &Ladder<Dim>, s: &State<Dim>) -> UnitsFindings {
+    let sys = as_system(l, s);
+    let x_c = corner_position(Corner::C, l, s);
+    judge_chains(&[vec![
         reference(
             "τ_A of the external forces",
-            external_torque_about(&l, &sys, &Vec3::zero()).z,
+            external_torque_about(l, &sys, &Vec3::zero()).z,
         ),
         printed(
             "τ_C + x_C × m a_cm",
-            (external_torque_about(&l, &sys, &x_c) + x_c.cross(&sys.cm_acceleration().scale(&m))).z,
+            (external_torque_about(l, &sys, &x_c) + x_c.cross(&sys.cm_acceleration().scale(&l.m)))
+                .z,
         ),
-    ]]);
-    let row = |location, stated, f: crate::registry::units::UnitsFindings, erratum: bool| {
-        let (units, units_detail) = f.verdict();
-        ProseUnits {
-            location,
-            stated,
-            units,
-            units_detail,
-            corrected: erratum.then_some(if f.problems.is_empty() {
-                Units::Consistent
-            } else {
-                Units::Inconsistent
-            }),
-        }
-    };
-    vec![
-        row(
-            "sec. 2.1, footnote 4",
-            "F_w = m l sin θ Ω² (3 cos θ − 2 cos θ0), zero at cos θ = (2/3) cos θ0",
-            footnote,
-            false,
-        ),
-        row(
-            "sec. 2.2",
-            "x_cm × m v_cm about A = −m l² θ̇",
-            orbital,
-            false,
-        ),
-        row("sec. 2.2", "L'_C = I_C θ̇", rigid, false),
-        row(
-            "sec. A.5",
-            "L = L_A = −(2/3) m l θ̇ (printed; corrected −(2/3) m l² θ̇)",
-            la,
-            true,
-        ),
-        row("sec. A.5 (end)", "τ_A = τ_C + x_C × m a_cm", torque, false),
-    ]
+    ]])
 }

@@ -18,12 +18,13 @@ use super::{print_chains, print_sample, PrintSample};
 use crate::print::ast::Expr;
 use crate::print::eval::{evaluate, Ctx};
 use crate::print::quantity::Model;
-use crate::print::symbols::lookup;
+use crate::print::symbols::{lookup, Entry};
 use crate::registry::sample::{exact_ladder, particle_system};
 use crate::registry::Equation;
 use crate::scalar::Rational;
 use num_traits::Zero;
 use rand::SeedableRng;
+use std::collections::HashMap;
 
 /// A printed symbol and another symbol of its section that no state of the display tells apart.
 #[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
@@ -54,25 +55,53 @@ pub fn indistinguishable(e: &Equation) -> Vec<Twin> {
         .filter_map(|_| model(e, sample, &mut rng))
         .map(std::rc::Rc::new)
         .collect();
-    let table = crate::registry::symbol_table();
-    // Each symbol's values are computed once: the pair loop below asks for a table entry's
-    // values once per printed symbol, and a value at an exact point costs big-integer gcds.
-    let memo: std::cell::RefCell<std::collections::HashMap<(String, bool), Values>> =
-        Default::default();
-    let values = |key: &str, milne: bool| -> Values {
-        if let Some(v) = memo.borrow().get(&(key.to_string(), milne)) {
+    let mut values = SymbolValues {
+        e,
+        models,
+        table: crate::registry::symbol_table(),
+        memo: HashMap::new(),
+    };
+    let mut out: Vec<Twin> = Vec::new();
+    for (key, milne) in &keys {
+        let Some(mine) = lookup(values.table, key, e.section, e.number, *milne) else {
+            continue;
+        };
+        let Some(v) = values.of(key, *milne) else {
+            continue;
+        };
+        twins_of(key, *milne, mine, &v, &mut values, &mut out);
+    }
+    out
+}
+
+/// Each symbol's values at the display's exact states, computed once: the pair loop asks for
+/// a table entry's values once per printed symbol, and a value at an exact point costs
+/// big-integer gcds.
+struct SymbolValues<'a> {
+    e: &'a Equation,
+    models: Vec<std::rc::Rc<Model<Rational>>>,
+    table: &'static [Entry],
+    memo: HashMap<(String, bool), Values>,
+}
+
+impl SymbolValues<'_> {
+    /// The components of symbol `key` at each state (`None`: it does not evaluate, or is zero
+    /// at every state).
+    fn of(&mut self, key: &str, milne: bool) -> Values {
+        if let Some(v) = self.memo.get(&(key.to_string(), milne)) {
             return v.clone();
         }
-        let vals: Option<Vec<Vec<Rational>>> = models
+        let vals: Option<Vec<Vec<Rational>>> = self
+            .models
             .iter()
             .map(|m| {
                 let ctx = Ctx {
                     model: m.clone(),
-                    section: e.section,
-                    number: e.number,
+                    section: self.e.section,
+                    number: self.e.number,
                     milne,
                     index: None,
-                    table,
+                    table: self.table,
                 };
                 evaluate(&Expr::Sym(key.to_string()), &ctx)
                     .ok()
@@ -80,48 +109,48 @@ pub fn indistinguishable(e: &Equation) -> Vec<Twin> {
             })
             .collect();
         let vals = vals.filter(|v| v.iter().flatten().any(|x| !x.is_zero()));
-        memo.borrow_mut()
-            .insert((key.to_string(), milne), vals.clone());
+        self.memo.insert((key.to_string(), milne), vals.clone());
         vals
-    };
-    let mut out: Vec<Twin> = Vec::new();
-    for (key, milne) in &keys {
-        let Some(mine) = lookup(table, key, e.section, e.number, *milne) else {
+    }
+}
+
+/// The twins of printed symbol `key` (table entry `mine`, values `v`): every other entry of its
+/// section and notation with the same values, each pair listed once.
+fn twins_of(
+    key: &str,
+    milne: bool,
+    mine: &Entry,
+    v: &[Vec<Rational>],
+    values: &mut SymbolValues,
+    out: &mut Vec<Twin>,
+) {
+    let (table, section, number) = (values.table, values.e.section, values.e.number);
+    for other in table.iter().filter(|t| t.milne == milne && t.key != key) {
+        let Some(theirs) = lookup(table, &other.key, section, number, milne) else {
             continue;
         };
-        let Some(v) = values(key, *milne) else {
+        // Per-particle quantities mean particle 1 outside a Σ: no twin of anything.
+        let per_particle = |q: &str| q.starts_with("particle_");
+        // The same quantity under another name (x_P for x_C in A.1, where P is C) is a
+        // twin too; the entry itself under its own key is not.
+        if theirs.key != other.key
+            || per_particle(&theirs.quantity)
+            || per_particle(&mine.quantity)
+            || out.iter().any(|t| t.printed == other.key && t.other == key)
+        {
             continue;
-        };
-        for other in table.iter().filter(|t| t.milne == *milne && &t.key != key) {
-            let Some(theirs) = lookup(table, &other.key, e.section, e.number, *milne) else {
-                continue;
+        }
+        if values.of(&other.key, milne).as_deref() == Some(v) {
+            let twin = Twin {
+                printed: key.to_string(),
+                other: other.key.clone(),
+                quantities: (mine.quantity.clone(), theirs.quantity.clone()),
             };
-            // Per-particle quantities mean particle 1 outside a Σ: no twin of anything.
-            let per_particle = |q: &str| q.starts_with("particle_");
-            // The same quantity under another name (x_P for x_C in A.1, where P is C) is a
-            // twin too; the entry itself under its own key is not.
-            if theirs.key != other.key
-                || per_particle(&theirs.quantity)
-                || per_particle(&mine.quantity)
-                || out
-                    .iter()
-                    .any(|t| t.printed == other.key && &t.other == key)
-            {
-                continue;
-            }
-            if values(&other.key, *milne).as_ref() == Some(&v) {
-                let twin = Twin {
-                    printed: key.clone(),
-                    other: other.key.clone(),
-                    quantities: (mine.quantity.clone(), theirs.quantity.clone()),
-                };
-                if !out.contains(&twin) {
-                    out.push(twin);
-                }
+            if !out.contains(&twin) {
+                out.push(twin);
             }
         }
     }
-    out
 }
 
 /// One exact state of the display's print, its premises imposed.

@@ -6,11 +6,14 @@
 //! and in [`Degree`](crate::scalar::Degree) (to bound the degree for the Schwartz-Zippel lemma). Exact points on the
 //! unit circle come from sin θ = 2t/(1+t²), cos θ = (1−t²)/(1+t²).
 
+mod particles;
+
+pub use particles::particle_system;
+
 use crate::ladder::floor_phase::Slide;
 use crate::ladder::{Ladder, State};
 use crate::scalar::{Bound, Scalar};
-use crate::system::{Particle, Point, Spin, System};
-use crate::vector::Vec3;
+use crate::system::{Point, System};
 use rand::Rng;
 
 /// The sorts of ladder state.
@@ -227,122 +230,6 @@ impl RawParticles {
             .collect();
         RawParticles { n, values }
     }
-}
-
-/// Reads sample values in order.
-struct Reader<'a, S> {
-    values: &'a [S],
-    at: usize,
-}
-
-impl<S: Scalar> Reader<'_, S> {
-    fn scalar(&mut self) -> S {
-        let v = self.values[self.at].clone();
-        self.at += 1;
-        v
-    }
-    fn vec(&mut self, planar: bool) -> Vec3<S> {
-        let (x, y, z) = (self.scalar(), self.scalar(), self.scalar());
-        Vec3::new(x, y, if planar { S::int(0) } else { z })
-    }
-}
-
-/// Build a particle system and reference point of the given sort from values in any scalar type
-/// (f64 and `Bound` from a [`RawParticles`], rationals and degrees from random integers).
-/// `values` holds `n·PER_PARTICLE + EXTRA` numbers.
-pub fn particle_system<S: Scalar>(
-    sort: ParticleSample,
-    n: usize,
-    values: &[S],
-) -> (System<S>, Point<S>) {
-    use ParticleSample::*;
-    let planar = matches!(sort, RollingAboutP | PlanarRigid);
-    let mut r = Reader { values, at: 0 };
-    let mut particles: Vec<Particle<S>> = (0..n)
-        .map(|_| Particle {
-            m: r.scalar(),
-            x: r.vec(planar),
-            v: r.vec(planar),
-            a: r.vec(planar),
-            j: r.vec(planar),
-        })
-        .collect();
-    let mut p = Point {
-        x: r.vec(planar),
-        v: r.vec(planar),
-        a: r.vec(planar),
-        j: r.vec(planar),
-    };
-    let (omega, omega_dot) = (r.scalar(), r.scalar());
-    let mut spin_of = None;
-    let z = Vec3::along_z(S::int(1));
-    match sort {
-        General => {}
-        PAtCm | CmAtOriginPAtCm | PFixed | PAtOrigin | ForceFree | TorqueFree => {}
-        RollingAboutP => {
-            // Rolling without slipping: the body's material point at P is at rest, so every
-            // particle moves as v_i = ω ẑ × (x_i − x_P); P itself (the contact) moves with v_P.
-            let w = z.scale(&omega);
-            for q in &mut particles {
-                q.v = w.cross(&(q.x.clone() - p.x.clone()));
-            }
-            spin_of = Some(Spin {
-                omega: omega.clone(),
-                omega_dot: omega_dot.clone(),
-            });
-        }
-        PlanarRigid => {
-            // A rigid body: v_i = v_c + ω ẑ × r_i, a_i = a_c + ω̇ ẑ × r_i − ω² r_i, and the jerk
-            // that follows with ω̈ = 0; the centre's motion is P's random motion, P then fixed.
-            let sys = System {
-                particles: particles.clone(),
-                spin: None,
-            };
-            let cm = sys.centre_of_mass();
-            for q in &mut particles {
-                let r_i = q.x.clone() - cm.clone();
-                let r_dot = z.scale(&omega).cross(&r_i);
-                let w2 = omega.clone() * omega.clone();
-                q.v = p.v.clone() + r_dot.clone();
-                q.a = p.a.clone() + z.scale(&omega_dot).cross(&r_i) - r_i.scale(&w2);
-                q.j = p.j.clone() + z.scale(&omega_dot).cross(&r_dot)
-                    - r_i.scale(&(S::int(2) * omega.clone() * omega_dot.clone()))
-                    - r_dot.scale(&w2);
-            }
-            p = Point::fixed(p.x);
-            spin_of = Some(Spin { omega, omega_dot });
-        }
-    }
-    let mut sys = System {
-        particles,
-        spin: spin_of,
-    };
-    // Each sort changes a general draw only as its premise requires: a condition at an instant
-    // sets a position or velocity and leaves the rates above it free.
-    match sort {
-        PAtCm => {
-            // P on the centre of mass now, moving with it (v_P = v_cm); a_P stays free.
-            p.x = sys.centre_of_mass();
-            p.v = sys.cm_velocity();
-        }
-        PFixed => p = Point::fixed(p.x),
-        PAtOrigin => p.x = Vec3::zero(),
-        CmAtOriginPAtCm => {
-            // The centre of mass at the origin now, P riding on it: the Rust checks of (87),
-            // (88) take L_cm as L_P with this P (a device of theirs, not a premise: their
-            // prints are checked on general states, the bars imposed where printed).
-            let cm = sys.centre_of_mass();
-            for q in &mut sys.particles {
-                q.x = q.x.clone() - cm.clone();
-            }
-            p = sys.cm_point();
-        }
-        ForceFree => crate::print::condition::force_free(&mut sys),
-        // The particles' torques cancel in sum, not each.
-        TorqueFree => crate::print::condition::torque_free(&mut sys),
-        _ => {}
-    }
-    (sys, p)
 }
 
 /// The float sample of a raw particle draw, as f64 and with (zero) input error bounds.

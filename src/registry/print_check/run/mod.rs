@@ -1,18 +1,17 @@
-//! Running a display's printed chains on the registry's samples.
+//! Running a display's printed chains on the registry's samples: a probe, the float pass, the
+//! exact pass ([`exact`]) and, on the motion, the off-motion pass.
 
-use super::independent::{erratum_against_references, rust_sides};
-use super::premises::{premised, premised_parts};
-use super::{
-    evaluate_chains, form_text, misprints, print_chains_with, term_chains, Form, PrintReport,
-};
+mod exact;
+
+use super::premises::premised;
+use super::{evaluate_chains, form_text, misprints, print_chains_with, Form, PrintReport};
 use crate::print::quantity::Model;
-use crate::registry::check::{exact_residual, float_residual, Config, TOLERANCE_FACTOR};
+use crate::registry::check::{float_residual, Config, TOLERANCE_FACTOR};
 use crate::registry::sample::PrintSample;
-use crate::registry::sample::{
-    exact_ladder, particle_system, LadderSample, ParticleSample, RawLadder, RawParticles,
-};
-use crate::registry::{Chain, Equation, Eval, Role};
-use crate::scalar::{Bound, Rational, Scalar};
+use crate::registry::sample::{LadderSample, ParticleSample, RawLadder, RawParticles};
+use crate::registry::{Chain, Equation, Eval};
+use crate::scalar::Bound;
+use exact::exact_pass;
 use num_traits::Zero;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -148,125 +147,6 @@ fn float_pass(
     }
 }
 
-/// The exact points: every chain with zero residual, every misprint differing. Returns the
-/// values of the printed forms and their terms, and the Rust forms', at the first point (for
-/// matching the Rust function against the print).
-fn exact_pass(
-    e: &Equation,
-    chains: &[Vec<Form>],
-    sample: PrintSample,
-    cfg: &Config,
-    rng: &mut ChaCha8Rng,
-    rep: &mut PrintReport,
-) -> (Vec<Rational>, Vec<(String, Rational)>) {
-    let mut exact_fail: Option<(String, String)> = None;
-    let mut misprint_held: Vec<String> = Vec::new();
-    let mut code_values: Vec<Rational> = Vec::new();
-    let mut code_sides: Vec<(String, Rational)> = Vec::new();
-    let rust = sample_check(e).map(|c| c.eval);
-    // Alone, the print gets every exact point of a check; beside a Rust check, one.
-    rep.exact_points = if e.checks.is_empty() {
-        cfg.exact_points
-    } else {
-        cfg.exact_points.min(PRINT_EXACT_POINTS)
-    };
-    rep.degree = super::motion::degree(e, chains, sample);
-    // The Rust forms (to match against the print) and, for an erratum, its correct printed
-    // forms held to the check's independent values.
-    let mut held: Vec<String> = Vec::new();
-    let mut independent = |print: Result<Vec<Chain<Rational>>, String>,
-                           rust: Vec<Chain<Rational>>| {
-        if let Ok(print) = print {
-            held = erratum_against_references(e, chains, &print, &rust);
-        }
-        code_sides = rust_sides(&rust);
-    };
-    for k in 0..rep.exact_points {
-        let first = k == 0;
-        let mut note = |ch| {
-            note_exact(
-                ch,
-                chains,
-                &mut exact_fail,
-                &mut misprint_held,
-                &mut code_values,
-                first,
-                &mut rep.exact_failures,
-            )
-        };
-        match sample {
-            PrintSample::Ladder(sort) => {
-                let draw = crate::registry::check::exact_ladder_draw(rng);
-                let (l, s) = exact_ladder(sort, draw);
-                note(evaluate_chains(
-                    e,
-                    chains,
-                    Model::ladder(l.clone(), s.clone()),
-                    None,
-                ));
-                if first {
-                    let m = Model::ladder(l.clone(), s.clone());
-                    if let Ok(ch) = evaluate_chains(e, &term_chains(chains), m, None) {
-                        code_values.extend(ch.into_iter().flatten().map(|s| s.value));
-                    }
-                    if let Some(Eval::Ladder(_, f)) = rust {
-                        let here = Model::ladder(l.clone(), s.clone());
-                        independent(evaluate_chains(e, chains, here, None), (f.exact)(&l, &s));
-                    }
-                }
-            }
-            PrintSample::Particles(sort) => {
-                let (n, values) = crate::registry::check::exact_particle_draw(rng);
-                let (sys, p) = particle_system(sort, n, &values);
-                note(
-                    premised(e, sys.clone(), p.clone())
-                        .and_then(|m| evaluate_chains(e, chains, m, None)),
-                );
-                if first {
-                    // The Rust forms at a state of their own check's sort (which may assume
-                    // more than the print's premises), the print there too.
-                    let (n, sys, p) = match rust {
-                        Some(Eval::Particles(s, _)) if s != sort => {
-                            let (n, values) = crate::registry::check::exact_particle_draw(rng);
-                            let (sys, p) = particle_system(s, n, &values);
-                            (n, sys, p)
-                        }
-                        _ => (n, sys, p),
-                    };
-                    let Ok((sys, p)) = premised_parts(e, (sys, p)) else {
-                        continue;
-                    };
-                    // Per-particle statements: the forms at every particle.
-                    let with_terms = [chains.to_vec(), term_chains(chains)].concat();
-                    for i in 0..n {
-                        let m = Model::particles(sys.clone(), p.clone());
-                        if let Ok(ch) = evaluate_chains(e, &with_terms, m, Some(i)) {
-                            code_values.extend(ch.into_iter().flatten().map(|s| s.value));
-                        }
-                    }
-                    if let Some(Eval::Particles(_, f)) = rust {
-                        let here = Model::particles(sys.clone(), p.clone());
-                        independent(evaluate_chains(e, chains, here, None), (f.exact)(&sys, &p));
-                    }
-                }
-            }
-        }
-    }
-    if let Some((label, residual)) = exact_fail {
-        rep.problems.push(format!(
-            "print: {label} '{}' differs from its chain exactly (residual {residual})",
-            form_text(chains, &label)
-        ));
-    }
-    rep.problems.extend(held);
-    misprint_held.dedup();
-    for m in misprint_held {
-        rep.problems
-            .push(format!("print: the misprint {m} did not fail"));
-    }
-    (code_values, code_sides)
-}
-
 /// The registry check whose sample the print is evaluated on: for an on-shell display the one
 /// from rest if any (the energy (10) holds there only), else the first on-shell one.
 pub fn sample_check(e: &Equation) -> Option<&crate::registry::Check> {
@@ -342,52 +222,5 @@ fn note_float(
     }
     if scaled.is_nan() || scaled > worst.0 {
         *worst = (scaled, label);
-    }
-}
-
-fn note_exact(
-    ch: Result<Vec<Chain<Rational>>, String>,
-    chains: &[Vec<Form>],
-    fail: &mut Option<(String, String)>,
-    misprint_held: &mut Vec<String>,
-    values: &mut Vec<Rational>,
-    first: bool,
-    failures: &mut usize,
-) {
-    let ch = match ch {
-        Ok(c) => c,
-        Err(err) => {
-            *failures += 1;
-            fail.get_or_insert((format!("form 1 ({err})"), "undefined".into()));
-            return;
-        }
-    };
-    if first {
-        values.extend(ch.iter().flatten().map(|s| s.value.clone()));
-    }
-    let (ok, mis) = exact_residual(&ch);
-    *failures += usize::from(!ok);
-    if !ok && fail.is_none() {
-        for c in &ch {
-            let Some(base) = c.iter().position(|s| s.role != Role::Misprint) else {
-                continue;
-            };
-            if let Some(s) = c
-                .iter()
-                .find(|s| s.role != Role::Misprint && s.value != c[base].value)
-            {
-                let r = s.value.clone() - c[base].value.clone();
-                *fail = Some((s.label.to_string(), format!("{:.6e}", r.to_f64())));
-                break;
-            }
-        }
-    }
-    // A misprinted vector fails when any component differs.
-    let mut labels: Vec<&str> = mis.iter().map(|m| m.0).collect();
-    labels.dedup();
-    for label in labels {
-        if !mis.iter().any(|m| m.0 == label && m.1) {
-            misprint_held.push(format!("{label} '{}'", form_text(chains, label)));
-        }
     }
 }
