@@ -133,7 +133,11 @@ fn twins_of(
         let per_particle = |q: &str| q.starts_with("particle_");
         // The same quantity under another name (x_P for x_C in A.1, where P is C) is a
         // twin too; the entry itself under its own key is not.
+        // One quantity printed plain and bold (sec. 2's v_cm, whose square is the speed
+        // squared, and the vector v_cm) is one notation of one thing, not a twin.
+        let same_in_bold = theirs.quantity == mine.quantity && unbold(key) == unbold(&other.key);
         if theirs.key != other.key
+            || same_in_bold
             || per_particle(&theirs.quantity)
             || per_particle(&mine.quantity)
             || out.iter().any(|t| t.printed == other.key && t.other == key)
@@ -151,6 +155,40 @@ fn twins_of(
             }
         }
     }
+}
+
+/// A symbol's LaTeX with every `\mathbf{…}` replaced by its argument: `\mathbf{v}_{\text{cm}}`
+/// reads `v_{\text{cm}}`.
+pub fn unbold(latex: &str) -> String {
+    let mut out = String::new();
+    let mut rest = latex;
+    // Depths at which a `\mathbf{` opened: its closing brace is dropped.
+    let mut open: Vec<usize> = Vec::new();
+    let mut depth = 0usize;
+    while let Some(c) = rest.chars().next() {
+        if let Some(after) = rest.strip_prefix("\\mathbf{") {
+            depth += 1;
+            open.push(depth);
+            rest = after;
+            continue;
+        }
+        match c {
+            '{' => depth += 1,
+            '}' => {
+                if open.last() == Some(&depth) {
+                    open.pop();
+                    depth -= 1;
+                    rest = &rest[1..];
+                    continue;
+                }
+                depth = depth.saturating_sub(1);
+            }
+            _ => {}
+        }
+        out.push(c);
+        rest = &rest[c.len_utf8()..];
+    }
+    out
 }
 
 /// One exact state of the display's print, its premises imposed.

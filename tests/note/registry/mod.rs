@@ -11,4 +11,5 @@ mod perturbation;
 mod prove;
 mod source;
 mod source_fuzz;
+mod twins;
 mod units;

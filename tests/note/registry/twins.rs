@@ -1,0 +1,47 @@
+//! `registry::print_check::twins`: the pairs of symbols a display's states cannot tell apart, as
+//! `ladder show` lists them under `blind:`.
+
+use crate::common::equation;
+use sliding_ladder::registry::print_check::twins::{indistinguishable, unbold};
+use sliding_ladder::registry::symbol_table;
+
+#[test]
+fn unbold_reads_every_bold_symbol_as_its_argument() {
+    assert_eq!(unbold(r"\mathbf{v}_{\text{cm}}"), r"v_{\text{cm}}");
+    assert_eq!(unbold(r"\mathbf{L}'_{\text{cm}}"), r"L'_{\text{cm}}");
+    assert_eq!(unbold(r"\dot{\mathbf{x}}_P"), r"\dot{x}_P");
+    assert_eq!(unbold(r"\mathbf{\tau}_{\mathbf{x}}"), r"\tau_{x}");
+    assert_eq!(unbold(r"I_{\text{cm}}"), r"I_{\text{cm}}");
+    // Unbalanced braces are read to the end, not a panic.
+    assert_eq!(unbold(r"\mathbf{v"), "v");
+    assert_eq!(unbold("}}"), "}}");
+}
+
+#[test]
+fn indistinguishable_lists_no_symbol_beside_its_own_bold_form() {
+    // Sec. 2 prints v_cm plain (its square is the speed squared) and the appendix bold: one
+    // quantity under two keys, which (2) must not list as a pair it cannot tell apart.
+    let table = symbol_table();
+    let keys: Vec<&str> = table
+        .iter()
+        .filter(|t| t.quantity == "velocity:cm" && !t.milne)
+        .map(|t| t.key.as_str())
+        .collect();
+    assert!(
+        keys.contains(&r"v_{\text{cm}}") && keys.contains(&r"\mathbf{v}_{\text{cm}}"),
+        "the case this test is about: {keys:?}"
+    );
+    let twins = indistinguishable(&equation(2));
+    assert!(
+        twins.iter().all(|t| unbold(&t.printed) != unbold(&t.other)),
+        "{twins:?}"
+    );
+    // Distinct symbols of equal value are still listed: (13)'s moments of inertia.
+    let of_13 = indistinguishable(&equation(13));
+    assert!(
+        of_13
+            .iter()
+            .any(|t| t.printed == "I_{A}" && t.other == "I_{C}"),
+        "{of_13:?}"
+    );
+}
