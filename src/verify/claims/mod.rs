@@ -19,6 +19,7 @@ use crate::vector::Vec3;
 use serde::Serialize;
 
 pub mod appendix;
+pub mod golfer;
 pub mod hu;
 pub mod rigid_e;
 pub mod rolling;

@@ -1,0 +1,59 @@
+//! The figures of docs/golfers-nemesis.md: the golf ball of sec. B.10 (Milne sec. 421), solid
+//! and hollow, held to its closed form at several tolerances (each run's deviation from the
+//! closed form, the estimate from the run at rtol/100, and the measured periods).
+//! `cargo run --release --example golfer_table`.
+
+use sliding_ladder::verify::claims::golfer::closed_form::ClosedForm;
+use sliding_ladder::verify::claims::golfer::compare::READINGS;
+use sliding_ladder::verify::claims::golfer::model::{Contact, Perturbation};
+use sliding_ladder::verify::claims::golfer::{hold, Ball, Setup, HOLLOW, PERIODS, SOLID};
+
+fn main() {
+    for (name, k) in [("solid", SOLID), ("hollow", HOLLOW)] {
+        let golf = Setup::golf();
+        let setup = Setup {
+            ball: Ball { k, ..golf.ball },
+            ..golf
+        };
+        let cf = ClosedForm::of(&setup, k);
+        println!(
+            "{name} ball: ω_z = {:.15} rad/s, 2π/ω_z = {:.15} s, lowest z = {:.9} m, ℓ = {:.6} m",
+            cf.omega_z,
+            cf.period(),
+            cf.lowest(),
+            setup.length()
+        );
+        for rtol in [1e-6, 1e-8, 1e-10, 1e-12] {
+            let j = hold(
+                &setup,
+                (Contact::Rolling, Perturbation::None),
+                k,
+                rtol,
+                PERIODS,
+            )
+            .expect("integrates");
+            println!(
+                "  rtol {rtol:.0e}: {} steps, agrees: {}",
+                j.steps,
+                j.agrees()
+            );
+            let allowed = j.allowed();
+            for (i, r) in READINGS.iter().enumerate() {
+                println!(
+                    "    {r:<38} deviation {:.2e}  estimate {:.2e}  ratio {:.3}  allowed {:.2e}",
+                    j.deviation[i],
+                    j.estimate[i],
+                    j.deviation[i] / j.estimate[i],
+                    allowed[i]
+                );
+            }
+            let p: Vec<String> = j
+                .readings
+                .periods
+                .iter()
+                .map(|p| format!("{p:.13}"))
+                .collect();
+            println!("    periods measured: {}", p.join(" "));
+        }
+    }
+}
