@@ -6,9 +6,71 @@
 use sliding_ladder::verify::claims::golfer::closed_form::ClosedForm;
 use sliding_ladder::verify::claims::golfer::compare::READINGS;
 use sliding_ladder::verify::claims::golfer::model::{Contact, Perturbation};
-use sliding_ladder::verify::claims::golfer::{hold, Ball, Setup, HOLLOW, PERIODS, SOLID};
+use sliding_ladder::verify::claims::golfer::{hold, Ball, Setup, HOLLOW, PERIODS, RTOL, SOLID};
 
 fn main() {
+    table();
+    wrong_versions();
+}
+
+/// Each wrong version of sec. 4 of the docs: its largest deviation over its allowance, and where.
+fn wrong_versions() {
+    let golf = Setup::golf();
+    let hollow = Setup {
+        ball: Ball {
+            k: HOLLOW,
+            ..golf.ball
+        },
+        ..golf
+    };
+    let off = Setup {
+        ball: Ball {
+            k: SOLID * 1.01,
+            ..golf.ball
+        },
+        ..golf
+    };
+    let rolling = (Contact::Rolling, Perturbation::None);
+    let cases = [
+        (
+            "frictionless wall",
+            golf,
+            (Contact::Frictionless, Perturbation::None),
+            SOLID,
+        ),
+        ("solid run, hollow ω_z", golf, rolling, HOLLOW),
+        ("hollow run, solid ω_z", hollow, rolling, SOLID),
+        (
+            "ω × (a n) dropped",
+            golf,
+            (Contact::Rolling, Perturbation::SpinTermDropped),
+            SOLID,
+        ),
+        (
+            "ṅ dropped",
+            golf,
+            (Contact::Rolling, Perturbation::NormalFrozen),
+            SOLID,
+        ),
+        ("k off by 1 %", off, rolling, SOLID),
+    ];
+    println!("wrong versions at rtol {RTOL:.0e} (deviation / allowance, per reading):");
+    for (name, setup, run, k) in cases {
+        let j = hold(&setup, run, k, RTOL, PERIODS).expect("integrates");
+        let allowed = j.allowed();
+        let ratios: Vec<String> = (0..READINGS.len())
+            .map(|i| format!("{:.1e}", j.deviation[i] / allowed[i]))
+            .collect();
+        println!(
+            "  {name:<24} agrees: {:<5} {}",
+            j.agrees(),
+            ratios.join(" ")
+        );
+    }
+}
+
+/// The golf ball, solid and hollow, at four tolerances.
+fn table() {
     for (name, k) in [("solid", SOLID), ("hollow", HOLLOW)] {
         let golf = Setup::golf();
         let setup = Setup {

@@ -107,11 +107,11 @@ fn lift<D: DualNum<Primitive = f64> + Copy>(re: V<D>, eps: V<D>) -> V<Dual<D>> {
 fn solve<D: DualNum<Primitive = f64> + Copy>(mut a: Vec<Vec<D>>, mut r: Vec<D>) -> Vec<D> {
     let n = r.len();
     for k in 0..n {
+        let pivot = a[k].clone();
         for i in k + 1..n {
-            let l = a[i][k] / a[k][k];
-            for j in k..n {
-                let akj = a[k][j];
-                a[i][j] -= l * akj;
+            let l = a[i][k] / pivot[k];
+            for (aij, akj) in a[i].iter_mut().zip(&pivot).skip(k) {
+                *aij -= l * *akj;
             }
             let rk = r[k];
             r[i] -= l * rk;
