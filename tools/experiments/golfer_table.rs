@@ -1,6 +1,7 @@
 //! The figures of docs/golfers-nemesis.md: the golf ball of sec. B.10 (Milne sec. 421), solid
 //! and hollow, held to its closed form at several tolerances (each run's deviation from the
-//! closed form, the estimate from the run at rtol/100, and the measured periods).
+//! closed form, the estimates d and d′ from the runs at rtol/100 and rtol/10⁴, the measured
+//! periods), and the wrong versions of the model refused.
 //! `cargo run --release --example golfer_table`.
 
 use sliding_ladder::verify::claims::golfer::closed_form::ClosedForm;
@@ -102,10 +103,12 @@ fn table() {
             let allowed = j.allowed();
             for (i, r) in READINGS.iter().enumerate() {
                 println!(
-                    "    {r:<38} deviation {:.2e}  estimate {:.2e}  ratio {:.3}  allowed {:.2e}",
+                    "    {r:<38} dev {:.2e}  d {:.2e}  dev/d {:.3}  d′ {:.2e}  d′/d {:.4}  allowed {:.2e}",
                     j.deviation[i],
                     j.estimate[i],
                     j.deviation[i] / j.estimate[i],
+                    j.next_estimate[i],
+                    j.next_estimate[i] / j.estimate[i],
                     allowed[i]
                 );
             }

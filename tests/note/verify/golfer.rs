@@ -152,3 +152,25 @@ fn the_contact_force_at_the_start_is_the_closed_forms() {
         }
     }
 }
+
+#[test]
+fn an_estimate_that_is_not_finite_allows_nothing() {
+    // Two runs that do not find the same lowest points estimate no error: an infinite estimate
+    // allows nothing.
+    let golf = Setup::golf();
+    let mut j = judged(&golf, ROLLING, SOLID);
+    assert!(j.agrees());
+    j.estimate[3] = f64::INFINITY;
+    assert!(!j.agrees());
+}
+
+#[test]
+fn an_estimate_that_does_not_shrink_with_the_tolerance_allows_nothing() {
+    // A reading whose difference between tolerances falls only by half per factor 100 (as a
+    // lowest point located only to within a step would) is no error estimate.
+    let golf = Setup::golf();
+    let mut j = judged(&golf, ROLLING, SOLID);
+    assert!((0..READINGS.len()).all(|i| j.converges(i)));
+    j.next_estimate[3] = j.estimate[3] / 2.0;
+    assert!(!j.converges(3) && !j.agrees());
+}

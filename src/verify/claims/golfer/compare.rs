@@ -2,18 +2,24 @@
 //! is read off a run, how far that is from the closed form, and how far the integrator's error
 //! lets it be.
 //!
-//! The error model is a Richardson-style comparison of two tolerances. The run at rtol is
-//! repeated at rtol/100; their difference d = e − e′ estimates the first run's error e. Each
-//! reading's largest deviation from the closed form, |e|, must be at most 2 |d| (largest over
-//! the run) plus the rounding floor of the steps taken (8 ε per step times the reading's scale):
-//! |e| ≤ |d| + |e′| ≤ 2 |d| whenever the tighter run is at least twice as accurate, that is when
-//! the error falls at least as fast as rtol^0.15 (DOP853's falls as rtol^1.1 here,
-//! docs/golfers-nemesis.md).
+//! The error model is a Richardson-style comparison of tolerances. The run at rtol is repeated
+//! at rtol/100 and rtol/10⁴; with r₀, r₁, r₂ their readings and R the closed form's, the errors
+//! eᵢ = rᵢ − R satisfy e₀ = d + e₁ and e₁ = d′ + e₂, d = r₀ − r₁ and d′ = r₁ − r₂ being measured.
+//! DOP853 aims at tolerance proportionality (error ∝ rtol; here it falls as rtol^1.1, a factor
+//! 150-180 per factor 100, docs/golfers-nemesis.md). Each reading must therefore
+//!
+//! 1. converge: |d′| ≤ q |d| with q = 1/10 (an error falling at least as rtol^0.5, half the
+//!    proportionality aimed at), else its difference is no error estimate (a lowest point
+//!    located only to within a step, say, falls as the step, rtol^(1/8));
+//! 2. deviate from the closed form by at most |d| + |d′|/(1 − q): from |e₀| ≤ |d| + |e₁| and,
+//!    if the contraction shown in 1 holds one level further (|e₂| ≤ q |e₁|), |e₁| ≤ |d′|/(1 − q).
+//!
+//! Both up to a rounding floor of 8 ε per step (of the three runs) times the reading's scale.
 //!
 //! The simpler a-priori bound, (accepted steps) × √N rtol × scale, was tried first and is
 //! exceeded 1.2-23 times (larger at looser tolerances): an early error in the orbit rate
 //! changes ω_z and so turns into a phase error of the height that grows with time, which a sum
-//! of local errors does not see. The comparison of two tolerances measures that growth.
+//! of local errors does not see. The comparison of tolerances measures that growth.
 
 use super::closed_form::ClosedForm;
 use super::model::{parts, Contact, Perturbation};
@@ -138,14 +144,20 @@ pub fn rounding_floor(setup: &Setup, steps: u64, run_time: f64) -> [f64; 8] {
     [l, l, l * o, run_time, l, o, l * o, l].map(|s| per * s)
 }
 
-/// A run's judgement: for each reading its deviation from the closed form, the error estimate
-/// (its difference from the tighter run) and the rounding floor.
+/// The contraction q each reading's error estimate must show per factor 100 of tolerance.
+pub const CONTRACTION: f64 = 0.1;
+
+/// A run's judgement: for each reading its deviation from the closed form, the error estimates
+/// (its difference from the run at rtol/100, and that run's from the run at rtol/10⁴) and the
+/// rounding floor.
 #[derive(Clone, Debug)]
 pub struct Judgement {
-    /// Largest |run − closed form|, per reading.
+    /// Largest |r₀ − R|, per reading.
     pub deviation: [f64; 8],
-    /// Largest |run − run at rtol/100|, per reading.
+    /// Largest |r₀ − r₁|, per reading.
     pub estimate: [f64; 8],
+    /// Largest |r₁ − r₂|, per reading.
+    pub next_estimate: [f64; 8],
     /// The rounding floor, per reading.
     pub floor: [f64; 8],
     /// The readings of the run.
@@ -155,15 +167,23 @@ pub struct Judgement {
 }
 
 impl Judgement {
-    /// The allowance of each reading: 2 × estimate + floor (see the module docs).
+    /// The allowance of each reading: |d| + |d′|/(1 − q) + floor (see the module docs).
     pub fn allowed(&self) -> [f64; 8] {
-        std::array::from_fn(|i| 2.0 * self.estimate[i] + self.floor[i])
+        std::array::from_fn(|i| {
+            self.estimate[i] + self.next_estimate[i] / (1.0 - CONTRACTION) + self.floor[i]
+        })
     }
 
-    /// Whether every reading is within its allowance, the estimate finite (two runs that do
-    /// not even find the same number of lowest points estimate nothing).
+    /// Whether reading `i`'s estimate converges: |d′| ≤ q |d| + floor, both finite (two runs
+    /// that do not find the same number of lowest points estimate nothing).
+    pub fn converges(&self, i: usize) -> bool {
+        self.estimate[i].is_finite()
+            && self.next_estimate[i] <= CONTRACTION * self.estimate[i] + self.floor[i]
+    }
+
+    /// Whether every reading converges and is within its allowance.
     pub fn agrees(&self) -> bool {
         let allowed = self.allowed();
-        (0..8).all(|i| self.estimate[i].is_finite() && self.deviation[i] <= allowed[i])
+        (0..8).all(|i| self.converges(i) && self.deviation[i] <= allowed[i])
     }
 }
