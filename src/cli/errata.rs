@@ -50,7 +50,7 @@ pub fn errata_command(json_out: bool, cfg: &Config, columns: usize) -> ExitCode 
         );
     } else {
         print!("{}", fill(&misprint_text(&list), columns));
-        say!("\nclaims made in the prose, checked exactly (at three random states, on general systems or rolling bodies; sec. B.10 by an integrated 3-D model held to its closed form):");
+        say!("\nclaims made in the prose, checked (exactly at three random states, on general systems or rolling bodies; sec. B.10 by an integrated 3-D model held to its closed form):");
         for c in &prose {
             let verdict = c.verdict();
             say!("  {:<16} {}: {verdict}", c.location, c.claim);
