@@ -48,7 +48,7 @@ pub fn errata_command(json_out: bool, cfg: &Config, columns: usize) -> ExitCode 
         print!("{}", fill(&misprint_text(&list), columns));
         say(
             columns,
-            "\nclaims made in the prose, checked exactly at three random states:",
+            "\nclaims made in the prose, checked (exactly at three random states, on general systems or rolling bodies; sec. B.10 by an integrated 3-D model held to its closed form):",
         );
         for c in &prose {
             print_claim(c, columns);

@@ -1,9 +1,13 @@
-//! The note's quantitative claims made in prose (not in numbered displays), checked exactly.
+//! The note's quantitative claims made in prose (not in numbered displays), checked exactly but
+//! for the last.
 //!
 //! Each claim is evaluated in exact rational arithmetic at three random ladder states (and, for
-//! the claims about a root, as an identity in cos θ). A claim that the note states correctly must
-//! hold at every point; a prose erratum is recorded with the note's wording and ours, and the
-//! check shows the printed version failing and the corrected one holding.
+//! the claims about a root, as an identity in cos θ), on general particle systems or on rolling
+//! bodies; the last, sec. B.10's ball rolling in a cylinder ([`golfer`]), is a motion, integrated
+//! in f64 and held to its closed form within the integrator's estimated error. A claim that the
+//! note states correctly must hold at every point; a prose erratum is recorded with the note's
+//! wording and ours, and the check shows the printed version failing and the corrected one
+//! holding.
 
 use crate::ladder::analysis::{angular_momentum_about, AngularMomentum, Reference, ReferencePoint};
 use crate::ladder::forces::wall_force;
@@ -19,6 +23,7 @@ use crate::vector::Vec3;
 use serde::Serialize;
 
 pub mod appendix;
+pub mod golfer;
 pub mod hu;
 pub mod rigid_e;
 pub mod rolling;
@@ -194,7 +199,8 @@ pub fn contact_torques_vanish_about(k: Corner) -> bool {
 
 /// Every prose claim, checked: the fall and rigid rotation of secs. 2.1-2.2, then the contact
 /// points and errata of secs. 2.5-A.5 (the fourteen checked before issue 37), then the rest by
-/// section ([`sec2`], [`rigid_e`], [`appendix`], [`hu`] on [`rolling`]).
+/// section ([`sec2`], [`rigid_e`], [`appendix`], [`hu`] on [`rolling`]), and last sec. B.10's
+/// golfer's nemesis ([`golfer`]: a 3-D rolling ball integrated and held to its closed form).
 pub fn claims() -> Vec<Claim> {
     [
         fall_and_rigid_rotation_claims(),
@@ -206,6 +212,7 @@ pub fn claims() -> Vec<Claim> {
     .flatten()
     .chain(appendix::claims())
     .chain(hu::claims())
+    .chain(golfer::claims())
     .collect()
 }
 

@@ -4,5 +4,6 @@ mod claims;
 mod errata_difference;
 mod errata_point;
 mod errata_reading;
+mod golfer;
 mod rolling;
 mod table;
