@@ -61,3 +61,21 @@ fn displays_split_into_statements() {
     assert!(d.statements[0].implies.is_some());
     assert!(parse_display(r"a = (b").is_err());
 }
+
+#[test]
+fn a_braced_power_parses_as_the_bare_one() {
+    // The note prints l^2; a user's markdown may print l^{2} (ERRATA.md does): the same power.
+    assert_eq!(parse_expr(r"l^{2}").unwrap(), Expr::Pow(sym("l"), 2));
+    assert_eq!(
+        parse_expr(r"m l^{2} \dot{\theta}").unwrap(),
+        parse_expr(r"m l^2 \dot{\theta}").unwrap()
+    );
+    assert_ne!(
+        parse_expr(r"l^{3}").unwrap(),
+        parse_expr(r"l^2").unwrap(),
+        "the power read inside the braces"
+    );
+    // Only an integer power: a symbol in the braces is refused, not read as something else.
+    let err = parse_expr(r"l^{n}").unwrap_err();
+    assert!(err.contains("integer power"), "{err}");
+}
