@@ -74,7 +74,7 @@ pub(crate) fn exact_ladder_draw(rng: &mut impl Rng) -> [Rational; LADDER_DRAWS] 
 
 /// The integers of an exact particle point: the number of particles (1..=8) and the values
 /// (masses positive).
-pub(crate) fn exact_particle_ints(rng: &mut impl Rng) -> (usize, Vec<i64>) {
+pub fn exact_particle_ints(rng: &mut impl Rng) -> (usize, Vec<i64>) {
     let n = rng.gen_range(1..=8);
     let values = (0..n * PER_PARTICLE + EXTRA)
         .map(|i| {

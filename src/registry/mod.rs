@@ -10,7 +10,7 @@
 //! checks; [`sample`] draws the states.
 
 pub mod check;
-mod exact_point;
+pub mod exact_point;
 mod floor_eqs;
 pub mod fns;
 mod general_eqs;

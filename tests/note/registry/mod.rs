@@ -1,6 +1,7 @@
 //! `sliding_ladder::registry`: every display's checks at random states, exact points, proofs and units.
 
 mod complete;
+mod exact_point;
 mod fns;
 mod identities;
 mod law;
