@@ -10,6 +10,7 @@ mod milne;
 mod modular;
 mod perturbation;
 mod prove;
+mod sample;
 mod source;
 mod source_fuzz;
 mod twins;

@@ -1,0 +1,78 @@
+//! `registry::sample`: the states the checks draw.
+
+use num_dual::{Dual3, DualNum};
+use sliding_ladder::registry::sample::{particle_system, ParticleSample, EXTRA, PER_PARTICLE};
+
+type D = Dual3<f64>;
+
+/// A particle's position at time t of the rigid motion the `PlanarRigid` sample claims: the
+/// centre on its cubic c + v t + a t²/2 + j t³/6, the body turned by φ(t) = ω t + ω̇ t²/2 (ω̈ = 0)
+/// about it. Written as a motion and differentiated by dual numbers, not from the sample's
+/// formulas.
+fn rigid_position(t: D, centre: [[f64; 2]; 4], r: [f64; 2], omega: f64, omega_dot: f64) -> [D; 2] {
+    let c = |k: usize| {
+        let [x, v, a, j] = centre.map(|p| D::from_re(p[k]));
+        x + t * v + t * t * a * 0.5 + t * t * t * j * (1.0 / 6.0)
+    };
+    let phi = t * omega + t * t * omega_dot * 0.5;
+    let (s, co) = (phi.sin(), phi.cos());
+    [c(0) + co * r[0] - s * r[1], c(1) + s * r[0] + co * r[1]]
+}
+
+#[test]
+fn particle_system_planar_rigid_moves_every_particle_with_one_rigid_turn() {
+    let n = 4;
+    // Fixed values of both signs, masses positive (the draw's layout: PER_PARTICLE a particle).
+    let values: Vec<f64> = (0..n * PER_PARTICLE + EXTRA)
+        .map(|i| {
+            let v = ((i * 37 % 19) as f64 - 9.0) / 7.0;
+            if i < n * PER_PARTICLE && i % PER_PARTICLE == 0 {
+                v.abs() + 0.5
+            } else {
+                v
+            }
+        })
+        .collect();
+    let (sys, _) = particle_system(ParticleSample::PlanarRigid, n, &values);
+    let spin = sys.spin.clone().expect("a rigid body spins");
+    let (omega, omega_dot) = (spin.omega, spin.omega_dot);
+    assert!(
+        omega.abs() > 0.1 && omega_dot.abs() > 0.1,
+        "{omega} {omega_dot}"
+    );
+    let mass: f64 = sys.particles.iter().map(|q| q.m).sum();
+    let mean = |f: &dyn Fn(&sliding_ladder::system::Particle<f64>) -> [f64; 2]| -> [f64; 2] {
+        let s = sys.particles.iter().fold([0.0, 0.0], |acc, q| {
+            let v = f(q);
+            [acc[0] + q.m * v[0], acc[1] + q.m * v[1]]
+        });
+        [s[0] / mass, s[1] / mass]
+    };
+    // The centre's motion, as the mass-weighted mean of the particles' (the turn adds nothing).
+    let centre = [
+        mean(&|q| [q.x.x, q.x.y]),
+        mean(&|q| [q.v.x, q.v.y]),
+        mean(&|q| [q.a.x, q.a.y]),
+        mean(&|q| [q.j.x, q.j.y]),
+    ];
+    for (i, q) in sys.particles.iter().enumerate() {
+        let r = [q.x.x - centre[0][0], q.x.y - centre[0][1]];
+        let at = rigid_position(D::new(0.0, 1.0, 0.0, 0.0), centre, r, omega, omega_dot);
+        // The terms of a derivative are at most the centre's and |r| (1 + |ω| + |ω̇|)³; their
+        // rounding is a few ulps of that.
+        let size = centre.iter().flatten().map(|x| x.abs()).sum::<f64>()
+            + r[0].hypot(r[1]) * (1.0 + omega.abs() + omega_dot.abs()).powi(3);
+        let tol = 64.0 * f64::EPSILON * size;
+        for (k, d) in at.iter().enumerate() {
+            let sample = [[q.v.x, q.v.y][k], [q.a.x, q.a.y][k], [q.j.x, q.j.y][k]];
+            let motion = [d.v1, d.v2, d.v3];
+            for (order, (s, m)) in sample.iter().zip(motion).enumerate() {
+                assert!(
+                    (s - m).abs() <= tol,
+                    "particle {i}, component {k}, derivative {}: sample {s}, motion {m}, tol {tol}",
+                    order + 1
+                );
+            }
+        }
+    }
+}
