@@ -35,13 +35,18 @@ pub fn fn_lengths(text: &str) -> Vec<(String, usize, usize)> {
 }
 
 /// The indentation and name of a line that opens a function (`fn`, after `pub`, `pub(crate)`,
-/// `const`, `async` or `unsafe`).
+/// `pub(in path)`, `const`, `async` or `unsafe`).
 fn fn_start(line: &str) -> Option<(String, String)> {
     let body = line.trim_start();
     let indent = line[..line.len() - body.len()].to_string();
+    // A restricted visibility may hold a space (`pub(in crate::sim)`): drop it whole.
+    let body = match body.strip_prefix("pub(") {
+        Some(rest) => rest.split_once(')').map_or(body, |(_, after)| after),
+        None => body,
+    };
     let mut words = body.split_whitespace().peekable();
     while let Some(w) = words.peek() {
-        if *w == "pub" || w.starts_with("pub(") || ["const", "async", "unsafe"].contains(w) {
+        if *w == "pub" || ["const", "async", "unsafe"].contains(w) {
             words.next();
         } else {
             break;
@@ -81,7 +86,7 @@ fn no_function_in_the_library_is_over_80_lines() {
 fn fn_lengths_counts_a_planted_long_function_and_skips_comments_and_strings() {
     let body = "    let x = 1;\n".repeat(79);
     let text = format!(
-        "/// fn in_a_doc() {{\npub(crate) fn long() {{\n{body}}}\nconst S: &str = \"fn in_a_string() {{\";\nimpl T {{\n    pub fn short(&self) -> u8 {{ 1 }}\n    async fn two() {{\n    }}\n}}\n"
+        "/// fn in_a_doc() {{\npub(crate) fn long() {{\n{body}}}\nconst S: &str = \"fn in_a_string() {{\";\nimpl T {{\n    pub fn short(&self) -> u8 {{ 1 }}\n    async fn two() {{\n    }}\n    pub(in crate::sim) fn three(\n        x: u8,\n    ) {{\n    }}\n}}\n"
     );
     let found = fn_lengths(&text);
     assert_eq!(
@@ -90,6 +95,7 @@ fn fn_lengths_counts_a_planted_long_function_and_skips_comments_and_strings() {
             ("long".to_string(), 2, 81),
             ("short".to_string(), 85, 1),
             ("two".to_string(), 86, 2),
+            ("three".to_string(), 88, 4),
         ]
     );
     assert!(
