@@ -7,7 +7,7 @@ use crate::ladder::analysis::Reference;
 use crate::ladder::geometry::Corner;
 use crate::report::diagram::diagram;
 use crate::report::diagram::svg::draw_svg;
-use crate::scalar::Rational;
+use crate::scalar::{rational_from_float, Rational};
 use clap::Args;
 use num_traits::{One, ToPrimitive, Zero};
 use std::process::ExitCode;
@@ -36,7 +36,7 @@ fn rational(text: &str) -> Option<Rational> {
         return (q != 0).then(|| Rational::new(p.into(), q.into()));
     }
     let x: f64 = t.parse().ok()?;
-    x.is_finite().then(|| Rational::from_float(x)).flatten()
+    x.is_finite().then(|| rational_from_float(x)).flatten()
 }
 
 /// Numerators over a common denominator, all in i64.

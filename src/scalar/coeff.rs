@@ -18,7 +18,8 @@
 //! (`Ratio<i64>` overflows, `BigRational` always allocates), and the crates whose rationals do
 //! have one (malachite-q) would replace num-bigint throughout the crate for one hot loop.
 
-use super::Rational;
+use super::gcd::gcd_words;
+use super::{Int, Rational};
 use num_bigint::BigInt;
 use num_traits::{One, ToPrimitive, Zero};
 use std::cmp::Ordering;
@@ -34,38 +35,6 @@ pub enum Coeff {
     Small(i64, i64),
     /// A value that does not fit `Small`.
     Big(Rational),
-}
-
-/// Stein's binary gcd of two nonzero integers of one width: no division, which u128 lacks in
-/// hardware. One body for both widths: the u64 loop, the common case, runs on cheaper words.
-macro_rules! binary_gcd {
-    ($a:expr, $b:expr) => {{
-        let (mut a, mut b) = ($a, $b);
-        let shift = (a | b).trailing_zeros();
-        a >>= a.trailing_zeros();
-        loop {
-            b >>= b.trailing_zeros();
-            if a > b {
-                std::mem::swap(&mut a, &mut b);
-            }
-            b -= a;
-            if b == 0 {
-                break a << shift;
-            }
-        }
-    }};
-}
-
-/// The gcd of two unsigned integers (0 when both are 0), by Stein's binary algorithm in u64 when
-/// both fit.
-pub fn gcd(a: u128, b: u128) -> u128 {
-    if a == 0 || b == 0 {
-        return a | b;
-    }
-    if a <= u64::MAX as u128 && b <= u64::MAX as u128 {
-        return u128::from(binary_gcd!(a as u64, b as u64));
-    }
-    binary_gcd!(a, b)
 }
 
 impl Coeff {
@@ -86,7 +55,7 @@ impl Coeff {
         let negative = (n < 0) != (d < 0);
         let (mut un, mut ud) = (n.unsigned_abs(), d.unsigned_abs());
         if ud != 1 {
-            let g = gcd(un, ud);
+            let g = gcd_words(un, ud);
             un /= g;
             ud /= g;
         }
@@ -100,8 +69,8 @@ impl Coeff {
             num_bigint::Sign::Plus
         };
         Coeff::Big(Rational::new_raw(
-            BigInt::from_biguint(sign, un.into()),
-            BigInt::from(ud),
+            BigInt::from_biguint(sign, un.into()).into(),
+            Int::from(ud),
         ))
     }
     /// A `BigRational` (in lowest terms, as num-rational keeps them) in canonical form.
@@ -114,7 +83,7 @@ impl Coeff {
     /// The value as a `BigRational`.
     pub fn to_big(&self) -> Rational {
         match self {
-            Coeff::Small(n, d) => Rational::new_raw(BigInt::from(*n), BigInt::from(*d)),
+            Coeff::Small(n, d) => Rational::new_raw(Int::from(*n), Int::from(*d)),
             Coeff::Big(q) => q.clone(),
         }
     }
@@ -122,14 +91,14 @@ impl Coeff {
     pub fn numer(&self) -> BigInt {
         match self {
             Coeff::Small(n, _) => BigInt::from(*n),
-            Coeff::Big(q) => q.numer().clone(),
+            Coeff::Big(q) => q.numer().0.clone(),
         }
     }
     /// The denominator (lowest terms, positive).
     pub fn denom(&self) -> BigInt {
         match self {
             Coeff::Small(_, d) => BigInt::from(*d),
-            Coeff::Big(q) => q.denom().clone(),
+            Coeff::Big(q) => q.denom().0.clone(),
         }
     }
     /// True for an integer.
@@ -143,7 +112,7 @@ impl Coeff {
     pub fn is_negative(&self) -> bool {
         match self {
             Coeff::Small(n, _) => *n < 0,
-            Coeff::Big(q) => q.numer() < &BigInt::zero(),
+            Coeff::Big(q) => q.numer().sign() == num_bigint::Sign::Minus,
         }
     }
     /// |self|.

@@ -26,6 +26,8 @@ pub mod bound;
 pub mod coeff;
 pub mod degree;
 pub mod dimension;
+pub mod gcd;
+pub mod int;
 pub mod jet;
 pub mod modp;
 pub mod poly;
@@ -39,6 +41,7 @@ pub use bound::{Bound, UNIT_ROUNDOFF};
 pub use coeff::Coeff;
 pub use degree::Degree;
 pub use dimension::{Clash, Dim, Dimension, Exponent, Inconsistency};
+pub use int::{rational_from_float, Int};
 pub use jet::Jet;
 pub use modp::{Modp, MODULUS};
 pub use sym_factor::{factored_latex, factored_text, Factored};
@@ -46,14 +49,13 @@ pub use sym_print::{latex, text};
 pub use sym_reading::{reading, Reading};
 pub use symbolic::{Den, Sym};
 
-use num_bigint::BigInt;
 use num_dual::{Dual, DualNum};
-use num_rational::BigRational;
+use num_rational::Ratio;
 use std::fmt::Debug;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-/// Exact rational numbers (arbitrary precision).
-pub type Rational = BigRational;
+/// Exact rational numbers (arbitrary precision; [`Int`] parts, for their faster gcd).
+pub type Rational = Ratio<Int>;
 
 /// A field-like number type that the note's equations can be evaluated in.
 ///
@@ -135,10 +137,10 @@ where
 impl Scalar for Rational {
     type Dual = Jet<Rational>;
     fn int(n: i64) -> Self {
-        Rational::from_integer(BigInt::from(n))
+        Rational::from_integer(Int::from(n))
     }
     fn ratio(n: i64, d: i64) -> Self {
-        Rational::new(BigInt::from(n), BigInt::from(d))
+        Rational::new(Int::from(n), Int::from(d))
     }
     fn lift(re: Self, eps: Self) -> Jet<Rational> {
         Jet::new(re, eps)

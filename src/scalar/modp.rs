@@ -1,9 +1,10 @@
 //! `Modp`: exact arithmetic modulo the Mersenne prime p = 2⁶¹ − 1, the fast path of the exact
 //! checks.
 //!
-//! Why: an exact check at a rational point spends about 80% of its time in num-bigint's binary gcd
-//! (every `BigRational` operation reduces its fraction, and the numbers reach thousands of bits).
-//! Evaluating the same generic code modulo p costs a few machine multiplications per operation.
+//! Why: every operation on an exact [`super::Rational`] reduces its fraction by a gcd of numbers
+//! that reach a thousand bits (most of an exact check's time, even with the Lehmer gcd of
+//! [`super::gcd`]). Evaluating the same generic code modulo p costs a few machine multiplications
+//! per operation.
 //!
 //! What a modular point proves. Evaluating at integers x and reducing modulo p is a ring
 //! homomorphism from the rationals whose denominators p does not divide, so a residual that is

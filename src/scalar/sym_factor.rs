@@ -155,7 +155,7 @@ fn content(p: &Poly) -> (Rational, Poly) {
     if g.is_zero() {
         return (Rational::one(), p.clone());
     }
-    let mut c = Rational::new(g, l);
+    let mut c = Rational::new(g.into(), l.into());
     if factor_ordered(p).first().is_some_and(|t| t.1.is_negative()) {
         c = -c;
     }

@@ -238,9 +238,9 @@ fn decimal(s: &str) -> Result<Rational, String> {
     let scale = exp - frac.len() as i32;
     let ten = BigInt::from(10);
     let q = if scale >= 0 {
-        Rational::from_integer(n * num_traits::pow(ten, scale as usize))
+        Rational::from_integer((n * num_traits::pow(ten, scale as usize)).into())
     } else {
-        Rational::new(n, num_traits::pow(ten, (-scale) as usize))
+        Rational::new(n.into(), num_traits::pow(ten, (-scale) as usize).into())
     };
     Ok(if neg { -q } else { q })
 }
@@ -317,7 +317,7 @@ pub fn rational_sqrt(q: &Rational) -> Option<Rational> {
     }
     let (n, d) = (q.numer(), q.denom());
     let (rn, rd) = (n.sqrt(), d.sqrt());
-    (&rn * &rn == *n && &rd * &rd == *d).then(|| Rational::new(rn, rd))
+    (&rn * &rn == n.0 && &rd * &rd == d.0).then(|| Rational::new(rn.into(), rd.into()))
 }
 
 /// The nearest f64 (inputs are checked to be in range).

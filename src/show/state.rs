@@ -10,7 +10,7 @@
 use super::at::{rational_sqrt, to_f64, Angle, At};
 use crate::ladder::energy::angular_acceleration;
 use crate::ladder::{Ladder, State};
-use crate::scalar::{Bound, Rational, Scalar, UNIT_ROUNDOFF};
+use crate::scalar::{rational_from_float, Bound, Rational, Scalar, UNIT_ROUNDOFF};
 use num_traits::One;
 use serde::Serialize;
 
@@ -64,7 +64,7 @@ pub struct Summary {
 /// θ = 30°, released at rest upright.
 pub fn default_at() -> At {
     let (m, l, g, deg) = crate::docs::worked::EXAMPLE;
-    let q = |x: f64| Rational::from_float(x).unwrap_or_else(Rational::one);
+    let q = |x: f64| rational_from_float(x).unwrap_or_else(Rational::one);
     At {
         m: Some(q(m)),
         l: Some(q(l)),
@@ -182,7 +182,7 @@ fn bound_ladder(q: &Ladder<Rational>) -> Ladder<Bound> {
 /// A rational input as a `Bound`: a rational that is not a double is rounded once.
 fn bound_of(q: &Rational) -> Bound {
     let x = to_f64(q);
-    let units = if Rational::from_float(x).as_ref() == Some(q) {
+    let units = if rational_from_float(x).as_ref() == Some(q) {
         0.0
     } else {
         1.0

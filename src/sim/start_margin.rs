@@ -20,7 +20,7 @@
 //! twenty lines of series. It costs tens of microseconds, paid only near the release push.
 
 use crate::ladder::Ladder;
-use crate::scalar::Rational;
+use crate::scalar::{rational_from_float, Rational};
 use num_bigint::BigInt;
 use num_traits::{One, ToPrimitive, Zero};
 
@@ -64,7 +64,7 @@ impl Lean {
 
 /// x as an exact rational (x finite).
 fn exact(x: f64) -> Rational {
-    Rational::from_float(x).unwrap_or_else(Rational::zero)
+    rational_from_float(x).unwrap_or_else(Rational::zero)
 }
 
 /// Σ_k (−1)^k x^{2k} / (2k + o)! · o! for o = 0 (cos x) or o = 1 (sin x / x), |x| ≤ 2, in fixed
@@ -73,8 +73,8 @@ pub fn fixed_series(x: f64, o: u64) -> Rational {
     let one = BigInt::one() << BITS as usize;
     // x² in fixed point (x = m 2^e exactly, so x² 2^BITS = m² 2^(2e + BITS), truncated).
     let x2 = {
-        let r = exact(x) * exact(x) * Rational::from_integer(one.clone());
-        r.to_integer()
+        let r = exact(x) * exact(x) * Rational::from_integer(one.clone().into());
+        r.to_integer().0
     };
     let (mut term, mut sum) = (one.clone(), one.clone());
     let mut k = 1u64;
@@ -83,7 +83,7 @@ pub fn fixed_series(x: f64, o: u64) -> Rational {
         sum += &term;
         k += 1;
     }
-    Rational::new(sum, one)
+    Rational::new(sum.into(), one.into())
 }
 
 /// D0 = Ω² cos θ0 − θ̇0² of `ladder` (in its own units, s⁻²) for the start `lean`, `rate0`:

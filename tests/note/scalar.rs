@@ -4,6 +4,8 @@ mod bound;
 mod coeff;
 mod degree;
 mod dimension;
+mod gcd;
+mod int;
 mod jet;
 mod modp;
 mod poly;

@@ -37,7 +37,7 @@ impl Root for Q {
             return None;
         }
         let (n, d) = (self.numer().sqrt(), self.denom().sqrt());
-        (&n * &n == *self.numer() && &d * &d == *self.denom()).then(|| Q::new(n, d))
+        (&n * &n == self.numer().0 && &d * &d == self.denom().0).then(|| Q::new(n.into(), d.into()))
     }
 }
 

@@ -5,14 +5,15 @@ use num_bigint::BigInt;
 use num_traits::{ToPrimitive, Zero};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use sliding_ladder::scalar::coeff::{gcd, Coeff};
-use sliding_ladder::scalar::Rational;
+use sliding_ladder::scalar::coeff::Coeff;
+use sliding_ladder::scalar::gcd::gcd_words;
+use sliding_ladder::scalar::{Int, Rational};
 
 /// The canonical form: `Small` exactly when numerator and denominator fit below 2⁶³.
 fn canonical(c: &Coeff) -> bool {
     match c {
         Coeff::Small(n, d) => {
-            *d > 0 && *n != i64::MIN && gcd(n.unsigned_abs().into(), (*d as u64).into()) == 1
+            *d > 0 && *n != i64::MIN && gcd_words(n.unsigned_abs().into(), (*d as u64).into()) == 1
         }
         Coeff::Big(q) => !matches!(
             (q.numer().to_i64(), q.denom().to_i64()),
@@ -24,7 +25,7 @@ fn canonical(c: &Coeff) -> bool {
 /// Values near every boundary: 0, ±1, small fractions, ±(2⁶³ − 1), 2⁶³ and beyond, and big
 /// rationals whose reduced form is small.
 fn edges() -> Vec<Rational> {
-    let r = |n: i128, d: i128| Rational::new(BigInt::from(n), BigInt::from(d));
+    let r = |n: i128, d: i128| Rational::new(BigInt::from(n).into(), BigInt::from(d).into());
     let max = i128::from(i64::MAX);
     let mut v = vec![
         r(0, 1),
@@ -46,8 +47,8 @@ fn edges() -> Vec<Rational> {
         r(i128::MAX, 7),
     ];
     v.push(Rational::new(
-        BigInt::from(1) << 200,
-        (BigInt::from(1) << 199) * 3,
+        Int(BigInt::from(1) << 200),
+        Int((BigInt::from(1) << 199) * 3),
     ));
     v
 }
@@ -62,7 +63,7 @@ fn random(rng: &mut ChaCha8Rng) -> Rational {
         }
     };
     let n = part(false);
-    Rational::new(n, part(true))
+    Rational::new(n.into(), part(true).into())
 }
 
 fn check_pair(a: &Rational, b: &Rational) {
@@ -93,7 +94,7 @@ fn check_pair(a: &Rational, b: &Rational) {
     assert_eq!(ca.is_integer(), a.is_integer());
     assert_eq!(
         (ca.numer(), ca.denom()),
-        (a.numer().clone(), a.denom().clone())
+        (a.numer().0.clone(), a.denom().0.clone())
     );
 }
 
@@ -121,7 +122,10 @@ fn overflow_leaves_the_machine_word_and_comes_back() {
     let max = Coeff::int(i64::MAX);
     let over = &max + &Coeff::int(1);
     assert!(matches!(over, Coeff::Big(_)), "{over:?}");
-    assert_eq!(over.to_big(), Rational::from_integer(BigInt::from(1) << 63));
+    assert_eq!(
+        over.to_big(),
+        Rational::from_integer(Int::from(BigInt::from(1) << 63))
+    );
     let back = &over - &Coeff::int(1);
     assert_eq!(back, max);
     assert!(matches!(back, Coeff::Small(..)));
@@ -147,6 +151,6 @@ fn a_wrong_fast_result_would_be_caught() {
     assert_ne!(a.to_big(), b.to_big());
     assert!(!canonical(&Coeff::Small(2, 4)));
     assert!(!canonical(&Coeff::Big(Rational::from_integer(
-        BigInt::from(5)
+        BigInt::from(5).into()
     ))));
 }

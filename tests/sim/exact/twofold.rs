@@ -1,11 +1,11 @@
 //! Tests of `sliding_ladder::sim::exact::twofold` (src/sim/exact/twofold.rs).
 
 use num_traits::Signed;
-use sliding_ladder::scalar::Rational;
+use sliding_ladder::scalar::{rational_from_float, Rational};
 use sliding_ladder::sim::exact::twofold::{cos_minus_ratio, two_prod, two_sum};
 
 fn exact(x: f64) -> Rational {
-    Rational::from_float(x).expect("finite")
+    rational_from_float(x).expect("finite")
 }
 
 /// Both transformations are exact: hi + lo equals a + b (a·b) in rational arithmetic, with

@@ -8,7 +8,7 @@
 //! f64 at the reference. Run with `-- --nocapture` to print the worst rows.
 use num_bigint::BigInt;
 use num_traits::{Signed, ToPrimitive};
-use sliding_ladder::scalar::Rational;
+use sliding_ladder::scalar::{rational_from_float, Rational};
 use sliding_ladder::sim::exact::PhaseOne;
 
 /// The decimal `s` (e.g. "8.41e-1") as an exact rational.
@@ -20,8 +20,8 @@ fn decimal(s: &str) -> Rational {
     let scale = exp - frac.len() as i32;
     let ten = BigInt::from(10);
     match scale >= 0 {
-        true => Rational::from_integer(digits * ten.pow(scale as u32)),
-        false => Rational::new(digits, ten.pow((-scale) as u32)),
+        true => Rational::from_integer((digits * ten.pow(scale as u32)).into()),
+        false => Rational::new(digits.into(), ten.pow((-scale) as u32).into()),
     }
 }
 
@@ -50,7 +50,7 @@ fn rows() -> Vec<[String; 5]> {
 fn ulps(got: f64, want: &Rational) -> f64 {
     let w = want.to_f64().unwrap().abs();
     let spacing = f64::from_bits(w.to_bits() + 1) - w;
-    let d = (Rational::from_float(got).unwrap() - want.clone()).abs();
+    let d = (rational_from_float(got).unwrap() - want.clone()).abs();
     d.to_f64().unwrap() / spacing
 }
 

@@ -1,6 +1,6 @@
 //! Tests of `sliding_ladder::sim::integrators::adaptive` (src/sim/integrators/adaptive.rs).
 
-use sliding_ladder::scalar::Rational;
+use sliding_ladder::scalar::{rational_from_float, Rational};
 use sliding_ladder::sim::integrators::adaptive::{advance_time, AdaptiveState, Controller};
 
 /// 10⁶ steps of h = 0.1 (not a binary fraction) from t = 3: the carried time is the exact
@@ -15,10 +15,10 @@ fn the_carried_time_is_the_sum_of_the_steps() {
         (t, lo) = advance_time(t, lo, h, false, f64::INFINITY);
         plain += h;
     }
-    let exact = Rational::from_float(3.0).unwrap()
-        + Rational::from_float(h).unwrap() * Rational::from_integer(n.into());
+    let exact = rational_from_float(3.0).unwrap()
+        + rational_from_float(h).unwrap() * Rational::from_integer(n.into());
     let err = |x: f64| {
-        let d = Rational::from_float(x).unwrap() - exact.clone();
+        let d = rational_from_float(x).unwrap() - exact.clone();
         num_traits::ToPrimitive::to_f64(&d).unwrap().abs()
     };
     let bound = 0.5 * f64::EPSILON * t + n as f64 * 0.5 * f64::EPSILON * h;
