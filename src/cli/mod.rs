@@ -22,18 +22,21 @@ use std::process::ExitCode;
     version,
     about = "The sliding ladder: the note's equations checked, the fall simulated"
 )]
-struct Cli {
+/// The command line: a global `--equations` folder and one subcommand.
+pub struct Cli {
     /// Read the displays from this folder of markdown instead of the note built in: every
     /// `*.md` file, each display a section `### (N) Title`, its LaTeX between `$$` lines and a
     /// line `*Kind:* …` (see equations/README.md); for verify, show, errata and book.
     #[arg(long, global = true, value_name = "DIR")]
-    equations: Option<std::path::PathBuf>,
+    pub equations: Option<std::path::PathBuf>,
+    /// The subcommand; none verifies every display and simulates the note's fall.
     #[command(subcommand)]
-    command: Option<Command>,
+    pub command: Option<Command>,
 }
 
+/// The subcommands of `ladder`.
 #[derive(Subcommand)]
-enum Command {
+pub enum Command {
     /// Check every numbered display of the note: one row per display.
     Verify(verify::VerifyArgs),
     /// One display in depth: print, symbols, every form's value at a state, its checks.
@@ -71,7 +74,7 @@ pub fn run() -> ExitCode {
             return code;
         }
     }
-    if let Some(code) = note_unreadable() {
+    if let Some(code) = reads_note(&cli.command).then(note_unreadable).flatten() {
         return code;
     }
     match cli.command {
@@ -101,6 +104,15 @@ pub fn run() -> ExitCode {
         Some(Command::Show(a)) => show::run(a),
         Some(Command::Book(a)) => book::run(a),
     }
+}
+
+/// Whether `command` reads the note's displays. Only those commands pay for parsing the note at
+/// start-up (about 8 ms; a scene, a stability or work-precision run needs none of it).
+pub fn reads_note(command: &Option<Command>) -> bool {
+    matches!(
+        command,
+        None | Some(Command::Verify(_) | Command::Show(_) | Command::Errata(_) | Command::Book(_))
+    )
 }
 
 /// The note in use could not be read in full: every problem on stderr as `file:line: reason`,

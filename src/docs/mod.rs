@@ -15,7 +15,7 @@ pub mod facts;
 pub mod pages;
 pub mod worked;
 
-use crate::registry::source::{Note, Section};
+use crate::registry::source::{Lines, Note, Section};
 use crate::registry::{label_of, EXTENSION_BASE};
 use pulldown_cmark::{Event, Options, Parser, Tag, TagEnd};
 use std::path::{Path, PathBuf};
@@ -50,10 +50,6 @@ pub fn note_dir() -> PathBuf {
 }
 
 pub use crate::registry::source::normalize_latex;
-
-fn line_of(src: &str, offset: usize) -> usize {
-    src[..offset.min(src.len())].matches('\n').count() + 1
-}
 
 /// Check the book in `dir` against the note in use ([`crate::registry::source::current`]).
 pub fn check_book(dir: &Path) -> BookReport {
@@ -137,6 +133,7 @@ pub fn check_file(name: &str, src: &str, rep: &mut BookReport) {
     let mut table: Vec<Vec<String>> = Vec::new();
     let mut table_line = 0;
     let mut cell = String::new();
+    let lines = Lines::new(src);
     for (ev, range) in
         Parser::new_ext(src, Options::ENABLE_MATH | Options::ENABLE_TABLES).into_offset_iter()
     {
@@ -144,7 +141,7 @@ pub fn check_file(name: &str, src: &str, rep: &mut BookReport) {
             Event::Start(Tag::Table(_)) => {
                 in_table = true;
                 table.clear();
-                table_line = line_of(src, range.start);
+                table_line = lines.line_of(range.start);
             }
             Event::End(TagEnd::Table) => {
                 in_table = false;

@@ -55,7 +55,7 @@ pub mod premises;
 pub mod symbols;
 
 pub use note::{current, misprinted_forms, use_note, Note};
-pub use parse::{parse_file, ParsedFile};
+pub use parse::{parse_file, Lines, ParsedFile};
 pub use premises::PremiseSource;
 pub use symbols::point_id;
 

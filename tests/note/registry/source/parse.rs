@@ -51,3 +51,27 @@ fn a_section_lacking_display_or_kind_is_an_error_at_its_line() {
     let law = s.law.as_ref().expect("law");
     assert_eq!((law.step, law.statement.as_str()), (1, "the law"));
 }
+
+/// `Lines::line_of` against counting the line breaks before each offset, on text with empty
+/// lines, a trailing break and none; an offset on a break belongs to the line it ends.
+#[test]
+fn lines_line_of_counts_the_breaks_before_the_offset() {
+    use sliding_ladder::registry::source::Lines;
+    for src in ["", "a", "a\n", "\n\nab\n\ncd", "### (1) T\n\n$$\nx\n$$\n"] {
+        let lines = Lines::new(src);
+        for offset in 0..=src.len() + 2 {
+            let want = src.as_bytes()[..offset.min(src.len())]
+                .iter()
+                .filter(|&&b| b == b'\n')
+                .count()
+                + 1;
+            assert_eq!(lines.line_of(offset), want, "{src:?} at {offset}");
+        }
+    }
+    let lines = Lines::new("a\nb\nc");
+    assert_eq!(
+        [0, 1, 2, 4].map(|o| lines.line_of(o)),
+        [1, 1, 2, 3],
+        "the break at 1 ends line 1"
+    );
+}
