@@ -27,7 +27,8 @@ pub struct VerifyArgs {
     /// Seed of the random states.
     #[arg(long, default_value_t = Config::default().seed)]
     seed: u64,
-    /// Show only these displays: equation numbers or sections, e.g. `25,28` or `2.5`.
+    /// Show only these displays: equation numbers, labels beyond the note or sections, e.g.
+    /// `25,28`, `P8` or `2.5`.
     #[arg(long)]
     only: Option<String>,
     /// Under every row, the checks run and the law of motion the display uses.
@@ -77,10 +78,10 @@ pub fn verify(
     columns: usize,
 ) -> ExitCode {
     let t = Instant::now();
-    let results = match only {
-        None => verify_all(cfg),
+    let (results, extensions) = match only {
+        None => (verify_all(cfg), crate::verify::verify_extensions(cfg)),
         Some(spec) => match verify_only(spec, cfg) {
-            Ok(results) => results,
+            Ok(both) => both,
             Err(msg) => {
                 eprintln!("ladder verify: {msg}");
                 return ExitCode::from(2);
@@ -89,7 +90,6 @@ pub fn verify(
     };
     let docs = crate::docs::check_book(&crate::docs::note_dir());
     let methods = crate::verify::check_methods(cfg);
-    let extensions = crate::verify::verify_extensions(cfg);
     let seconds = t.elapsed().as_secs_f64();
     let run = Run {
         results: &results,
@@ -126,18 +126,28 @@ struct Run<'a> {
     seconds: f64,
 }
 
-/// `--only SPEC`: pick the equations first (from rows judged without checks, which carry
-/// number, label and section), then run only their checks.
-fn verify_only(spec: &str, cfg: &Config) -> Result<Vec<EquationResult>, String> {
-    let all = crate::registry::equations();
-    let blank: Vec<_> = all.iter().map(|e| crate::verify::judge(e, &[])).collect();
+/// `--only SPEC`: pick the displays first, the note's and those beyond it (from rows judged
+/// without checks, which carry number, label and section), then run only their checks: the
+/// note's rows and the extension's, each possibly empty.
+fn verify_only(
+    spec: &str,
+    cfg: &Config,
+) -> Result<(Vec<EquationResult>, Vec<EquationResult>), String> {
+    let (note, beyond) = (crate::registry::equations(), crate::registry::extensions());
+    let blank: Vec<_> = note
+        .iter()
+        .chain(&beyond)
+        .map(|e| crate::verify::judge(e, &[]))
+        .collect();
     let keep = crate::verify::legend::only(blank, spec)?;
-    Ok(crate::verify::verify_equations(
-        all.into_iter()
+    let picked = |eqs: Vec<crate::registry::Equation>| {
+        let eqs = eqs
+            .into_iter()
             .filter(|e| keep.iter().any(|r| r.number == e.number))
-            .collect(),
-        cfg,
-    ))
+            .collect();
+        crate::verify::verify_equations(eqs, cfg)
+    };
+    Ok((picked(note), picked(beyond)))
 }
 
 /// `ladder verify --json`: every row, the summary, the book's files, the derivations and the
@@ -168,9 +178,8 @@ fn push_line(text: &mut String, s: &str, columns: usize) {
     text.push('\n');
 }
 
-/// `ladder verify` as a teacher reads it: the table, the summary and its legend, the extension
-/// beyond the note, the derivations and the book's files, filled to `columns`.
-fn text_report(run: &Run, wide: bool, columns: usize) -> String {
+/// The note's rows, their summary, the Schwartz-Zippel sentence and the print coverage.
+fn note_table(run: &Run, wide: bool, columns: usize) -> String {
     let (results, cfg) = (run.results, run.cfg);
     let mut text = render_for(results, wide, columns);
     push_line(&mut text, &summary_line(results, cfg, run.seconds), columns);
@@ -184,23 +193,40 @@ fn text_report(run: &Run, wide: bool, columns: usize) -> String {
     push_line(&mut text, &format!(
         "print: {pd} of {nd} displays parsed in full, {pf} of {nf} printed forms parsed and checked, {pm} displays with every Rust form matching the print (src/print/symbols.toml); {pp} of {nd} displays proved symbolically as printed ({ppf} forms)"
     ), columns);
+    text
+}
+
+/// `ladder verify` as a teacher reads it: the table, the summary and its legend, the extension
+/// beyond the note, the derivations and the book's files, filled to `columns`.
+fn text_report(run: &Run, wide: bool, columns: usize) -> String {
+    let (results, cfg) = (run.results, run.cfg);
+    // `--only` may pick rows beyond the note alone: then there is no note table to sum up.
+    let mut text = if results.is_empty() {
+        String::new()
+    } else {
+        note_table(run, wide, columns)
+    };
     text.push_str(&fill(&crate::verify::legend::legend(cfg), columns));
-    text.push_str(&fill(&crate::verify::legend::law_lines(results), columns));
-    push_line(
-        &mut text,
-        "beyond the note: the floor phase after the ladder leaves the wall (equations/phase2.md)",
-        columns,
-    );
-    text.extend(
-        render_for(run.extensions, wide, columns)
-            .lines()
-            .skip(if columns >= crate::verify::table::FULL_WIDTH {
-                1
-            } else {
-                2
-            })
-            .map(|l| format!("{l}\n")),
-    );
+    if !results.is_empty() {
+        text.push_str(&fill(&crate::verify::legend::law_lines(results), columns));
+    }
+    if !run.extensions.is_empty() {
+        push_line(
+            &mut text,
+            "beyond the note: the floor phase after the ladder leaves the wall (equations/phase2.md)",
+            columns,
+        );
+        text.extend(
+            render_for(run.extensions, wide, columns)
+                .lines()
+                .skip(if columns >= crate::verify::table::FULL_WIDTH {
+                    1
+                } else {
+                    2
+                })
+                .map(|l| format!("{l}\n")),
+        );
+    }
     let failed_methods: Vec<_> = run.methods.iter().filter(|m| !m.passed).collect();
     push_line(&mut text, &format!(
         "methods: {} derivations of the equation of motion checked (θ̈ solved from each equals (5); each residual vanishes on the motion only), {} failed",

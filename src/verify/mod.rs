@@ -182,7 +182,7 @@ pub fn verify_equations(eqs: Vec<Equation>, cfg: &Config) -> Vec<EquationResult>
     verify_list(eqs, cfg)
 }
 
-/// Run the checks of the extension beyond the note, (P1)-(P5).
+/// Run the checks of the displays beyond the note, (P1) on (`equations/phase2.md`, problems).
 pub fn verify_extensions(cfg: &Config) -> Vec<EquationResult> {
     verify_list(crate::registry::extensions(), cfg)
 }

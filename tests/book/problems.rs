@@ -34,7 +34,8 @@ fn row<'a>(v: &'a Value, label: &str) -> &'a Value {
 
 #[test]
 fn every_answer_is_checked_like_the_notes_displays_and_its_solution_is_folded() {
-    let out = ladder(&["verify", "--cases", "200", "--json"]);
+    let only = ANSWERS.map(|l| l.trim_matches(['(', ')'])).join(",");
+    let out = ladder(&["verify", "--cases", "200", "--json", "--only", &only]);
     let v: Value = serde_json::from_slice(&out.stdout).expect("JSON");
     for label in ANSWERS {
         let r = row(&v, label);
@@ -58,19 +59,10 @@ fn every_answer_is_checked_like_the_notes_displays_and_its_solution_is_folded() 
             );
         }
     }
-    // The page: every answer typeset with its status, every solution folded.
-    let book = std::env::temp_dir().join(format!("ladder-problems-book-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&book);
-    let b = ladder(&[
-        "book",
-        "--cases",
-        "50",
-        "--out",
-        book.to_str().expect("utf-8"),
-    ]);
-    assert!(b.status.success(), "{}", String::from_utf8_lossy(&b.stderr));
-    let page = std::fs::read_to_string(book.join("problems.html")).expect("problems.html");
-    let _ = std::fs::remove_dir_all(&book);
+    // The page (of the book this binary's tests share): every answer typeset with its status,
+    // every solution folded.
+    let page =
+        std::fs::read_to_string(crate::built::book().join("problems.html")).expect("problems.html");
     let problems = page.matches("<h2>Problem ").count();
     let folded = page
         .matches("<details class=\"solution\"><summary>Worked solution</summary>")
@@ -129,7 +121,17 @@ $$",
     assert!(bad.contains(r"\frac{T}{3}"), "the plant of (P8)");
     std::fs::write(&file, bad).expect("write");
     let d = dir.to_str().expect("utf-8");
-    let out = ladder(&["verify", "--equations", d, "--cases", "100", "--json"]);
+    let only = ANSWERS.map(|l| l.trim_matches(['(', ')'])).join(",");
+    let out = ladder(&[
+        "verify",
+        "--equations",
+        d,
+        "--cases",
+        "100",
+        "--json",
+        "--only",
+        &only,
+    ]);
     assert_eq!(out.status.code(), Some(1));
     let v: Value = serde_json::from_slice(&out.stdout).expect("JSON");
     for label in ["(P8)", "(P9)"] {

@@ -134,16 +134,20 @@ fn breaks_finds_each_differing_step() {
 #[test]
 fn only_selects_rows_by_number_or_section_and_rejects_unknown_items() {
     use sliding_ladder::verify::legend::{law_lines, only};
-    let cfg = Config {
-        float_cases: 2,
-        exact_points: 1,
-        seed: 2019,
-    };
-    let all = sliding_ladder::verify::verify_all(&cfg);
+    // Rows judged without checks carry what `only` reads: number, label and section.
+    let all: Vec<_> = sliding_ladder::registry::equations()
+        .iter()
+        .chain(&sliding_ladder::registry::extensions())
+        .map(|e| sliding_ladder::verify::judge(e, &[]))
+        .collect();
     let picked = only(all.clone(), "25, 28,2.3").expect("known items");
     let numbers: Vec<u32> = picked.iter().map(|r| r.number).collect();
     assert_eq!(numbers, vec![17, 18, 19, 25, 28]);
+    let beyond = only(all.clone(), "P8, P1").expect("labels beyond the note");
+    let numbers: Vec<u32> = beyond.iter().map(|r| r.number).collect();
+    assert_eq!(numbers, vec![1001, 1008]);
     assert!(only(all.clone(), "91").is_err());
+    assert!(only(all.clone(), "P99").is_err());
     assert!(only(all.clone(), "2.9").is_err());
     let lines = law_lines(&picked);
     assert!(

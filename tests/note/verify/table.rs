@@ -380,6 +380,37 @@ fn verify_only_runs_the_chosen_displays_and_exits_0_when_they_pass() {
     assert_eq!(String::from_utf8_lossy(&bad.stderr).lines().count(), 1);
 }
 
+/// `--only` picks rows beyond the note by label, and the note's by number, each list alone.
+#[test]
+fn verify_only_picks_rows_beyond_the_note_by_label() {
+    let run = |only: &str| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+            .args(["verify", "--json", "--cases", "5", "--exact-points", "1"])
+            .args(["--only", only])
+            .output()
+            .expect("runs");
+        assert_eq!(out.status.code(), Some(0), "--only {only}");
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+        let labels = |k: &str| -> Vec<String> {
+            v[k].as_array()
+                .expect("rows")
+                .iter()
+                .map(|r| r["label"].as_str().unwrap_or("").to_string())
+                .collect()
+        };
+        (labels("equations"), labels("extensions"))
+    };
+    assert_eq!(
+        run("P8,P1"),
+        (vec![], vec!["(P1)".to_string(), "(P8)".to_string()])
+    );
+    assert_eq!(run("25"), (vec!["(25)".to_string()], vec![]));
+    assert_eq!(
+        run("P2,5"),
+        (vec!["(5)".to_string()], vec!["(P2)".to_string()])
+    );
+}
+
 /// `ladder errata` fits a 100-column terminal: its reasons, points and residuals are filled to
 /// it (unfilled, they run to over 200 columns).
 #[test]
