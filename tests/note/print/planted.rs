@@ -234,3 +234,35 @@ fn show_says_what_the_symbol_check_does_with_each_blind_pair() {
     caught(24, "L_C for L_D");
     caught(21, "I_A for I_C");
 }
+
+/// A coefficient changed below a float's resolution, 3/4 → (3·10¹⁸ + 1)/(4·10¹⁸) in (5): every
+/// float state rounds it to 3/4, so only the exact points see it, and the verdict names the
+/// form that differs and its nonzero residual (not the chain's first form, which agrees with
+/// itself).
+#[test]
+fn a_coefficient_changed_below_float_resolution_is_caught_exactly_naming_its_form() {
+    let dir = copy_of_the_print("sub-ulp");
+    plant(
+        &dir,
+        "01-lagrange.md",
+        r"\ddot{\theta} = \frac{3g}{4l} \sin \theta",
+        r"\ddot{\theta} = \frac{3000000000000000001g}{4000000000000000000l} \sin \theta",
+    );
+    let (code, json, err) = verify(&dir, Some("5"));
+    assert_eq!(code, Some(1), "{err}");
+    let flagged = failed(&json);
+    assert_eq!(flagged.len(), 1, "{flagged:?}");
+    let (n, problems) = &flagged[0];
+    assert_eq!(*n, 5);
+    let exact = problems
+        .iter()
+        .find(|p| p.contains("exactly (residual"))
+        .unwrap_or_else(|| panic!("no exact residual: {problems:?}"));
+    assert!(exact.contains("form 2"), "{exact}");
+    assert!(!exact.contains("residual 0."), "{exact}");
+    // The float states cannot see it: the worst float residual stays within its bound.
+    let worst = json["equations"][0]["max_residual"]
+        .as_f64()
+        .expect("residual");
+    assert!(worst <= 4.0, "floats cannot see it: {worst}");
+}

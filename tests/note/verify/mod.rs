@@ -5,5 +5,6 @@ mod errata_difference;
 mod errata_point;
 mod errata_reading;
 mod golfer;
+mod judge;
 mod rolling;
 mod table;
