@@ -63,12 +63,6 @@ impl ClosedForm {
         self.centre + (self.z0 - self.centre) * c + self.w0 / self.omega_z * s
     }
 
-    /// ż(t).
-    pub fn rise_rate(&self, t: f64) -> f64 {
-        let (s, c) = (self.omega_z * t).sin_cos();
-        -(self.z0 - self.centre) * self.omega_z * s + self.w0 * c
-    }
-
     /// The amplitude √((z₀ − z_c)² + (ż₀/ω_z)²).
     pub fn amplitude(&self) -> f64 {
         (self.z0 - self.centre).hypot(self.w0 / self.omega_z)
