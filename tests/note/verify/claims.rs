@@ -108,3 +108,22 @@ fn appendix_checks_see_a_moving_point_and_a_perturbed_system() {
     assert!(slipping_breaks_eq42());
     assert_eq!(three_distinct_methods(), (true, true));
 }
+
+/// `Claim::verdict` in words: a false printed wording is called imprecise only when it is
+/// marked so, a claim that holds is "holds", and a check that does not come out as recorded
+/// is FAILED.
+#[test]
+fn claim_verdict_names_an_imprecise_erratum_only_when_marked() {
+    use sliding_ladder::verify::claims::Claim;
+    let wrong = Claim::erratum("A.5", "a claim", ("printed", "corrected"), true, true);
+    assert_eq!(
+        wrong.verdict(),
+        "PROSE ERRATUM: the printed wording fails, the correction holds"
+    );
+    assert!(wrong.clone().imprecise().verdict().contains("(imprecise)"));
+    assert_eq!(Claim::checked("2.1", "a claim", true).verdict(), "holds");
+    assert_eq!(Claim::checked("2.1", "a claim", false).verdict(), "FAILED");
+    // A printed wording that does not fail is not an erratum as recorded.
+    let unproven = Claim::erratum("A.5", "a claim", ("printed", "corrected"), true, false);
+    assert_eq!(unproven.verdict(), "FAILED");
+}
