@@ -49,13 +49,18 @@ fn at_rest(p: &Point<Q>) -> Point<Q> {
 
 /// Sec. 2.2 (in general): the angular momentum about a point is that of the centre-of-mass
 /// motion plus that about the centre of mass, for L_P and (with velocities relative to P) L'_P.
-pub fn orbital_plus_spin() -> bool {
+/// Checked as a split about `centre` (drawn from each system and its point P): L_P is the
+/// angular momentum relative to `centre` plus `centre`'s own motion carrying the whole mass,
+/// L_P = L'_centre + (x_centre − x_P) × m v_centre, and L'_P the same with v_centre − v_P. The
+/// note's centre is the centre of mass; about another point the split fails.
+pub fn orbital_plus_spin(centre: impl Fn(&System<Q>, &Point<Q>) -> Point<Q>) -> bool {
     every(|s, p| {
-        let (m, r) = (s.total_mass(), s.centre_of_mass() - p.x.clone());
-        let spin = s.spin_angular_momentum();
-        s.angular_momentum_about(p) == spin.clone() + r.cross(&s.cm_velocity().scale(&m))
+        let c = centre(s, p);
+        let (m, r) = (s.total_mass(), c.x.clone() - p.x.clone());
+        let spin = s.relative_angular_momentum_about(&c);
+        s.angular_momentum_about(p) == spin.clone() + r.cross(&c.v.scale(&m))
             && s.relative_angular_momentum_about(p)
-                == spin + r.cross(&(s.cm_velocity() - p.v.clone()).scale(&m))
+                == spin + r.cross(&(c.v.clone() - p.v.clone()).scale(&m))
     })
 }
 
@@ -204,11 +209,11 @@ fn wall_torque_about(k: Corner, l: &Ladder<Q>, s: &State<Q>) -> Q {
 }
 
 /// Sec. A (the point of contact), A.5 on (58): τ_C needs no wall force (the contact force at
-/// C), τ_cm does.
-pub fn contact_force_needed() -> bool {
+/// C), τ_cm does. Checked for the two points given: the wall force has no torque about `free`
+/// and a torque about `needed` at every exact state; the note's pair is (C, B).
+pub fn contact_force_needed(free: Corner, needed: Corner) -> bool {
     all(Kinematic, |l, s| {
-        wall_torque_about(Corner::C, l, s) == Q::int(0)
-            && wall_torque_about(Corner::B, l, s) != Q::int(0)
+        wall_torque_about(free, l, s) == Q::int(0) && wall_torque_about(needed, l, s) != Q::int(0)
     })
 }
 
@@ -284,11 +289,11 @@ pub fn claims() -> Vec<Claim> {
     let ok = Claim::checked;
     let (three, only_one) = three_distinct_methods();
     vec![
-        ok("sec. 2.2", "(any system, any point) L_P and L'_P are the orbital part of the centre of mass plus the spin L_cm", orbital_plus_spin()),
+        ok("sec. 2.2", "(any system, any point) L_P and L'_P are the orbital part of the centre of mass plus the spin L_cm", orbital_plus_spin(|s, _| s.cm_point())),
         ok("sec. 2.2, B.2", "(any system) about a point at rest dL_P/dt = τ_P with the lab's forces only; not about a moving point", fixed_point_law()),
         ok("sec. 2.3, 2.7", "(any system) about the centre of mass the coordinate force has no torque: dL_cm/dt = τ_cm though a_cm ≠ 0", cm_needs_no_coordinate_force()),
         ok("sec. A (39), fn. 19", "(any system) v_P = 0 gives L'_P = L_P; a moving P does not", fixed_point_same_l()),
-        ok("sec. A (contact), A.5", "τ_C needs no contact force at C (the wall's torque about C is 0); τ_cm of (58) does", contact_force_needed()),
+        ok("sec. A (contact), A.5", "τ_C needs no contact force at C (the wall's torque about C is 0); τ_cm of (58) does", contact_force_needed(Corner::C, Corner::B)),
         ok("sec. A.5", "(58) nominally about C is the analysis about B: τ_C + (x_cm − x_C) × (−m a_cm) = τ_B", method5_is_about_b()),
         ok("sec. A.3", "method 3 is sec. 2.4's analysis: the torque of −m a_C is (22)'s F_C,y l sin θ", method3_is_sec_2_4()),
         ok("sec. A (42), fn. 15, A.1", "with slipping (the ladder at C) neither form of (42) holds: L_C ≠ I_C θ̇ (49)-(50), L'_C ≠ I_C θ̇ − (x_cm − x_C) × m v_C", slipping_breaks_eq42()),

@@ -46,18 +46,25 @@ pub fn at_distance_l(k: Corner) -> bool {
 }
 
 /// Secs. 2.3-2.6: B is the centre of mass; C = (0, 2y_cm), D = (2x_cm, 0), E = (2x_cm, 2y_cm).
-pub fn coordinates_of_points() -> bool {
+/// Checked as printed in `claimed`: each corner k with (a, b) is at (a x_cm, b y_cm) at every
+/// exact state.
+pub fn coordinates_of_points(claimed: &[(Corner, i64, i64)]) -> bool {
     all(Kinematic, |l, s| {
         let cm = as_system(l, s).centre_of_mass();
-        let two = Q::int(2);
-        let (x2, y2) = (two.clone() * cm.x.clone(), two * cm.y.clone());
-        let at = |k| corner_position(k, l, s);
-        at(Corner::B) == cm
-            && (at(Corner::C).x == Q::int(0) && at(Corner::C).y == y2)
-            && (at(Corner::D).x == x2 && at(Corner::D).y == Q::int(0))
-            && (at(Corner::E).x == x2 && at(Corner::E).y == y2)
+        claimed.iter().all(|&(k, a, b)| {
+            let at = corner_position(k, l, s);
+            at.x == Q::int(a) * cm.x.clone() && at.y == Q::int(b) * cm.y.clone() && at.z == cm.z
+        })
     })
 }
+
+/// The coordinates of B, C, D and E as secs. 2.3-2.6 print them, in multiples of (x_cm, y_cm).
+pub const PRINTED_COORDINATES: [(Corner, i64, i64); 4] = [
+    (Corner::B, 1, 1),
+    (Corner::C, 0, 2),
+    (Corner::D, 2, 0),
+    (Corner::E, 2, 2),
+];
 
 /// Secs. 2.4, 2.5 ("since point C is located on the ladder, L_C = I_C θ̇"): about any point
 /// fixed on the ladder, L'_P = I_P θ̇, for points at fractions 0, 1/3, 1 and 3/2 (past D) of the
@@ -151,7 +158,7 @@ pub fn claims() -> Vec<Claim> {
     vec![
         ok("sec. 2.2", "the spin about the centre of mass is I_cm θ̇ = ml²θ̇/3, opposite in sense to the orbital −ml²θ̇", spin_and_sense()),
         ok("sec. 2.2 (13)", "A, C, D, E are each at distance l from B, so the parallel-axis theorem gives one I = I_cm + ml² for all four", corners_at_distance_l() && i13),
-        ok("secs. 2.3-2.6", "B is the centre of mass; C = (0, 2y_cm), D = (2x_cm, 0), E = (2x_cm, 2y_cm)", coordinates_of_points()),
+        ok("secs. 2.3-2.6", "B is the centre of mass; C = (0, 2y_cm), D = (2x_cm, 0), E = (2x_cm, 2y_cm)", coordinates_of_points(&PRINTED_COORDINATES)),
         ok("secs. 2.4, 2.5", "about any point fixed on the ladder L'_P = I_P θ̇ (why L_C, L_D are I θ̇)", rigid_about_points_on_ladder()),
         ok("sec. 2.6", "E is not on the ladder", e_off_the_ladder()),
         ok("sec. 2.6", "(27) is 'as for A': L'_E = L_A", l_e_as_for_a()),

@@ -93,20 +93,57 @@ fn section_2_checks_report_false_for_the_wrong_point_or_value() {
 #[test]
 fn appendix_checks_see_a_moving_point_and_a_perturbed_system() {
     use sliding_ladder::verify::claims::appendix::{
-        contact_force_needed, eq77_is_eq37, eq85_is_eq38, eq88_follows, eq90_is_eq40,
-        fixed_point_law, fixed_point_same_l, general_systems, method3_is_sec_2_4,
-        method5_is_about_b, orbital_plus_spin, slipping_breaks_eq42, three_distinct_methods,
+        eq77_is_eq37, eq85_is_eq38, eq88_follows, eq90_is_eq40, fixed_point_law,
+        fixed_point_same_l, general_systems, method3_is_sec_2_4, method5_is_about_b,
+        slipping_breaks_eq42, three_distinct_methods,
     };
-    // Each includes its own negative half (a moving P, a = 0 excluded, B's torque ≠ 0), so
-    // these being true already shows they distinguish; the systems really are general:
+    // Each includes its own negative half (a moving P, a = 0 excluded), and the systems really
+    // are general:
     assert!(general_systems()
         .iter()
         .all(|(s, p)| p.v != sliding_ladder::vector::Vec3::zero() && s.particles.len() == 3));
-    assert!(orbital_plus_spin() && fixed_point_same_l() && fixed_point_law());
+    assert!(fixed_point_same_l() && fixed_point_law());
     assert!(eq85_is_eq38() && eq90_is_eq40() && eq77_is_eq37() && eq88_follows());
-    assert!(contact_force_needed() && method5_is_about_b() && method3_is_sec_2_4());
+    assert!(method5_is_about_b() && method3_is_sec_2_4());
     assert!(slipping_breaks_eq42());
     assert_eq!(three_distinct_methods(), (true, true));
+}
+
+/// The split of L_P and L'_P holds about the centre of mass and fails about a point at rest at
+/// the origin; about P held at rest only the L_P half holds, so both halves are checked.
+#[test]
+fn orbital_plus_spin_holds_about_the_centre_of_mass_only() {
+    use sliding_ladder::system::Point;
+    use sliding_ladder::vector::Vec3;
+    use sliding_ladder::verify::claims::appendix::orbital_plus_spin;
+    assert!(orbital_plus_spin(|s, _| s.cm_point()));
+    assert!(!orbital_plus_spin(|_, _| Point::fixed(Vec3::zero())));
+    assert!(!orbital_plus_spin(|_, p| Point::fixed(p.x.clone())));
+}
+
+/// The wall force at C has no torque about C and one about B (the note's pair); about B it
+/// is not free, and about C it is not needed.
+#[test]
+fn contact_force_needed_sees_which_point_the_wall_force_turns() {
+    use sliding_ladder::verify::claims::appendix::contact_force_needed;
+    assert!(contact_force_needed(Corner::C, Corner::B));
+    assert!(contact_force_needed(Corner::C, Corner::D));
+    assert!(!contact_force_needed(Corner::B, Corner::C));
+    assert!(!contact_force_needed(Corner::C, Corner::C));
+}
+
+/// The printed coordinates hold, and a wrong multiple in either coordinate alone fails.
+#[test]
+fn coordinates_of_points_fails_a_wrong_x_or_y() {
+    use sliding_ladder::verify::claims::sec2::{coordinates_of_points, PRINTED_COORDINATES};
+    assert!(coordinates_of_points(&PRINTED_COORDINATES));
+    assert!(coordinates_of_points(&[(Corner::A, 0, 0)]));
+    assert!(!coordinates_of_points(&[(Corner::C, 0, 1)]));
+    assert!(!coordinates_of_points(&[(Corner::D, 1, 0)]));
+    assert!(!coordinates_of_points(&[
+        (Corner::E, 2, 2),
+        (Corner::B, 2, 2)
+    ]));
 }
 
 /// `Claim::verdict` in words: a false printed wording is called imprecise only when it is
