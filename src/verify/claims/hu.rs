@@ -45,13 +45,15 @@ pub fn hu_holds_throughout(name: &str) -> bool {
         .all(|(_, is)| !is.is_empty() && is.iter().all(|i| i.hu_residual().is_zero()))
 }
 
-/// The precise condition decides Hu's equation: at every sampled instant of every body,
-/// I_P ω̇ = τ_P exactly when the centre of mass is on the contact normal.
-pub fn condition_decides() -> bool {
+/// Whether `condition` decides Hu's equation: at every sampled instant of every body,
+/// I_P ω̇ = τ_P exactly when `condition` holds. The precise condition, the centre of mass on the
+/// contact normal ([`Instant::cm_on_contact_normal`]), does; the note's "has a symmetry axis",
+/// true of every sampled body, does not.
+pub fn condition_decides(condition: impl Fn(&Instant) -> bool) -> bool {
     sampled()
         .iter()
         .flat_map(|(_, is)| is)
-        .all(|i| i.hu_residual().is_zero() == i.cm_on_contact_normal())
+        .all(|i| i.hu_residual().is_zero() == condition(i))
 }
 
 /// The claims of this module.
@@ -105,7 +107,7 @@ pub fn claims() -> Vec<super::Claim> {
                 "valid if the body has a symmetry axis",
                 "valid when the centre of mass lies on the contact normal through P at every instant (a circular rim about the centre of mass)",
             ),
-            hu_holds_throughout("centred disk") && condition_decides(),
+            hu_holds_throughout("centred disk") && condition_decides(Instant::cm_on_contact_normal),
             symmetric_fail,
         )
         .imprecise(),

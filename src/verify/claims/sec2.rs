@@ -19,25 +19,19 @@ use crate::system::rate;
 type Q = Rational;
 
 /// Sec. 2.2: the spin L_cm = I_cm θ̇ = ml²θ̇/3, and it turns opposite to the orbital part
-/// −ml²θ̇ (their signs differ for θ̇ ≠ 0).
-pub fn spin_and_sense() -> bool {
+/// −ml²θ̇ (their signs differ for θ̇ ≠ 0); `i_cm` is the ladder's I_cm (printed: (8), ml²/3).
+pub fn spin_and_sense(i_cm: impl Fn(&Ladder<Q>) -> Q) -> bool {
     all(Kinematic, |l, s| {
         let sys = as_system(l, s);
         let spin = sys.spin_angular_momentum().z;
         let orbital = sys.centre_of_mass().cross(&sys.cm_velocity().scale(&l.m)).z;
-        spin == moment_of_inertia_cm(l) * s.rate.clone() && spin.clone() * orbital < Q::int(0)
+        spin == i_cm(l) * s.rate.clone() && spin.clone() * orbital < Q::int(0)
     })
 }
 
-/// Sec. 2.2 (13): A, C, D and E are each at distance l from B, so the parallel-axis theorem
-/// gives all four the same I = I_cm + ml².
-pub fn corners_at_distance_l() -> bool {
-    [Corner::A, Corner::C, Corner::D, Corner::E]
-        .into_iter()
-        .all(at_distance_l)
-}
-
-/// Whether corner `k` is at distance l from the centre of mass at every exact state.
+/// Sec. 2.2 (13): whether corner `k` is at distance l from the centre of mass B at every exact
+/// state; the note says so of A, C, D and E, so the parallel-axis theorem gives all four the
+/// same I = I_cm + ml².
 pub fn at_distance_l(k: Corner) -> bool {
     all(Kinematic, |l, s| {
         let r = corner_position(k, l, s) - as_system(l, s).centre_of_mass();
@@ -68,24 +62,21 @@ pub const PRINTED_COORDINATES: [(Corner, i64, i64); 4] = [
 
 /// Secs. 2.4, 2.5 ("since point C is located on the ladder, L_C = I_C θ̇"): about any point
 /// fixed on the ladder, L'_P = I_P θ̇, for points at fractions 0, 1/3, 1 and 3/2 (past D) of the
-/// way from C to D; I_P from the particles.
-pub fn rigid_about_points_on_ladder() -> bool {
+/// way from C to D; I_P from the particles, the angular momentum as `def` defines it (printed:
+/// relative to the point's motion).
+pub fn rigid_about_points_on_ladder(def: AngularMomentum) -> bool {
     [(0, 1), (1, 3), (1, 1), (3, 2)].into_iter().all(|(n, d)| {
         all(Kinematic, |l, s| {
             let p = Reference::OnLadder(n, d);
             let x_p = crate::ladder::analysis::ReferencePoint::position(&p, l, s);
-            angular_momentum_about(&p, AngularMomentum::Relative, l, s)
+            angular_momentum_about(&p, def, l, s)
                 == as_system(l, s).moment_of_inertia_about(&x_p) * s.rate.clone()
         })
     })
 }
 
-/// Sec. 2.6: E is not on the ladder (not on the line through C and D).
-pub fn e_off_the_ladder() -> bool {
-    off_the_ladder(Corner::E)
-}
-
-/// Whether corner `k` is off the line through C and D at every exact state.
+/// Sec. 2.6: whether corner `k` is off the ladder (the line through C and D) at every exact
+/// state; the note says so of E.
 pub fn off_the_ladder(k: Corner) -> bool {
     all(Kinematic, |l, s| {
         let (c, d, e) = (
@@ -97,12 +88,8 @@ pub fn off_the_ladder(k: Corner) -> bool {
     })
 }
 
-/// Sec. 2.6, (27) "as for the analysis about point A": L'_E equals L_A.
-pub fn l_e_as_for_a() -> bool {
-    relative_l_is_l_a(Corner::E)
-}
-
-/// Whether L'_k equals L_A (12) at every exact state.
+/// Sec. 2.6, (27) "as for the analysis about point A": whether L'_k equals L_A (12) at every
+/// exact state; the note says so of E.
 pub fn relative_l_is_l_a(k: Corner) -> bool {
     all(Kinematic, |l, s| {
         angular_momentum_about(&Reference::Corner(k), AngularMomentum::Relative, l, s)
@@ -111,11 +98,12 @@ pub fn relative_l_is_l_a(k: Corner) -> bool {
 }
 
 /// Footnote 3: d/dt of (10), θ̇² − (3g/2l)(1 − cos θ), is 2θ̇ (θ̈ − (3g/4l) sin θ) at any state
-/// (so it gives (5) where θ̇ ≠ 0), and the energy (9) is constant on (5).
-pub fn footnote_3() -> bool {
+/// (so it gives (5) where θ̇ ≠ 0), and the energy (9) is constant on (5); `c10` is (10)'s
+/// coefficient of g/l as printed (3/2).
+pub fn footnote_3(c10: &Q) -> bool {
     let eq10 = |l: &Ladder<<Q as Scalar>::Dual>, s: &State<<Q as Scalar>::Dual>| {
         s.rate.clone() * s.rate.clone()
-            - l.g.clone() * <Q as Scalar>::Dual::ratio(3, 2) / l.l.clone()
+            - l.g.clone() * Q::constant(c10.clone()) / l.l.clone()
                 * (<Q as Scalar>::Dual::int(1) - s.cos.clone())
     };
     let derivative = all(Kinematic, |l, s| {
@@ -156,13 +144,13 @@ pub fn claims() -> Vec<Claim> {
             == moment_of_inertia_cm(l) + l.m.clone() * l.l.clone() * l.l.clone()
     });
     vec![
-        ok("sec. 2.2", "the spin about the centre of mass is I_cm θ̇ = ml²θ̇/3, opposite in sense to the orbital −ml²θ̇", spin_and_sense()),
-        ok("sec. 2.2 (13)", "A, C, D, E are each at distance l from B, so the parallel-axis theorem gives one I = I_cm + ml² for all four", corners_at_distance_l() && i13),
+        ok("sec. 2.2", "the spin about the centre of mass is I_cm θ̇ = ml²θ̇/3, opposite in sense to the orbital −ml²θ̇", spin_and_sense(moment_of_inertia_cm)),
+        ok("sec. 2.2 (13)", "A, C, D, E are each at distance l from B, so the parallel-axis theorem gives one I = I_cm + ml² for all four", [Corner::A, Corner::C, Corner::D, Corner::E].into_iter().all(at_distance_l) && i13),
         ok("secs. 2.3-2.6", "B is the centre of mass; C = (0, 2y_cm), D = (2x_cm, 0), E = (2x_cm, 2y_cm)", coordinates_of_points(&PRINTED_COORDINATES)),
-        ok("secs. 2.4, 2.5", "about any point fixed on the ladder L'_P = I_P θ̇ (why L_C, L_D are I θ̇)", rigid_about_points_on_ladder()),
-        ok("sec. 2.6", "E is not on the ladder", e_off_the_ladder()),
-        ok("sec. 2.6", "(27) is 'as for A': L'_E = L_A", l_e_as_for_a()),
-        ok("footnote 3", "d/dt of (10) gives (5), and the energy (9) is conserved on (5)", footnote_3()),
+        ok("secs. 2.4, 2.5", "about any point fixed on the ladder L'_P = I_P θ̇ (why L_C, L_D are I θ̇)", rigid_about_points_on_ladder(Relative)),
+        ok("sec. 2.6", "E is not on the ladder", off_the_ladder(Corner::E)),
+        ok("sec. 2.6", "(27) is 'as for A': L'_E = L_A", relative_l_is_l_a(Corner::E)),
+        ok("footnote 3", "d/dt of (10) gives (5), and the energy (9) is conserved on (5)", footnote_3(&Q::ratio(3, 2))),
         ok("secs. 2.2-2.6", "each torque analysis (A with L_A, B with L_B, C, D, E with L') solved for θ̈ gives (5)", sec2_analyses),
         ok("sec. A.1", "method 1 (L_C with (38)) solved for θ̈ gives (5)", leads_to_eq5(Corner::C, Absolute)),
     ]

@@ -65,20 +65,27 @@ fn the_prose_claims_are_the_documented_ones_and_every_erratum_fails_as_printed()
 #[test]
 fn the_sentence_about_e_is_true_of_l_prime_and_false_of_l() {
     use sliding_ladder::ladder::analysis::AngularMomentum::{Absolute, Relative};
-    use sliding_ladder::verify::claims::rigid_e::{orbital_test_decides, rigid_about};
+    use sliding_ladder::verify::claims::rigid_e::{
+        is_instant_centre_of_particles, orbital_test_decides, rigid_about,
+    };
     assert!(!rigid_about(Corner::E, Relative) && rigid_about(Corner::E, Absolute));
     // Rigid about C and D only relative to their motion; never about A.
     assert!(rigid_about(Corner::C, Relative) && !rigid_about(Corner::C, Absolute));
     assert!(!rigid_about(Corner::A, Absolute) && !rigid_about(Corner::A, Relative));
-    assert!(orbital_test_decides());
+    // The test decides with the body's own sense; with the opposite sense it does not.
+    assert!(orbital_test_decides(1) && !orbital_test_decides(-1));
+    assert!(is_instant_centre_of_particles(Corner::E));
+    assert!(!is_instant_centre_of_particles(Corner::C));
 }
 
 #[test]
 fn section_2_checks_report_false_for_the_wrong_point_or_value() {
-    use sliding_ladder::ladder::analysis::AngularMomentum::Relative;
+    use sliding_ladder::ladder::analysis::AngularMomentum::{Absolute, Relative};
+    use sliding_ladder::ladder::energy::moment_of_inertia_cm;
     use sliding_ladder::ladder::{Ladder, State};
     use sliding_ladder::verify::claims::sec2::{
-        at_distance_l, leads_to, off_the_ladder, relative_l_is_l_a,
+        at_distance_l, footnote_3, leads_to, off_the_ladder, relative_l_is_l_a,
+        rigid_about_points_on_ladder, spin_and_sense,
     };
     assert!(at_distance_l(Corner::E) && !at_distance_l(Corner::B));
     assert!(off_the_ladder(Corner::E) && !off_the_ladder(Corner::B));
@@ -88,24 +95,66 @@ fn section_2_checks_report_false_for_the_wrong_point_or_value() {
         Q::ratio(3, 2) * l.g.clone() / l.l.clone() * s.sin.clone()
     }
     assert!(!leads_to(Corner::C, Relative, wrong));
+    // The spin with I_cm = ml² (the sense still opposite) is not the printed one.
+    assert!(spin_and_sense(moment_of_inertia_cm));
+    assert!(!spin_and_sense(|l| l.m.clone() * l.l.clone() * l.l.clone()));
+    // In the lab frame the moving points of the ladder are not in rigid rotation.
+    assert!(rigid_about_points_on_ladder(Relative) && !rigid_about_points_on_ladder(Absolute));
+    // (10) with 3g/(4l): its derivative no longer gives (5), though (9) is still conserved.
+    assert!(footnote_3(&Q::ratio(3, 2)) && !footnote_3(&Q::ratio(3, 4)));
 }
 
 #[test]
 fn appendix_checks_see_a_moving_point_and_a_perturbed_system() {
+    use sliding_ladder::ladder::energy::moment_of_inertia_cm;
+    use sliding_ladder::system::{Point, System};
+    use sliding_ladder::vector::Vec3;
     use sliding_ladder::verify::claims::appendix::{
-        eq77_is_eq37, eq85_is_eq38, eq88_follows, eq90_is_eq40, fixed_point_law,
-        fixed_point_same_l, general_systems, method3_is_sec_2_4, method5_is_about_b,
-        slipping_breaks_eq42, three_distinct_methods,
+        cm_needs_no_coordinate_force, eq77_is_eq37, eq85_is_eq38, eq88_follows, eq90_is_eq40,
+        fixed_point_law, fixed_point_same_l, general_systems, kinetic_energy_splits,
+        method3_is_sec_2_4, method5_is_about_b, slipping_breaks_eq42, three_distinct_methods,
+        Systems,
     };
-    // Each includes its own negative half (a moving P, a = 0 excluded), and the systems really
-    // are general:
-    assert!(general_systems()
+    /// The systems, each changed by `f`.
+    fn changed(
+        systems: &Systems,
+        f: impl Fn(&mut System<Q>, &mut Point<Q>),
+    ) -> Vec<(System<Q>, Point<Q>)> {
+        let mut out = systems.to_vec();
+        out.iter_mut().for_each(|(s, p)| f(s, p));
+        out
+    }
+    let systems = general_systems();
+    assert!(systems
         .iter()
-        .all(|(s, p)| p.v != sliding_ladder::vector::Vec3::zero() && s.particles.len() == 3));
-    assert!(fixed_point_same_l() && fixed_point_law());
-    assert!(eq85_is_eq38() && eq90_is_eq40() && eq77_is_eq37() && eq88_follows());
-    assert!(method5_is_about_b() && method3_is_sec_2_4());
-    assert!(slipping_breaks_eq42());
+        .all(|(s, p)| p.v != Vec3::zero() && s.particles.len() == 3));
+    // Each system changed so that a check's negative half no longer holds.
+    let p_at_rest = changed(&systems, |_, p| *p = Point::fixed(p.x.clone()));
+    let cm_at_rest = changed(&systems, |s, _| {
+        s.particles.iter_mut().for_each(|q| q.a = Vec3::zero())
+    });
+    let centred = changed(&systems, |s, _| {
+        let cm = s.centre_of_mass();
+        s.particles
+            .iter_mut()
+            .for_each(|q| q.x = q.x.clone() - cm.clone())
+    });
+    assert!(fixed_point_same_l(&systems) && !fixed_point_same_l(&p_at_rest));
+    assert!(fixed_point_law(&systems) && !fixed_point_law(&p_at_rest));
+    assert!(cm_needs_no_coordinate_force(&systems) && !cm_needs_no_coordinate_force(&cm_at_rest));
+    assert!(eq88_follows(&systems) && !eq88_follows(&centred));
+    // A printed sign or coefficient changed in one form (the other kept) fails.
+    assert!(eq85_is_eq38(1, -1) && !eq85_is_eq38(1, 1) && !eq85_is_eq38(-1, -1));
+    assert!(eq77_is_eq37((-1, 1)) && !eq77_is_eq37((1, 1)) && !eq77_is_eq37((-1, -1)));
+    assert!(eq90_is_eq40(1) && !eq90_is_eq40(-1));
+    assert!(kinetic_energy_splits(moment_of_inertia_cm));
+    assert!(!kinetic_energy_splits(|l| l.m.clone()
+        * l.l.clone()
+        * l.l.clone()));
+    // The acceleration of the right point, the right corner.
+    assert!(method5_is_about_b(Corner::B) && !method5_is_about_b(Corner::C));
+    assert!(method3_is_sec_2_4(Corner::C) && !method3_is_sec_2_4(Corner::D));
+    assert!(slipping_breaks_eq42(Corner::C) && !slipping_breaks_eq42(Corner::E));
     assert_eq!(three_distinct_methods(), (true, true));
 }
 

@@ -6,7 +6,7 @@ use sliding_ladder::vector::Vec3;
 use sliding_ladder::verify::claims::hu::{
     condition_decides, hu_holds_throughout, material_contact_acceleration, sampled,
 };
-use sliding_ladder::verify::claims::rolling::{disk, elliptic_cylinder, on_motion, Root};
+use sliding_ladder::verify::claims::rolling::{disk, elliptic_cylinder, on_motion, Instant, Root};
 
 type Q = Rational;
 
@@ -48,7 +48,9 @@ fn the_centred_disk_obeys_hu_and_the_symmetric_others_do_not() {
     assert!(hu_holds_throughout("centred disk"));
     assert!(!hu_holds_throughout("eccentric disk"));
     assert!(!hu_holds_throughout("elliptic cylinder"));
-    assert!(condition_decides());
+    assert!(condition_decides(Instant::cm_on_contact_normal));
+    // The note's condition, a symmetry axis, holds for every sampled body and does not decide.
+    assert!(!condition_decides(|_| true));
     // The ellipse holds at its vertices (t = 0, 1), where the normal passes through the centre.
     let b = elliptic_cylinder();
     for (t, holds) in [
