@@ -106,6 +106,25 @@ fn every_row_lines_up_with_the_header_in_terminal_columns() {
     assert_eq!("any θ̈".chars().count(), 6);
 }
 
+/// In the one-line layout the rest of a wrapped title and the lines under a row start at the
+/// header's title column (read off the header itself), filled lines hanging further in.
+#[test]
+fn render_for_indents_continued_titles_to_the_title_column() {
+    let mut rows = unchecked();
+    rows.push(checked(1)); // a definition: its "checked:" line goes under the row
+    let table = render_for(&rows, true, FULL_WIDTH);
+    let header = table.lines().next().unwrap();
+    let title_at = width(&header[..header.find("title").unwrap()]);
+    let lead = |l: &str| l.len() - l.trim_start().len();
+    // A row's own line is led only by its right-aligned label; a longer lead is a continuation.
+    let continued: Vec<&str> = table.lines().filter(|l| lead(l) > COLUMNS[0].1).collect();
+    assert!(continued.iter().any(|l| l.contains("checked:")), "{table}");
+    assert!(continued.len() > rows.len() / 4, "{table}");
+    // Filled lines hang further in; none starts left of the title column, and some start on it.
+    let leads: Vec<usize> = continued.iter().map(|l| lead(l)).collect();
+    assert_eq!(leads.iter().min(), Some(&title_at), "{table}");
+}
+
 /// A teacher's terminal is about 100 columns: there each display takes two lines, its full title
 /// and then its cells, aligned under the header's second line; no line is wider than 100.
 #[test]
