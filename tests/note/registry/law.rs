@@ -155,3 +155,11 @@ fn only_selects_rows_by_number_or_section_and_rejects_unknown_items() {
         "{lines}"
     );
 }
+
+/// Only an `=` outside braces joins two forms: the one in an evaluation bar's subscript does not.
+#[test]
+fn equals_signs_counts_only_the_equals_outside_braces() {
+    assert_eq!(equals_signs(r"L = a \Big|_{\mathbf{x}_P=0} = b"), 2);
+    assert_eq!(equals_signs(r"x_{a=b}"), 0);
+    assert_eq!(equals_signs("a = b = c"), 2);
+}

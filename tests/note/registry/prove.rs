@@ -203,3 +203,37 @@ fn the_residual_unit_states_the_threshold_in_use() {
         "{RESIDUAL_UNIT} against {TOLERANCE_FACTOR}"
     );
 }
+
+/// `CheckProof::holds` asks all three: proved, every misprint nonzero, and (on shell) failing
+/// off the motion; each one missing alone makes it false.
+#[test]
+fn check_proof_holds_only_when_proved_every_misprint_wrong_and_needing_the_law() {
+    use sliding_ladder::registry::prove::CheckProof;
+    use sliding_ladder::scalar::symbolic::Sym;
+    let good = CheckProof {
+        name: "planted",
+        proved: true,
+        failure: None,
+        misprints: vec![("misprint", Sym::var("m", "m"))],
+        off_shell_fails: Some(true),
+        sampled_only: None,
+        seconds: 0.0,
+    };
+    assert!(good.holds());
+    let unproved = CheckProof {
+        proved: false,
+        off_shell_fails: None,
+        ..good.clone()
+    };
+    let misprint_right = CheckProof {
+        misprints: vec![("misprint", Sym::int(0))],
+        ..good.clone()
+    };
+    let holds_off_shell = CheckProof {
+        off_shell_fails: Some(false),
+        ..good.clone()
+    };
+    for p in [unproved, misprint_right, holds_off_shell] {
+        assert!(!p.holds(), "{:?}", (p.proved, p.off_shell_fails));
+    }
+}
