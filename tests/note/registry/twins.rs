@@ -45,3 +45,24 @@ fn indistinguishable_lists_no_symbol_beside_its_own_bold_form() {
         "{of_13:?}"
     );
 }
+
+/// A per-particle symbol (xᵢ, vᵢ) outside a Σ means particle 1, which on the ladder sits at C:
+/// it has C's values but is no twin of x_C or x_P. No display lists a per-particle quantity.
+#[test]
+fn indistinguishable_never_pairs_a_per_particle_quantity() {
+    let mut with_c = 0;
+    for e in &sliding_ladder::registry::equations() {
+        let twins = indistinguishable(e);
+        with_c += usize::from(twins.iter().any(|t| t.quantities.0 == "position:C"));
+        assert!(
+            twins
+                .iter()
+                .all(|t| !t.quantities.0.starts_with("particle_")
+                    && !t.quantities.1.starts_with("particle_")),
+            "({}) {twins:?}",
+            e.number
+        );
+    }
+    // The case this test is about: displays where x_C has a twin to be listed.
+    assert!(with_c > 0);
+}

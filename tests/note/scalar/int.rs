@@ -59,7 +59,9 @@ fn int_forwards_bigint_division_parity_and_lcm() {
         assert_eq!((q.0, r.0), x.div_rem(&y));
         assert_eq!(a.lcm(&b).0, x.lcm(&y));
         assert_eq!(a.gcd(&b).0, x.gcd(&y));
-        assert_eq!(a.is_even(), x.is_even());
+        assert_eq!((a.is_even(), a.is_odd()), (x.is_even(), x.is_odd()));
+        assert_eq!(a.is_multiple_of(&b), x.is_multiple_of(&y));
+        assert!(Int(&x * &y).is_multiple_of(&b));
         assert_eq!(a.abs().0, x.abs());
         assert_eq!((&a % &b).0, &x % &y);
         assert_eq!(a.to_string().parse::<Int>().map(|n| n.0), Ok(x));
