@@ -15,6 +15,13 @@ fn labels_and_sections_are_read_from_headings() {
         Some(1003)
     );
     assert!(heading_label("(0) Zero").is_some_and(|x| x.0.is_err()));
+    // Numbers run below the extensions' base, 1000, in both series: (999) and (P999) are the
+    // last, (1000) and (P1000) are refused (a (P1000) would take the number 2000).
+    let number = |h| heading_label(h).map(|x| x.0);
+    assert_eq!(number("(999) Last"), Some(Ok(999)));
+    assert_eq!(number("(P999) Last"), Some(Ok(1999)));
+    assert!(number("(1000) Too far").is_some_and(|n| n.is_err()));
+    assert!(number("(P1000) Too far").is_some_and(|n| n.is_err()));
     assert!(heading_label("(a) not a display").is_none());
     assert!(heading_label("Title (3)").is_none());
     assert_eq!(
