@@ -31,3 +31,31 @@ fn the_notes_vocabulary_reads() {
     assert_eq!(unicode(r"-\frac{2ml^2 \dot{\theta}}{3}"), "−2ml²θ̇/3");
     // Every display of the note: tests/note/print/units.rs.
 }
+
+/// Every Greek letter the reader knows comes out as its Unicode letter: the lowercase ones
+/// from U+03B1 (α) in alphabet order, the capitals from U+0391 (Α). An unknown command stays
+/// as written.
+#[test]
+fn unicode_reads_each_greek_letter_as_its_code_point() {
+    let lower = [
+        ("alpha", 0x3B1),
+        ("beta", 0x3B2),
+        ("epsilon", 0x3B5),
+        ("theta", 0x3B8),
+        ("lambda", 0x3BB),
+        ("mu", 0x3BC),
+        ("pi", 0x3C0),
+        ("rho", 0x3C1),
+        ("sigma", 0x3C3),
+        ("tau", 0x3C4),
+        ("phi", 0x3C6),
+        ("psi", 0x3C8),
+        ("omega", 0x3C9),
+    ];
+    let upper = [("Gamma", 0x393), ("Delta", 0x394), ("Omega", 0x3A9)];
+    for (name, code) in lower.into_iter().chain(upper) {
+        let letter = char::from_u32(code).unwrap().to_string();
+        assert_eq!(unicode(&format!("\\{name}")), letter, "\\{name}");
+    }
+    assert_eq!(unicode(r"\zeta"), r"\zeta");
+}

@@ -32,3 +32,20 @@ fn monomial_content_divides() {
     assert_eq!(g, vec![(var("m_test", "m"), 2)]);
     assert_eq!(p.div_mono(&g), &Poly::var(S) + &m);
 }
+
+/// A power of c is reduced by the binomial theorem: c⁴ = (1 − s²)² = 1 − 2s² + s⁴ and
+/// 3c⁷ = 3c (1 − s²)³ = 3c − 9s²c + 9s⁴c − 3s⁶c, written out here by hand.
+#[test]
+fn add_reduced_term_expands_a_power_of_c_by_the_binomial_theorem() {
+    let (s, c) = (Poly::var(S), Poly::var(C));
+    let s2 = &s * &s;
+    let (s4, s6) = (&s2 * &s2, &(&s2 * &s2) * &s2);
+    let mut c4 = Poly::zero();
+    c4.add_reduced_term(vec![(C, 4)], Coeff::int(1));
+    assert_eq!(c4, &(&int(1) - &s2.scale(&Coeff::int(2))) + &s4);
+    let mut c7 = Poly::zero();
+    c7.add_reduced_term(vec![(C, 7)], Coeff::int(3));
+    let by_hand = &(&(&int(3) - &s2.scale(&Coeff::int(9))) + &s4.scale(&Coeff::int(9)))
+        - &s6.scale(&Coeff::int(3));
+    assert_eq!(c7, &by_hand * &c);
+}

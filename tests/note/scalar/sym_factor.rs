@@ -46,3 +46,24 @@ fn an_irreducible_sum_stays_whole_and_every_form_expands_back() {
         assert_eq!(f.expand(), x.num, "{}", f.render(false));
     }
 }
+
+/// Two factors in disjoint variables with coefficients other than ±1 are found:
+/// (2m + 3)(5l + 7) expands to 10ml + 14m + 15l + 21, and no entry of its coefficient matrix is
+/// ±1, so the rank-one test must compare cross products, not quotients.
+#[test]
+fn factor_splits_a_product_whose_coefficients_are_not_units() {
+    let (m, l) = (v("m"), v("l"));
+    let x = (Sym::int(2) * m + Sym::int(3)) * (Sym::int(5) * l + Sym::int(7));
+    let f = factor(&x.num).expect("a product");
+    assert_eq!(f.factors.len(), 2, "{}", f.render(false));
+    assert_eq!(f.expand(), x.num);
+}
+
+/// (1 − s²)², stored reduced as s⁴ − 2s² + 1, homogenises through (s² + c²)² to c⁴.
+#[test]
+fn homogenises_a_square_of_one_minus_s_squared_to_c_to_the_fourth() {
+    let s = Sym::sin();
+    let one_minus = Sym::int(1) - s.clone() * s;
+    let x = one_minus.clone() * one_minus;
+    assert_eq!(factored_text(&x), "c^4");
+}
