@@ -274,35 +274,42 @@ pub fn slipping_breaks_eq42(k: Corner) -> bool {
 
 /// Sec. A.6: Jensen's methods give three distinct angular momenta on the ladder (L_C for 1 and 2,
 /// L'_C for 3 and 4, L_cm for 5), and only method 1's L_C is none of sec. 2's L_A, L_B, L'_C,
-/// L'_D, L'_E.
-pub fn three_distinct_methods() -> (bool, bool) {
+/// L'_D, L'_E. `methods` are the angular momenta of methods 1, 3 and 5 as the note names them:
+/// [`JENSEN_METHODS`].
+pub fn three_distinct_methods(methods: [(Corner, AngularMomentum); 3]) -> (bool, bool) {
     use AngularMomentum::{Absolute, Relative};
     let mut three = true;
     let mut only_one_new = true;
     for (l, s) in super::states(Kinematic) {
-        let at = |k, d| angular_momentum_about(&Reference::Corner(k), d, &l, &s);
-        let (m1, m3, m5) = (
-            at(Corner::C, Absolute),
-            at(Corner::C, Relative),
-            at(Corner::B, Absolute),
-        );
+        let at = |(k, d): (Corner, AngularMomentum)| {
+            angular_momentum_about(&Reference::Corner(k), d, &l, &s)
+        };
+        let [m1, m3, m5] = methods.map(at);
         three &= m1 != m3 && m3 != m5 && m1 != m5;
         let sec2 = [
-            at(Corner::A, Absolute),
-            m5.clone(),
-            m3.clone(),
-            at(Corner::D, Relative),
-            at(Corner::E, Relative),
-        ];
+            (Corner::A, Absolute),
+            (Corner::B, Absolute),
+            (Corner::C, Relative),
+            (Corner::D, Relative),
+            (Corner::E, Relative),
+        ]
+        .map(at);
         only_one_new &= sec2.iter().all(|x| *x != m1) && sec2.contains(&m3) && sec2.contains(&m5);
     }
     (three, only_one_new)
 }
 
+/// The angular momenta of Jensen's methods 1, 3 and 5 (sec. A.6): L_C, L'_C and L_cm (B).
+pub const JENSEN_METHODS: [(Corner, AngularMomentum); 3] = [
+    (Corner::C, AngularMomentum::Absolute),
+    (Corner::C, AngularMomentum::Relative),
+    (Corner::B, AngularMomentum::Absolute),
+];
+
 /// The claims of this module.
 pub fn claims() -> Vec<Claim> {
     let ok = Claim::checked;
-    let (three, only_one) = three_distinct_methods();
+    let (three, only_one) = three_distinct_methods(JENSEN_METHODS);
     let systems = general_systems();
     vec![
         ok("sec. 2.2", "(any system, any point) L_P and L'_P are the orbital part of the centre of mass plus the spin L_cm", orbital_plus_spin(|s, _| s.cm_point())),

@@ -113,7 +113,7 @@ fn appendix_checks_see_a_moving_point_and_a_perturbed_system() {
         cm_needs_no_coordinate_force, eq77_is_eq37, eq85_is_eq38, eq88_follows, eq90_is_eq40,
         fixed_point_law, fixed_point_same_l, general_systems, kinetic_energy_splits,
         method3_is_sec_2_4, method5_is_about_b, slipping_breaks_eq42, three_distinct_methods,
-        Systems,
+        Systems, JENSEN_METHODS,
     };
     /// The systems, each changed by `f`.
     fn changed(
@@ -155,7 +155,21 @@ fn appendix_checks_see_a_moving_point_and_a_perturbed_system() {
     assert!(method5_is_about_b(Corner::B) && !method5_is_about_b(Corner::C));
     assert!(method3_is_sec_2_4(Corner::C) && !method3_is_sec_2_4(Corner::D));
     assert!(slipping_breaks_eq42(Corner::C) && !slipping_breaks_eq42(Corner::E));
-    assert_eq!(three_distinct_methods(), (true, true));
+    assert_eq!(three_distinct_methods(JENSEN_METHODS), (true, true));
+    // Method 5 taken as L'_C (two methods alike), or method 1 as sec. 2's L_A (nothing new).
+    use sliding_ladder::ladder::analysis::AngularMomentum::{Absolute, Relative};
+    let alike = [
+        (Corner::C, Absolute),
+        (Corner::C, Relative),
+        (Corner::C, Relative),
+    ];
+    assert!(!three_distinct_methods(alike).0);
+    let nothing_new = [
+        (Corner::A, Absolute),
+        (Corner::C, Relative),
+        (Corner::B, Absolute),
+    ];
+    assert_eq!(three_distinct_methods(nothing_new), (true, false));
 }
 
 /// The split of L_P and L'_P holds about the centre of mass and fails about a point at rest at
