@@ -76,3 +76,22 @@ fn particle_system_planar_rigid_moves_every_particle_with_one_rigid_turn() {
         }
     }
 }
+
+/// `RawParticles::draw` gives 1 to 8 particles, each with its values (the mass first, log-uniform
+/// over [10⁻³, 10³]) and the point P its own EXTRA, and nothing more.
+#[test]
+fn raw_particles_draw_gives_each_particle_and_the_point_their_values() {
+    use rand::SeedableRng;
+    use sliding_ladder::registry::sample::RawParticles;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(222);
+    for _ in 0..200 {
+        let r = RawParticles::draw(&mut rng);
+        assert!((1..=8).contains(&r.n), "{}", r.n);
+        assert_eq!(r.values.len(), r.n * PER_PARTICLE + EXTRA);
+        for (i, v) in r.values.iter().enumerate() {
+            let mass = i < r.n * PER_PARTICLE && i % PER_PARTICLE == 0;
+            let range = if mass { 1e-3..=1e3 } else { -10.0..=10.0 };
+            assert!(range.contains(v), "value {i} = {v}");
+        }
+    }
+}

@@ -303,3 +303,23 @@ fn planted_dimension_of_t_is_caught() {
         "{found:?}"
     );
 }
+
+/// The declared dimensions of the draws (t, m, l, g, θ̇, θ̈, θ⃛), held to what each quantity is:
+/// t a pure number, m a mass, l a length; each rate of θ is the one before over a time, θ̇ T a
+/// pure angle, and g that of l θ̈. (Nothing downstream reads θ⃛'s dimension: a wrong sign of
+/// its exponent passed every check before this test.)
+#[test]
+fn ladder_draw_dimensions_are_each_the_rate_of_the_one_before() {
+    let [t, m, l, g, rate, accel, jerk] = ladder_draw_dimensions();
+    let of = |x: Dim| x.dimension();
+    let time = d(0, 0, 1);
+    assert_eq!(of(t), Some(Dimension::new(0, 0, 0)));
+    assert_eq!((of(m), of(l.clone())), (of(d(1, 0, 0)), of(d(0, 1, 0))));
+    assert_eq!(
+        of(rate.clone() * time.clone()),
+        Some(Dimension::new(0, 0, 0))
+    );
+    assert_eq!(of(accel.clone() * time.clone()), of(rate));
+    assert_eq!(of(jerk * time), of(accel.clone()));
+    assert_eq!(of(g), of(l * accel));
+}
