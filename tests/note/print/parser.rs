@@ -79,3 +79,21 @@ fn a_braced_power_parses_as_the_bare_one() {
     let err = parse_expr(r"l^{n}").unwrap_err();
     assert!(err.contains("integer power"), "{err}");
 }
+
+/// Only a bold capital takes a point in parentheses as part of its name (Milne's H(O), H(G′)):
+/// a plain symbol before (C) is a product with C.
+#[test]
+fn symbol_takes_a_point_only_after_a_bold_capital() {
+    assert_eq!(
+        parse_expr(r"\mathbf{H}(O)").unwrap(),
+        Expr::Sym("\\mathbf{H}(O)".into())
+    );
+    assert_eq!(
+        parse_expr(r"\mathbf{H}(G')").unwrap(),
+        Expr::Sym("\\mathbf{H}(G')".into())
+    );
+    assert_eq!(
+        parse_expr(r"\tau(C)").unwrap(),
+        Expr::Mul(sym("\\tau"), sym("C"))
+    );
+}
