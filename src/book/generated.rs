@@ -143,7 +143,7 @@ fn claim_row(c: &crate::verify::claims::Claim, problems: &mut Vec<String>) -> St
     format!(
         "<tr><td>{}</td><td>{}</td><td>{verdict}</td></tr>\n",
         esc(c.location),
-        esc(c.claim)
+        esc(&c.claim)
     )
 }
 

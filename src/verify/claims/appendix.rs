@@ -107,9 +107,9 @@ pub fn cm_needs_no_coordinate_force(systems: &Systems) -> bool {
     })
 }
 
-/// Sec. B.7: (85) is the first form of (38) rearranged: both residuals vanish. `k85` and `k38`
-/// are the coefficients of v_P × m v_cm as the two print it (+1 in (85), −1 in (38)).
-pub fn eq85_is_eq38(k85: i64, k38: i64) -> bool {
+/// Sec. B.7: (85) is the first form of (38) rearranged: both residuals vanish. `signs` are the
+/// signs of v_P × m v_cm as (85) and (38) print it (+1, −1).
+pub fn eq85_is_eq38(signs: (i64, i64)) -> bool {
     every(|s, p| {
         let m = s.total_mass();
         let d_l = rate_vec::<Q>(&s.along_motion().angular_momentum());
@@ -117,8 +117,8 @@ pub fn eq85_is_eq38(k85: i64, k38: i64) -> bool {
             p.v.cross(&s.cm_velocity().scale(&m)),
             p.x.cross(&s.cm_acceleration().scale(&m)),
         );
-        let r85 = d_l.clone() - (d_l_p(s, p) + v_p_mv.scale(&Q::int(k85)) + x_p_ma.clone());
-        let r38 = d_l_p(s, p) - (d_l - x_p_ma + v_p_mv.scale(&Q::int(k38)));
+        let r85 = d_l.clone() - (d_l_p(s, p) + v_p_mv.scale(&Q::int(signs.0)) + x_p_ma.clone());
+        let r38 = d_l_p(s, p) - (d_l - x_p_ma + v_p_mv.scale(&Q::int(signs.1)));
         r85 == Vec3::zero() && r38 == Vec3::zero()
     })
 }
@@ -277,7 +277,6 @@ pub fn slipping_breaks_eq42(k: Corner) -> bool {
 /// L'_D, L'_E. `methods` are the angular momenta of methods 1, 3 and 5 as the note names them:
 /// [`JENSEN_METHODS`].
 pub fn three_distinct_methods(methods: [(Corner, AngularMomentum); 3]) -> (bool, bool) {
-    use AngularMomentum::{Absolute, Relative};
     let mut three = true;
     let mut only_one_new = true;
     for (l, s) in super::states(Kinematic) {
@@ -286,14 +285,7 @@ pub fn three_distinct_methods(methods: [(Corner, AngularMomentum); 3]) -> (bool,
         };
         let [m1, m3, m5] = methods.map(at);
         three &= m1 != m3 && m3 != m5 && m1 != m5;
-        let sec2 = [
-            (Corner::A, Absolute),
-            (Corner::B, Absolute),
-            (Corner::C, Relative),
-            (Corner::D, Relative),
-            (Corner::E, Relative),
-        ]
-        .map(at);
+        let sec2 = super::sec2::SEC2_ANALYSES.map(at);
         only_one_new &= sec2.iter().all(|x| *x != m1) && sec2.contains(&m3) && sec2.contains(&m5);
     }
     (three, only_one_new)
@@ -325,7 +317,7 @@ pub fn claims() -> Vec<Claim> {
         ok("sec. 2.1", "the kinetic energy is that of the centre-of-mass motion plus that relative to it (any system), the latter I_cm θ̇²/2 on the ladder", kinetic_energy_splits(crate::ladder::energy::moment_of_inertia_cm)),
         ok("sec. B.5", "(any system) (77) is the same as (37)", eq77_is_eq37((-1, 1))),
         ok("sec. B.8", "(any system) (84) in (87) gives (88): at x_cm = 0, dL/dt = dL'_cm/dt (elsewhere not)", eq88_follows(&systems)),
-        ok("sec. B.7", "(any system) (85) is the first form of (38) rearranged", eq85_is_eq38(1, -1)),
+        ok("sec. B.7", "(any system) (85) is the first form of (38) rearranged", eq85_is_eq38((1, -1))),
         ok("sec. B.9", "(any system) (90) is (40) in another form, and reduces to (89) at x_P = 0", eq90_is_eq40(1)),
     ]
 }

@@ -29,6 +29,8 @@ pub mod rigid_e;
 pub mod rolling;
 pub mod sec2;
 
+use std::borrow::Cow;
+
 type Q = Rational;
 
 /// One claim of the note's prose.
@@ -36,8 +38,8 @@ type Q = Rational;
 pub struct Claim {
     /// Where in the note.
     pub location: &'static str,
-    /// The claim, in our words.
-    pub claim: &'static str,
+    /// The claim, in our words (written from the check's printed input where it has one).
+    pub claim: Cow<'static, str>,
     /// For a prose erratum: what the note prints, and the correction.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub erratum: Option<(&'static str, &'static str)>,
@@ -62,10 +64,14 @@ pub struct Claim {
 
 impl Claim {
     /// A claim that the note states correctly; `holds` is its check's verdict.
-    pub fn checked(location: &'static str, claim: &'static str, holds: bool) -> Claim {
+    pub fn checked(
+        location: &'static str,
+        claim: impl Into<Cow<'static, str>>,
+        holds: bool,
+    ) -> Claim {
         Claim {
             location,
-            claim,
+            claim: claim.into(),
             erratum: None,
             holds,
             printed_fails: None,
@@ -78,7 +84,7 @@ impl Claim {
     /// correction (shown holding when `holds`).
     pub fn erratum(
         location: &'static str,
-        claim: &'static str,
+        claim: impl Into<Cow<'static, str>>,
         (printed, corrected): (&'static str, &'static str),
         holds: bool,
         printed_fails: bool,

@@ -52,6 +52,20 @@ pub fn coordinates_of_points(claimed: &[(Corner, i64, i64)]) -> bool {
     })
 }
 
+/// The coordinates in `claimed` as the note writes them: `C = (0, 2y_cm)`.
+pub fn coordinates_sentence(claimed: &[(Corner, i64, i64)]) -> String {
+    let term = |n: i64, of: &str| match n {
+        0 => "0".to_string(),
+        1 => of.to_string(),
+        n => format!("{n}{of}"),
+    };
+    let points: Vec<String> = claimed
+        .iter()
+        .map(|&(k, a, b)| format!("{} = ({}, {})", k.name(), term(a, "x_cm"), term(b, "y_cm")))
+        .collect();
+    points.join(", ")
+}
+
 /// The coordinates of B, C, D and E as secs. 2.3-2.6 print them, in multiples of (x_cm, y_cm).
 pub const PRINTED_COORDINATES: [(Corner, i64, i64); 4] = [
     (Corner::B, 1, 1),
@@ -116,6 +130,16 @@ pub fn footnote_3(c10: &Q) -> bool {
     derivative && conserved
 }
 
+/// The angular momentum each of sec. 2's analyses takes: L_A about A, L_B about B, and L' about
+/// C, D and E (secs. 2.2-2.6).
+pub const SEC2_ANALYSES: [(Corner, AngularMomentum); 5] = [
+    (Corner::A, AngularMomentum::Absolute),
+    (Corner::B, AngularMomentum::Absolute),
+    (Corner::C, AngularMomentum::Relative),
+    (Corner::D, AngularMomentum::Relative),
+    (Corner::E, AngularMomentum::Relative),
+];
+
 /// Secs. 2.2-2.6 and A.1 ("which again leads to the equation of motion (5)"): the torque
 /// analysis about `k` with angular momentum `def`, solved for θ̈, gives (5).
 pub fn leads_to_eq5(k: Corner, def: AngularMomentum) -> bool {
@@ -134,11 +158,9 @@ pub fn leads_to(k: Corner, def: AngularMomentum, eq5: fn(&Ladder<Q>, &State<Q>) 
 pub fn claims() -> Vec<Claim> {
     use AngularMomentum::{Absolute, Relative};
     let ok = Claim::checked;
-    let sec2_analyses = leads_to_eq5(Corner::A, Absolute)
-        && leads_to_eq5(Corner::B, Absolute)
-        && leads_to_eq5(Corner::C, Relative)
-        && leads_to_eq5(Corner::D, Relative)
-        && leads_to_eq5(Corner::E, Relative);
+    let sec2_analyses = SEC2_ANALYSES
+        .into_iter()
+        .all(|(k, def)| leads_to_eq5(k, def));
     let i13 = all(Kinematic, |l, _| {
         eq13_moment_of_inertia_about_corner(l)[1]
             == moment_of_inertia_cm(l) + l.m.clone() * l.l.clone() * l.l.clone()
@@ -146,7 +168,7 @@ pub fn claims() -> Vec<Claim> {
     vec![
         ok("sec. 2.2", "the spin about the centre of mass is I_cm θ̇ = ml²θ̇/3, opposite in sense to the orbital −ml²θ̇", spin_and_sense(moment_of_inertia_cm)),
         ok("sec. 2.2 (13)", "A, C, D, E are each at distance l from B, so the parallel-axis theorem gives one I = I_cm + ml² for all four", [Corner::A, Corner::C, Corner::D, Corner::E].into_iter().all(at_distance_l) && i13),
-        ok("secs. 2.3-2.6", "B is the centre of mass; C = (0, 2y_cm), D = (2x_cm, 0), E = (2x_cm, 2y_cm)", coordinates_of_points(&PRINTED_COORDINATES)),
+        Claim::checked("secs. 2.3-2.6", coordinates_sentence(&PRINTED_COORDINATES), coordinates_of_points(&PRINTED_COORDINATES)),
         ok("secs. 2.4, 2.5", "about any point fixed on the ladder L'_P = I_P θ̇ (why L_C, L_D are I θ̇)", rigid_about_points_on_ladder(Relative)),
         ok("sec. 2.6", "E is not on the ladder", off_the_ladder(Corner::E)),
         ok("sec. 2.6", "(27) is 'as for A': L'_E = L_A", relative_l_is_l_a(Corner::E)),

@@ -144,7 +144,7 @@ fn appendix_checks_see_a_moving_point_and_a_perturbed_system() {
     assert!(cm_needs_no_coordinate_force(&systems) && !cm_needs_no_coordinate_force(&cm_at_rest));
     assert!(eq88_follows(&systems) && !eq88_follows(&centred));
     // A printed sign or coefficient changed in one form (the other kept) fails.
-    assert!(eq85_is_eq38(1, -1) && !eq85_is_eq38(1, 1) && !eq85_is_eq38(-1, -1));
+    assert!(eq85_is_eq38((1, -1)) && !eq85_is_eq38((1, 1)) && !eq85_is_eq38((-1, -1)));
     assert!(eq77_is_eq37((-1, 1)) && !eq77_is_eq37((1, 1)) && !eq77_is_eq37((-1, -1)));
     assert!(eq90_is_eq40(1) && !eq90_is_eq40(-1));
     assert!(kinetic_energy_splits(moment_of_inertia_cm));
@@ -198,7 +198,9 @@ fn contact_force_needed_sees_which_point_the_wall_force_turns() {
 /// The printed coordinates hold, and a wrong multiple in either coordinate alone fails.
 #[test]
 fn coordinates_of_points_fails_a_wrong_x_or_y() {
-    use sliding_ladder::verify::claims::sec2::{coordinates_of_points, PRINTED_COORDINATES};
+    use sliding_ladder::verify::claims::sec2::{
+        coordinates_of_points, coordinates_sentence, PRINTED_COORDINATES,
+    };
     assert!(coordinates_of_points(&PRINTED_COORDINATES));
     assert!(coordinates_of_points(&[(Corner::A, 0, 0)]));
     assert!(!coordinates_of_points(&[(Corner::C, 0, 1)]));
@@ -207,6 +209,11 @@ fn coordinates_of_points_fails_a_wrong_x_or_y() {
         (Corner::E, 2, 2),
         (Corner::B, 2, 2)
     ]));
+    // The claim's sentence is written from the same table, in the note's wording.
+    assert_eq!(
+        coordinates_sentence(&PRINTED_COORDINATES[1..]),
+        "C = (0, 2y_cm), D = (2x_cm, 0), E = (2x_cm, 2y_cm)"
+    );
 }
 
 /// `Claim::verdict` in words: a false printed wording is called imprecise only when it is
