@@ -336,11 +336,6 @@ fn record_float(rep: &mut CheckReport, values: Vec<Chain<f64>>, bounds: Vec<Chai
     }
 }
 
-/// Convenience for tests: the value of a side as f64.
-pub fn side_f64<S: Scalar>(s: &super::Side<S>) -> f64 {
-    s.value.to_f64()
-}
-
 /// One float case of a ladder check at a given raw state: (scaled residual, worst side).
 pub fn ladder_float_case(
     sort: LadderSample,

@@ -251,10 +251,6 @@ impl Poly {
         }
         out
     }
-    /// Total degree in the variable `v`.
-    pub fn degree_in(&self, v: Var) -> u32 {
-        self.terms.keys().map(|m| exponent(m, v)).max().unwrap_or(0)
-    }
 }
 
 impl std::ops::Add for &Poly {

@@ -112,3 +112,51 @@ fn full_sweep_catch_rate() {
     }
     assert!(missed.is_empty());
 }
+
+/// An edit that changes no form's value is neutral, not missed: (5) with its factors
+/// reordered states the same equation. The same edit with a changed coefficient is caught.
+#[test]
+fn run_injection_calls_an_edit_that_changes_no_value_neutral() {
+    let e = equations().into_iter().find(|e| e.number == 5).unwrap();
+    let edit = |latex: &str| Injection {
+        number: 5,
+        typo: Typo::Coefficient,
+        latex: latex.into(),
+    };
+    let same = edit(r"\ddot{\theta} = \sin \theta \frac{3g}{4l}");
+    assert_eq!(run_injection(&e, &same, &quick()), Detection::Neutral);
+    let changed = edit(r"\ddot{\theta} = \sin \theta \frac{3g}{5l}");
+    assert!(matches!(
+        run_injection(&e, &changed, &quick()),
+        Detection::Caught(_)
+    ));
+}
+
+/// The evaluator differentiates along the motion three levels deep (θ⃛), no further: a fourth
+/// derivative of θ in a print is reported as unevaluable, with the reason, not given a value.
+/// (The third-derivative print is evaluated; whether it holds is not asked here: the ladder's
+/// draws leave θ⃛ free.)
+#[test]
+fn a_derivative_nested_four_deep_is_reported_not_evaluated() {
+    use sliding_ladder::registry::print_check::check_print;
+    let e = equations().into_iter().find(|e| e.number == 5).unwrap();
+    let third = check_print(
+        &e,
+        r"\frac{d}{dt}\frac{d}{dt}\frac{d}{dt}\dot{\theta} = \frac{3g}{4l} \cos \theta \dot{\theta}",
+        &quick(),
+    );
+    assert!(third.unparsed.is_empty(), "{third:?}");
+    assert_eq!(third.parsed, 2);
+    let fourth = check_print(
+        &e,
+        r"\frac{d}{dt}\frac{d}{dt}\frac{d}{dt}\frac{d}{dt}\dot{\theta} = \frac{3g}{4l} \cos \theta \dot{\theta}",
+        &quick(),
+    );
+    assert!(
+        fourth
+            .unparsed
+            .iter()
+            .any(|u| u.contains("deeper than three")),
+        "{fourth:?}"
+    );
+}

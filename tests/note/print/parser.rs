@@ -97,3 +97,31 @@ fn symbol_takes_a_point_only_after_a_bold_capital() {
         Expr::Mul(sym("\\tau"), sym("C"))
     );
 }
+
+/// An aligned environment's row breaks and alignment marks carry no mathematics: a chain
+/// broken over rows parses as the chain on one line, and so does a list of statements whose
+/// rows end in commas.
+#[test]
+fn display_and_chain_skip_row_breaks() {
+    let one_line = parse_display(r"x = l \sin \theta = 2y").unwrap();
+    let aligned =
+        parse_display(r"\begin{aligned} x &= l \sin \theta \\ &= 2y \end{aligned}").unwrap();
+    assert_eq!(aligned, one_line);
+    // A break after the relation, before the next form.
+    let broken_after = parse_display(r"x = \\ l \sin \theta = \\ 2y").unwrap();
+    assert_eq!(broken_after, one_line);
+    let two = parse_display(r"x = l, \quad y = 2").unwrap();
+    let rows = parse_display(r"\begin{aligned} x &= l, \\ \\ y &= 2 \end{aligned}").unwrap();
+    assert_eq!(rows, two);
+    assert_eq!(rows.statements.len(), 2);
+}
+
+/// A subscript in nested braces is read to its matching brace.
+#[test]
+fn group_text_reads_nested_braces_whole() {
+    let e = parse_expr(r"x_{a{b}c} + y").unwrap();
+    assert!(
+        matches!(&e, Expr::Add(a, _) if **a == Expr::Sym("x_{a{b}c}".into())),
+        "{e:?}"
+    );
+}

@@ -59,3 +59,22 @@ fn unicode_reads_each_greek_letter_as_its_code_point() {
     }
     assert_eq!(unicode(r"\zeta"), r"\zeta");
 }
+
+/// Every digit, the minus sign and the index i come out as Unicode's superscript or subscript
+/// character (U+2070… and U+2080…, with ¹ ² ³ and ᵢ where Unicode put them); a script with a
+/// character Unicode has no script form of stays as `^…` or `_… `.
+#[test]
+fn script_writes_unicode_superscripts_and_subscripts() {
+    let sup = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    for (d, s) in sup.iter().enumerate() {
+        assert_eq!(unicode(&format!("x^{{{d}}}")), format!("x{s}"));
+    }
+    assert_eq!(unicode("x^{-1}"), "x⁻¹");
+    assert_eq!(unicode("x^{−2}"), "x⁻²");
+    for (d, s) in ['₀', '₁', '₂', '₃'].iter().enumerate() {
+        assert_eq!(unicode(&format!("x_{{{d}}}")), format!("x{s}"));
+    }
+    assert_eq!(unicode("m_i"), "mᵢ");
+    assert_eq!(unicode("m_{4} + 1"), "m_4 + 1");
+    assert_eq!(unicode("x^{a}"), "x^a");
+}

@@ -29,3 +29,12 @@ fn exact_integers_carry_no_error() {
     assert_eq!(r.e, 12.0); // the rounding charge of the product, |12|·u, not zero
     assert!(Bound::int(3).e == 0.0);
 }
+
+/// `to_f64` is the float value, without its error bound.
+#[test]
+fn bound_to_f64_is_the_value() {
+    let r = Bound::int(1) / Bound::int(3);
+    assert_eq!(r.to_f64(), 1.0 / 3.0);
+    assert!(r.e > 0.0);
+    assert_eq!(Bound::int(-7).to_f64(), -7.0);
+}

@@ -90,6 +90,9 @@ fn check_pair(a: &Rational, b: &Rational) {
         );
     }
     assert_eq!(ca.cmp(&cb), a.cmp(b), "{a} cmp {b}");
+    assert_eq!(ca.partial_cmp(&cb), Some(a.cmp(b)), "{a} partial_cmp {b}");
+    assert_eq!((-ca.clone()).to_big(), -a, "owned neg of {a}");
+    assert_eq!(format!("{ca:?}"), a.to_string(), "Debug of {a}");
     assert_eq!(ca.is_negative(), a < &Rational::zero());
     assert_eq!(ca.is_integer(), a.is_integer());
     assert_eq!(
@@ -119,7 +122,8 @@ fn every_operation_equals_the_big_rational_one_at_random_values() {
 
 #[test]
 fn overflow_leaves_the_machine_word_and_comes_back() {
-    let max = Coeff::int(i64::MAX);
+    let max = Coeff::from(i64::MAX);
+    assert_eq!(max.to_big(), Rational::from_integer(Int::from(i64::MAX)));
     let over = &max + &Coeff::int(1);
     assert!(matches!(over, Coeff::Big(_)), "{over:?}");
     assert_eq!(

@@ -15,3 +15,10 @@ fn degrees_of_the_circle_parametrisation() {
     let r = s * s + c * c - one;
     assert!(r.num >= 4, "{r:?}");
 }
+
+/// A degree has no numerical value: `to_f64` is NaN.
+#[test]
+fn degree_to_f64_is_not_a_number() {
+    assert!(Degree::variable().to_f64().is_nan());
+    assert!(Degree::int(2).to_f64().is_nan());
+}

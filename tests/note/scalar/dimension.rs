@@ -106,3 +106,10 @@ fn dimensions_parse_and_print() {
     assert_eq!(Dimension::NONE.to_string(), "1");
     assert_eq!(Dimension::LENGTH.pow(Ratio::new(1, 2)).to_string(), "L¹ᐟ²");
 }
+
+/// A dimension has no numerical value: `to_f64` is NaN.
+#[test]
+fn dimension_to_f64_is_not_a_number() {
+    assert!(Dim::new(1, 2, -2).to_f64().is_nan());
+    assert!(Dim::int(1).to_f64().is_nan());
+}

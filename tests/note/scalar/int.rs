@@ -82,3 +82,58 @@ fn rational_from_float_is_the_floats_exact_value() {
     assert_eq!(rational_from_float(f64::NAN), None);
     assert_eq!(rational_from_float(f64::INFINITY), None);
 }
+
+/// Every method `Int` implements for the num traits, held to `BigInt`'s on random values of
+/// up to 300 bits and on values at the edges of the machine types (0, ±1, ±2⁶³, 2⁶⁴, ±2¹²⁷,
+/// 2¹²⁸), where the conversions change from `Some` to `None`.
+#[test]
+fn int_forwards_every_num_trait_method_to_bigint() {
+    use num_traits::{FromPrimitive, Num, One, Zero};
+    let mut rng = ChaCha8Rng::seed_from_u64(39);
+    let one = BigInt::from(1);
+    let mut values: Vec<BigInt> = [0, 1, -1, 63, 64, 127, 128]
+        .iter()
+        .flat_map(|&k: &i32| {
+            let p = if k <= 1 { BigInt::from(k) } else { &one << k };
+            [p.clone(), -p.clone(), &p - 1, -&p + 1]
+        })
+        .collect();
+    for _ in 0..500 {
+        let bits = rng.gen_range(1..300);
+        values.push(rng.gen_bigint(bits));
+    }
+    for x in &values {
+        let a = Int(x.clone());
+        let y = rng.gen_bigint(90);
+        let b = Int(y.clone());
+        assert_eq!(format!("{a:?}"), format!("{x:?}"));
+        assert_eq!(BigInt::from(a.clone()), *x);
+        assert_eq!((-&a).0, -x);
+        assert_eq!((-a.clone()).0, -x);
+        assert_eq!(
+            Int::from_str_radix(&x.to_str_radix(7), 7).map(|n| n.0),
+            Ok(x.clone())
+        );
+        assert_eq!(a.abs_sub(&b).0, x.abs_sub(&y));
+        assert_eq!(a.signum().0, x.signum());
+        assert_eq!(
+            (a.is_positive(), a.is_negative()),
+            (x.is_positive(), x.is_negative())
+        );
+        assert_eq!(a.to_i64(), x.to_i64());
+        assert_eq!(a.to_u64(), x.to_u64());
+        assert_eq!(a.to_i128(), x.to_i128());
+        assert_eq!(a.to_u128(), x.to_u128());
+        assert_eq!(a.to_f64(), x.to_f64());
+        if let Some(n) = x.to_i64() {
+            assert_eq!(Int::from_i64(n).map(|n| n.0), Some(x.clone()));
+        }
+        if let Some(n) = x.to_u64() {
+            assert_eq!(Int::from_u64(n).map(|n| n.0), Some(x.clone()));
+        }
+        let f = x.to_f64().expect("a finite float");
+        assert_eq!(Int::from_f64(f).map(|n| n.0), BigInt::from_f64(f));
+    }
+    assert!(Int::zero().is_zero() && !Int::one().is_zero());
+    assert_eq!(Int::from_f64(f64::NAN), None);
+}

@@ -59,3 +59,13 @@ fn division_by_zero_is_undefined_and_stays_so() {
     }
     assert!((x - x).is_zero() && (x - x).is_defined());
 }
+
+/// Zero is the residue 0, and a residue has no real value: `to_f64` is NaN, never a number a
+/// float check could mistake for a value.
+#[test]
+fn modp_zero_is_the_residue_zero_and_has_no_float_value() {
+    assert_eq!(Modp::zero(), Modp::of(0));
+    assert!(Modp::zero().is_zero() && !Modp::int(1).is_zero());
+    assert_eq!(Modp::zero() + Modp::int(5), Modp::int(5));
+    assert!(Modp::int(3).to_f64().is_nan());
+}

@@ -216,8 +216,4 @@ impl Ode<9> for Cylinder {
     fn scale(&self, _y: &[f64; 9]) -> [f64; 9] {
         self.scale
     }
-
-    fn accel_uses_velocity(&self) -> bool {
-        true
-    }
 }
