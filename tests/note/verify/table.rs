@@ -201,6 +201,12 @@ fn filling_keeps_labels_formulas_and_every_word() {
     }
     // A line that fits is left as it is, spacing and all.
     assert_eq!(fill_line("  a   b", 100), "  a   b");
+    // A short line with no label column, too wide for a narrow terminal: it continues two
+    // columns right of its indent (the label search stops at the line's end).
+    assert_eq!(
+        fill_line("  one two three four", 10),
+        "  one two\n    three\n    four"
+    );
 }
 
 /// A label of two words (one space inside it) is one label: the text continues after the
