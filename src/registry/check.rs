@@ -165,9 +165,8 @@ pub fn run_check(check: &Check, cfg: &Config) -> CheckReport {
             run_particles(sort, f, cfg, &mut rng, &mut rep, &mut misprint_ok);
         }
     }
-    rep.exact_points = cfg.exact_points;
     rep.misprints = misprint_ok;
-    schwartz_zippel(&mut rep, cfg);
+    schwartz_zippel(&mut rep);
     rep
 }
 
@@ -217,6 +216,7 @@ fn run_ladder(
             || ladder_point(sort, f.modular, ints),
             || ladder_point(sort, f.exact, ints),
         );
+        rep.exact_points += 1;
         rep.exact_failures += usize::from(!pt.ok);
         note_misprints(misprint_ok, pt.misprints);
         if let Some((ok_off, here)) = pt.off {
@@ -269,6 +269,7 @@ fn run_floor(
             || floor_point(sort, f.modular, ints, motion),
             || floor_point(sort, f.exact, ints, motion),
         );
+        rep.exact_points += 1;
         rep.exact_failures += usize::from(!pt.ok);
         note_misprints(misprint_ok, pt.misprints);
         if let Some((ok_off, _)) = pt.off {
@@ -304,6 +305,7 @@ fn run_particles(
             || particle_point(sort, f.modular, n, &ints),
             || particle_point(sort, f.exact, n, &ints),
         );
+        rep.exact_points += 1;
         rep.exact_failures += usize::from(!pt.ok);
         note_misprints(misprint_ok, pt.misprints);
         let d = *degree_of[n].get_or_insert_with(|| {
@@ -315,13 +317,14 @@ fn run_particles(
     }
 }
 
-/// The Schwartz-Zippel bound of the exact points: (degree / set size)^points, and its log10
-/// over all points and over the rational points alone.
-fn schwartz_zippel(rep: &mut CheckReport, cfg: &Config) {
-    rep.sz_bound = (f64::from(rep.degree.max(1)) / EXACT_SET_SIZE).powi(cfg.exact_points as i32);
+/// The Schwartz-Zippel bound of the exact points evaluated: (degree / set size)^points, and its
+/// log10 over all points and over the rational points alone.
+fn schwartz_zippel(rep: &mut CheckReport) {
+    let points = rep.exact_points;
+    rep.sz_bound = (f64::from(rep.degree.max(1)) / EXACT_SET_SIZE).powi(points as i32);
     let per_point = (f64::from(rep.degree.max(1)) / EXACT_SET_SIZE).log10();
-    rep.sz_bound_log10 = cfg.exact_points as f64 * per_point;
-    rep.sz_bound_rational_log10 = cfg.exact_points.min(RATIONAL_POINTS) as f64 * per_point;
+    rep.sz_bound_log10 = points as f64 * per_point;
+    rep.sz_bound_rational_log10 = points.min(RATIONAL_POINTS) as f64 * per_point;
 }
 
 fn record_float(rep: &mut CheckReport, values: Vec<Chain<f64>>, bounds: Vec<Chain<Bound>>) {

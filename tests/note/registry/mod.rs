@@ -1,5 +1,6 @@
 //! `sliding_ladder::registry`: every display's checks at random states, exact points, proofs and units.
 
+mod check;
 mod complete;
 mod exact_point;
 mod fns;
