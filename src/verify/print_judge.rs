@@ -21,12 +21,11 @@ pub fn judge_with_print(e: &Equation, reports: &[CheckReport], cfg: &Config) -> 
 
 /// What the print alone, with no Rust check beside it, checked: its states, and for an on-shell
 /// display that it fails off the motion and where (the law step, found or held to `*Law:*`).
-fn print_alone(r: &mut EquationResult, e: &Equation, p: &PrintReport, cfg: &Config) -> Vec<String> {
+fn print_alone(r: &mut EquationResult, e: &Equation, p: &PrintReport) -> Vec<String> {
     let mut problems = Vec::new();
     use crate::registry::check::EXACT_SET_SIZE;
-    use crate::registry::print_check::PRINT_FLOAT_CASES;
     r.checks = vec![PRINT_ALONE];
-    r.cases = cfg.float_cases.min(PRINT_FLOAT_CASES);
+    r.cases = p.float_cases;
     r.exact_points = p.exact_points;
     r.exact_failures = p.exact_failures;
     r.exact = r.exact_points > 0 && p.exact_failures == 0;
@@ -79,7 +78,7 @@ pub fn judge_print(
 ) -> EquationResult {
     let p = crate::registry::print_check::check_print(e, latex, cfg);
     let alone = if e.checks.is_empty() {
-        print_alone(&mut r, e, &p, cfg)
+        print_alone(&mut r, e, &p)
     } else {
         Vec::new()
     };

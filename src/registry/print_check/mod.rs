@@ -83,7 +83,9 @@ pub struct PrintReport {
     pub off_shell_fails: Option<bool>,
     /// On-shell print: the `=` at which it breaks off the motion, when the same at every point.
     pub off_motion_breaks: Option<Vec<u32>>,
-    /// Exact points the print was evaluated at (on the motion).
+    /// Float states the print was evaluated at (counted as each is evaluated).
+    pub float_cases: usize,
+    /// Exact points the print was evaluated at (on the motion; counted as each is evaluated).
     pub exact_points: usize,
     /// Of those, the points where some chain's residual was not zero.
     pub exact_failures: usize,

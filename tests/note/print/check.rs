@@ -25,10 +25,19 @@ fn every_display_parses_evaluates_and_holds_as_printed() {
         let r = check_print(&e, e.latex(), &quick());
         forms += r.forms;
         parsed += r.parsed;
-        if r.parsed != r.forms || !r.problems.is_empty() || !r.matches_code {
+        // Every float state and exact point asked for was evaluated, and counted.
+        let counted = (r.float_cases, r.exact_points) == (20, 1);
+        if r.parsed != r.forms || !r.problems.is_empty() || !r.matches_code || !counted {
             bad.push(format!(
-                "({}) {}/{} {:?} {:?} {:?}",
-                e.number, r.parsed, r.forms, r.unparsed, r.problems, r.code_mismatches
+                "({}) {}/{} {:?} {:?} {:?} states {} points {}",
+                e.number,
+                r.parsed,
+                r.forms,
+                r.unparsed,
+                r.problems,
+                r.code_mismatches,
+                r.float_cases,
+                r.exact_points
             ));
         }
     }
@@ -114,4 +123,32 @@ fn registry_latex_matches_the_note() {
         found += 1;
     }
     assert_eq!(found, equations().len());
+}
+
+/// The print gets at most `PRINT_FLOAT_CASES` float states; alone (no Rust check beside it) every
+/// exact point asked for, beside a Rust check `PRINT_EXACT_POINTS`: the report counts what was
+/// evaluated, as the legend of `ladder verify` says.
+#[test]
+fn check_print_evaluates_and_counts_its_states() {
+    use sliding_ladder::registry::print_check::{PRINT_EXACT_POINTS, PRINT_FLOAT_CASES};
+    let many = Config {
+        float_cases: PRINT_FLOAT_CASES + 5,
+        exact_points: 3,
+        seed: 9,
+    };
+    let all = equations();
+    let beside = all
+        .iter()
+        .find(|e| !e.checks.is_empty())
+        .expect("a checked display");
+    let r = check_print(beside, beside.latex(), &many);
+    assert_eq!(
+        (r.float_cases, r.exact_points),
+        (PRINT_FLOAT_CASES, PRINT_EXACT_POINTS)
+    );
+    // The same display with its Rust checks taken away: the print alone.
+    let mut alone = beside.clone();
+    alone.checks.clear();
+    let r = check_print(&alone, alone.latex(), &many);
+    assert_eq!((r.float_cases, r.exact_points), (PRINT_FLOAT_CASES, 3));
 }

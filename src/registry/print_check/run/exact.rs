@@ -42,14 +42,14 @@ pub(super) fn exact_pass(
 ) -> (Vec<Rational>, Vec<(String, Rational)>) {
     let rust = sample_check(e).map(|c| c.eval);
     // Alone, the print gets every exact point of a check; beside a Rust check, one.
-    rep.exact_points = if e.checks.is_empty() {
+    let points = if e.checks.is_empty() {
         cfg.exact_points
     } else {
         cfg.exact_points.min(super::PRINT_EXACT_POINTS)
     };
     rep.degree = crate::registry::print_check::motion::degree(e, chains, sample);
     let mut found = Findings::default();
-    for k in 0..rep.exact_points {
+    for k in 0..points {
         let at = Point {
             e,
             chains,
@@ -62,6 +62,7 @@ pub(super) fn exact_pass(
                 at.particles(sort, rng, &mut found, &mut rep.exact_failures);
             }
         }
+        rep.exact_points += 1;
     }
     if let Some((label, residual)) = found.fail {
         rep.problems.push(format!(

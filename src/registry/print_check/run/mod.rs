@@ -136,6 +136,7 @@ fn float_pass(
             }
         };
         note_float(v, b, &mut worst, &mut failures);
+        rep.float_cases += 1;
     }
     if failures > 0 {
         rep.problems.push(format!(
