@@ -174,3 +174,17 @@ fn an_estimate_that_does_not_shrink_with_the_tolerance_allows_nothing() {
     j.next_estimate[3] = j.estimate[3] / 2.0;
     assert!(!j.converges(3) && !j.agrees());
 }
+
+/// The error norm's length ℓ = b + |ż₀|/Ω + g/Ω², by hand for the golf setup: b = 0.054 m,
+/// |ż₀|/Ω = 0.3/20 = 0.015 m, g/Ω² = 9.81/400 = 0.024525 m, so ℓ = 0.093525 m; the sink
+/// rate enters by its size (a rising start gives the same ℓ).
+#[test]
+fn setup_length_is_the_radius_plus_the_sink_and_sag_lengths() {
+    let golf = Setup::golf();
+    assert!((golf.length() - 0.093525).abs() <= 4.0 * f64::EPSILON * 0.093525);
+    let rising = Setup {
+        sink_rate: -golf.sink_rate,
+        ..golf
+    };
+    assert_eq!(rising.length(), golf.length());
+}
