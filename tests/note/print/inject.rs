@@ -160,3 +160,35 @@ fn a_derivative_nested_four_deep_is_reported_not_evaluated() {
         "{fourth:?}"
     );
 }
+
+/// The typos of (5), θ̈ = (3g/4l) sin θ, counted by hand: the coefficients 3 and 4 each raised
+/// by one, sin made cos, g and l each dropped from their product; no sign to flip. A display
+/// with cos gets the other direction: (10)'s cos θ made sin θ.
+#[test]
+fn injections_makes_every_typo_of_each_sort_in_a_display() {
+    let of = |n: u32| {
+        let e = equations().into_iter().find(|e| e.number == n).unwrap();
+        injections(n, e.latex())
+    };
+    let five = of(5);
+    let count = |t: Typo| five.iter().filter(|i| i.typo == t).count();
+    assert_eq!(
+        [
+            Typo::Coefficient,
+            Typo::Sign,
+            Typo::SinCos,
+            Typo::DropFactor
+        ]
+        .map(count),
+        [2, 0, 1, 2],
+        "{five:#?}"
+    );
+    let sin_to_cos = five.iter().find(|i| i.typo == Typo::SinCos).unwrap();
+    assert!(sin_to_cos.latex.contains(r"\cos") && !sin_to_cos.latex.contains(r"\sin"));
+    let ten = of(10);
+    assert!(
+        ten.iter()
+            .any(|i| i.typo == Typo::SinCos && i.latex.contains(r"\sin")),
+        "{ten:#?}"
+    );
+}

@@ -188,3 +188,60 @@ fn setup_length_is_the_radius_plus_the_sink_and_sag_lengths() {
     };
     assert_eq!(rising.length(), golf.length());
 }
+
+/// Each reading's rounding floor has the reading's dimension (height, returns, lows and radius
+/// a length; the return rate and slip a velocity; periods a time; the orbit rate a rate):
+/// rescale the setup's lengths by k and every length and velocity floor scales by k, the rest
+/// stay; rescale its time by 1/k (Ω, ż₀ × k, g × k², the run's length / k) and velocities and
+/// the orbit rate scale by k, times by 1/k, lengths stay.
+#[test]
+fn rounding_floor_has_each_readings_dimension() {
+    use sliding_ladder::verify::claims::golfer::compare::rounding_floor;
+    let golf = Setup::golf();
+    let (steps, run) = (1000, 2.0);
+    let base = rounding_floor(&golf, steps, run);
+    let k = 8.0; // a power of two: the scalings are exact
+    let longer = Setup {
+        ball: Ball {
+            a: golf.ball.a * k,
+            ..golf.ball
+        },
+        b: golf.b * k,
+        g: golf.g * k,
+        z0: golf.z0 * k,
+        sink_rate: golf.sink_rate * k,
+        ..golf
+    };
+    let faster = Setup {
+        g: golf.g * k * k,
+        orbit_rate: golf.orbit_rate * k,
+        sink_rate: golf.sink_rate * k,
+        ..golf
+    };
+    // Length, time exponents of each reading, in READINGS' order.
+    let dims = [
+        (1, 0),
+        (1, 0),
+        (1, -1),
+        (0, 1),
+        (1, 0),
+        (0, -1),
+        (1, -1),
+        (1, 0),
+    ];
+    let by_length = rounding_floor(&longer, steps, run);
+    let by_time = rounding_floor(&faster, steps, run / k);
+    for (i, (len, time)) in dims.iter().enumerate() {
+        let close = |a: f64, b: f64| (a - b).abs() <= 4.0 * f64::EPSILON * b.abs();
+        assert!(
+            close(by_length[i], base[i] * k.powi(*len)),
+            "{}: length",
+            READINGS[i]
+        );
+        assert!(
+            close(by_time[i], base[i] * k.powi(-*time)),
+            "{}: time",
+            READINGS[i]
+        );
+    }
+}
