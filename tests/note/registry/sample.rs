@@ -95,3 +95,36 @@ fn raw_particles_draw_gives_each_particle_and_the_point_their_values() {
         }
     }
 }
+
+/// A float ladder is built from its raw draw as `RawLadder` documents: the three unit-free
+/// numbers scale θ̇, θ̈, θ⃛ by the ladder's own rates √(g/l), g/l and (g/l)^{3/2} (times 3).
+/// By hand for m = 2, l = 4, g = 9 (√(g/l) = 3/2) and u = (1/2, −1/4, 1): θ̇ = 9/4,
+/// θ̈ = −27/16, θ⃛ = 81/8, all exact in binary. From rest, θ̇ is the energy's (10),
+/// √((3g/2l)(1 − cos θ)), to a few ulps.
+#[test]
+fn raw_ladder_build_scales_the_unit_draws_to_the_ladders_rates() {
+    use sliding_ladder::registry::sample::{LadderSample, RawLadder};
+    let raw = RawLadder {
+        theta: 0.7,
+        mlg: [2.0, 4.0, 9.0],
+        unit: [0.5, -0.25, 1.0],
+    };
+    let ((l, s), (_, sb)) = raw.build(LadderSample::Kinematic);
+    assert_eq!((l.m, l.l, l.g), (2.0, 4.0, 9.0));
+    assert_eq!((s.sin, s.cos), 0.7f64.sin_cos());
+    assert_eq!((s.rate, s.accel, s.jerk), (2.25, -1.6875, 10.125));
+    assert_eq!(sb.rate.v, s.rate);
+    let ((_, rest), _) = raw.build(LadderSample::OnShellFromRest);
+    let energy = (1.5 * 9.0 / 4.0 * (1.0 - 0.7f64.cos())).sqrt();
+    // Each side is a few roundings of a value of size `energy`; 1 − cos θ loses about
+    // 1/(1 − cos θ) ≈ 4.3 ulps more on the energy's side.
+    assert!(
+        (rest.rate - energy).abs() <= 16.0 * f64::EPSILON * energy,
+        "{} {energy}",
+        rest.rate
+    );
+    // On the motion θ̈ is (5)'s, (3g/4l) sin θ, whatever the draw.
+    let ((_, on), _) = raw.build(LadderSample::OnShell);
+    let eq5 = 0.75 * 9.0 / 4.0 * 0.7f64.sin();
+    assert!((on.accel - eq5).abs() <= 4.0 * f64::EPSILON * eq5);
+}
