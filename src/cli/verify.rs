@@ -21,7 +21,7 @@ pub struct VerifyArgs {
     /// Random float states per check.
     #[arg(long, default_value_t = Config::default().float_cases)]
     cases: usize,
-    /// Random exact rational points per check.
+    /// Random exact rational points per check (at least 1).
     #[arg(long, default_value_t = Config::default().exact_points)]
     exact_points: usize,
     /// Seed of the random states.
@@ -55,6 +55,13 @@ pub fn columns(width: Option<u16>) -> usize {
 
 /// Run `ladder verify` with its options.
 pub fn run(a: VerifyArgs) -> ExitCode {
+    // The exact points decide the exact verdict and find where an on-shell display breaks off
+    // the motion (its law step): with none, every on-shell display would fail for a reason that
+    // is not its own.
+    if a.exact_points == 0 {
+        eprintln!("ladder verify: --exact-points 0: at least 1 is needed (the exact verdict and each on-shell display's law step are found at exact points)");
+        return ExitCode::from(2);
+    }
     verify(
         a.json,
         &Config {

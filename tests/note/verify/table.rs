@@ -406,6 +406,33 @@ fn verify_only_runs_the_chosen_displays_and_exits_0_when_they_pass() {
         .expect("runs");
     assert_eq!(bad.status.code(), Some(2));
     assert_eq!(String::from_utf8_lossy(&bad.stderr).lines().count(), 1);
+    // So is asking for no exact point (the exact verdict and the law step need one); float
+    // states may be left out.
+    let run = |cases: &str, points: &str| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_ladder"))
+            .args([
+                "verify",
+                "--only",
+                "25",
+                "--cases",
+                cases,
+                "--exact-points",
+                points,
+            ])
+            .output()
+            .expect("runs")
+    };
+    for cases in ["0", "3"] {
+        let none = run(cases, "0");
+        assert_eq!(none.status.code(), Some(2));
+        let why = String::from_utf8_lossy(&none.stderr);
+        assert!(
+            why.lines().count() == 1 && why.contains("--exact-points"),
+            "{why}"
+        );
+        assert!(none.stdout.is_empty());
+    }
+    assert_eq!(run("0", "1").status.code(), Some(0));
 }
 
 /// `--only` picks rows beyond the note by label, and the note's by number, each list alone.
