@@ -327,7 +327,10 @@ fn schwartz_zippel(rep: &mut CheckReport) {
     rep.sz_bound_rational_log10 = points.min(RATIONAL_POINTS) as f64 * per_point;
 }
 
-fn record_float(rep: &mut CheckReport, values: Vec<Chain<f64>>, bounds: Vec<Chain<Bound>>) {
+/// Fold one float state's chains (values and their error bounds) into a report: the state is
+/// counted; it fails when its scaled residual ([`float_residual`]) exceeds [`TOLERANCE_FACTOR`]
+/// or is NaN (a value that overflowed must not pass); the worst residual and its side are kept.
+pub fn record_float(rep: &mut CheckReport, values: Vec<Chain<f64>>, bounds: Vec<Chain<Bound>>) {
     rep.float_cases += 1;
     let (scaled, label) = float_residual(&values, &bounds);
     if scaled.is_nan() || scaled > TOLERANCE_FACTOR {

@@ -60,3 +60,40 @@ fn run_check_evaluates_every_state_it_reports() {
     assert_eq!((r.float_cases, r.exact_points), (0, 0));
     assert_eq!((r.sz_bound, r.sz_bound_log10), (1.0, 0.0));
 }
+
+/// A float state whose sides differ by more than 4 of their error bounds fails, and so does one
+/// whose value is NaN; sides equal, or within the bound, pass. The worst residual and its side
+/// are kept across states.
+#[test]
+fn record_float_fails_a_state_beyond_tolerance_or_not_a_number() {
+    use sliding_ladder::registry::check::{record_float, CheckReport, TOLERANCE_FACTOR};
+    use sliding_ladder::registry::printed;
+    use sliding_ladder::scalar::bound::{Bound, UNIT_ROUNDOFF};
+    // Two sides a and b, each with an error bound of one unit of roundoff: tolerance 2u.
+    let state = |a: f64, b: f64| {
+        (
+            vec![vec![printed("a", a), printed("b", b)]],
+            vec![vec![
+                printed("a", Bound::inexact(a, 1.0)),
+                printed("b", Bound::inexact(b, 1.0)),
+            ]],
+        )
+    };
+    let mut rep = CheckReport::default();
+    let within = 1.0 + 2.0 * TOLERANCE_FACTOR * UNIT_ROUNDOFF * 0.5;
+    for (a, b) in [(1.0, 1.0), (1.0, within)] {
+        let (v, e) = state(a, b);
+        record_float(&mut rep, v, e);
+    }
+    assert_eq!((rep.float_cases, rep.float_failures), (2, 0));
+    assert!(rep.max_scaled_residual <= TOLERANCE_FACTOR && rep.max_scaled_residual > 0.0);
+    let (v, e) = state(1.0, 1.0 + 1e-9);
+    record_float(&mut rep, v, e);
+    assert_eq!((rep.float_cases, rep.float_failures), (3, 1));
+    assert!(rep.max_scaled_residual > 1e6);
+    assert_eq!(rep.worst_side, "b");
+    let (v, e) = state(1.0, f64::NAN);
+    record_float(&mut rep, v, e);
+    assert_eq!((rep.float_cases, rep.float_failures), (4, 2));
+    assert!(!rep.max_scaled_residual.is_finite());
+}
