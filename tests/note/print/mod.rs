@@ -12,6 +12,7 @@ mod planted;
 mod point;
 mod premises;
 mod prove;
+mod quantity;
 mod render;
 mod symbols;
 mod unicode;

@@ -125,3 +125,17 @@ fn group_text_reads_nested_braces_whole() {
         "{e:?}"
     );
 }
+
+/// Milne's label is skipped wherever it stands: at the start of a display, and after a form
+/// ending in a brace, as after a comma.
+#[test]
+fn skip_milne_passes_over_the_label_alone() {
+    let after_comma = parse_display(r"x = \dot{y}, \quad \text{Milne : } y = 2").unwrap();
+    let after_brace = parse_display(r"x = \dot{y} \quad \text{Milne : } y = 2").unwrap();
+    assert_eq!(after_brace, after_comma);
+    assert!(after_brace.statements[1].milne && !after_brace.statements[0].milne);
+    let first = parse_display(r"\text{Milne : } y = 2").unwrap();
+    assert_eq!(first.statements.len(), 1);
+    assert!(first.statements[0].milne);
+    assert_eq!(first.statements[0], after_comma.statements[1]);
+}
