@@ -102,8 +102,9 @@ impl Parser {
     fn at_milne(&self) -> bool {
         self.is_cmd("text") && self.peek_at(2) == Some(&Tok::Letter('M'))
     }
+    /// Skip `\text{Milne : }`: every token up to the brace that closes the label (`\text`
+    /// itself is one of them).
     fn skip_milne(&mut self) {
-        self.pos += 1;
         let mut depth = 0;
         while let Some(t) = self.peek().cloned() {
             self.pos += 1;
