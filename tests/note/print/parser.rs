@@ -139,3 +139,11 @@ fn skip_milne_passes_over_the_label_alone() {
     assert!(first.statements[0].milne);
     assert_eq!(first.statements[0], after_comma.statements[1]);
 }
+
+/// A bracket is an evaluation bar only when `_{` follows it: `[x]_{x_P = 0}` is x evaluated at
+/// the condition, `[x]\dot{y}` is the product x ẏ.
+#[test]
+fn factor_reads_a_bracket_as_a_bar_only_before_an_underscore_and_brace() {
+    assert_eq!(parse_expr(r"[x]\dot{y}"), parse_expr(r"x\dot{y}"));
+    assert!(matches!(parse_expr(r"[x]_{x_P = 0}"), Ok(Expr::At(..))));
+}

@@ -78,3 +78,12 @@ fn script_writes_unicode_superscripts_and_subscripts() {
     assert_eq!(unicode("m_{4} + 1"), "m_4 + 1");
     assert_eq!(unicode("x^{a}"), "x^a");
 }
+
+/// `\frac{d}{dt}` is the derivative, written d/dt before what it acts on; a fraction whose
+/// numerator is d over anything else is an ordinary fraction.
+#[test]
+fn fraction_reads_d_over_dt_as_the_derivative_only() {
+    assert_eq!(unicode(r"\frac{d}{dt}x"), "d/dt x");
+    assert_eq!(unicode(r"\frac{d}{2}"), "d/2");
+    assert_eq!(unicode(r"\frac{d}{l}"), "d/l");
+}
