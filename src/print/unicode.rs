@@ -233,15 +233,35 @@ fn greek(w: &str) -> Option<&'static str> {
     })
 }
 
-/// Parentheses around a compound numerator or denominator.
+/// Parentheses around a compound numerator or denominator, unless one pair already encloses
+/// all of it ((a + b)(c + d) is two pairs, and is wrapped).
 fn wrap(s: &str) -> String {
     let t = s.trim();
-    let compound = t.contains([' ', '+', '−', '/']) && !(t.starts_with('(') && t.ends_with(')'));
+    let compound = t.contains([' ', '+', '−', '/']) && !enclosed(t);
     if compound {
         format!("({t})")
     } else {
         t.to_string()
     }
+}
+
+/// True when the text's first '(' closes at its last character.
+fn enclosed(t: &str) -> bool {
+    let Some(inner) = t.strip_prefix('(').and_then(|r| r.strip_suffix(')')) else {
+        return false;
+    };
+    let mut depth = 0i32;
+    for ch in inner.chars() {
+        depth += match ch {
+            '(' => 1,
+            ')' => -1,
+            _ => 0,
+        };
+        if depth < 0 {
+            return false;
+        }
+    }
+    depth == 0
 }
 
 /// A superscript or subscript: Unicode's own characters when every character has one.

@@ -87,3 +87,15 @@ fn fraction_reads_d_over_dt_as_the_derivative_only() {
     assert_eq!(unicode(r"\frac{d}{2}"), "d/2");
     assert_eq!(unicode(r"\frac{d}{l}"), "d/l");
 }
+
+/// A compound numerator is wrapped in parentheses unless one pair already encloses all of it:
+/// 2(a + b) over c reads (2(a + b))/c, not 2(a + b)/c; (a + b)c and (a + b)(c + d) likewise;
+/// (a + b) stays as is.
+#[test]
+fn wrap_parenthesises_a_compound_part_not_already_enclosed() {
+    assert_eq!(unicode(r"\frac{2(a + b)}{c}"), "(2(a + b))/c");
+    assert_eq!(unicode(r"\frac{(a + b)c}{d}"), "((a + b)c)/d");
+    assert_eq!(unicode(r"\frac{(a + b)}{c}"), "(a + b)/c");
+    // Two pairs side by side do not enclose the whole.
+    assert_eq!(unicode(r"\frac{(a + b)(c + d)}{e}"), "((a + b)(c + d))/e");
+}
