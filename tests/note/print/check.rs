@@ -152,3 +152,31 @@ fn check_print_evaluates_and_counts_its_states() {
     let r = check_print(&alone, alone.latex(), &many);
     assert_eq!((r.float_cases, r.exact_points), (PRINT_FLOAT_CASES, 3));
 }
+
+/// The evaluator differentiates along the motion three levels deep (θ⃛), no further: a fourth
+/// derivative of θ in a print is reported as unevaluable, with the reason, not given a value.
+/// (The third-derivative print is evaluated; whether it holds is not asked here: the ladder's
+/// draws leave θ⃛ free.)
+#[test]
+fn a_derivative_nested_four_deep_is_reported_not_evaluated() {
+    let e = equation(5);
+    let third = check_print(
+        &e,
+        r"\frac{d}{dt}\frac{d}{dt}\frac{d}{dt}\dot{\theta} = \frac{3g}{4l} \cos \theta \dot{\theta}",
+        &quick(),
+    );
+    assert!(third.unparsed.is_empty(), "{third:?}");
+    assert_eq!(third.parsed, 2);
+    let fourth = check_print(
+        &e,
+        r"\frac{d}{dt}\frac{d}{dt}\frac{d}{dt}\frac{d}{dt}\dot{\theta} = \frac{3g}{4l} \cos \theta \dot{\theta}",
+        &quick(),
+    );
+    assert!(
+        fourth
+            .unparsed
+            .iter()
+            .any(|u| u.contains("deeper than three")),
+        "{fourth:?}"
+    );
+}

@@ -132,35 +132,6 @@ fn run_injection_calls_an_edit_that_changes_no_value_neutral() {
     ));
 }
 
-/// The evaluator differentiates along the motion three levels deep (θ⃛), no further: a fourth
-/// derivative of θ in a print is reported as unevaluable, with the reason, not given a value.
-/// (The third-derivative print is evaluated; whether it holds is not asked here: the ladder's
-/// draws leave θ⃛ free.)
-#[test]
-fn a_derivative_nested_four_deep_is_reported_not_evaluated() {
-    use sliding_ladder::registry::print_check::check_print;
-    let e = equations().into_iter().find(|e| e.number == 5).unwrap();
-    let third = check_print(
-        &e,
-        r"\frac{d}{dt}\frac{d}{dt}\frac{d}{dt}\dot{\theta} = \frac{3g}{4l} \cos \theta \dot{\theta}",
-        &quick(),
-    );
-    assert!(third.unparsed.is_empty(), "{third:?}");
-    assert_eq!(third.parsed, 2);
-    let fourth = check_print(
-        &e,
-        r"\frac{d}{dt}\frac{d}{dt}\frac{d}{dt}\frac{d}{dt}\dot{\theta} = \frac{3g}{4l} \cos \theta \dot{\theta}",
-        &quick(),
-    );
-    assert!(
-        fourth
-            .unparsed
-            .iter()
-            .any(|u| u.contains("deeper than three")),
-        "{fourth:?}"
-    );
-}
-
 /// The typos of (5), θ̈ = (3g/4l) sin θ, counted by hand: the coefficients 3 and 4 each raised
 /// by one, sin made cos, g and l each dropped from their product; no sign to flip. A display
 /// with cos gets the other direction: (10)'s cos θ made sin θ.
