@@ -80,13 +80,15 @@ fn record_float_fails_a_state_beyond_tolerance_or_not_a_number() {
         )
     };
     let mut rep = CheckReport::default();
-    let within = 1.0 + 2.0 * TOLERANCE_FACTOR * UNIT_ROUNDOFF * 0.5;
+    // 4u apart: half the tolerance of 4 × 2u.
+    let within = 1.0 + TOLERANCE_FACTOR * UNIT_ROUNDOFF;
     for (a, b) in [(1.0, 1.0), (1.0, within)] {
         let (v, e) = state(a, b);
         record_float(&mut rep, v, e);
     }
     assert_eq!((rep.float_cases, rep.float_failures), (2, 0));
-    assert!(rep.max_scaled_residual <= TOLERANCE_FACTOR && rep.max_scaled_residual > 0.0);
+    // 4u over u·(1 + (1 + 4u)): 2 less a few ulps.
+    assert!((rep.max_scaled_residual - 2.0).abs() <= 4.0 * f64::EPSILON);
     let (v, e) = state(1.0, 1.0 + 1e-9);
     record_float(&mut rep, v, e);
     assert_eq!((rep.float_cases, rep.float_failures), (3, 1));
