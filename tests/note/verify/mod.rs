@@ -6,5 +6,6 @@ mod errata_point;
 mod errata_reading;
 mod golfer;
 mod judge;
+mod proof;
 mod rolling;
 mod table;
