@@ -8,4 +8,5 @@ mod golfer;
 mod judge;
 mod proof;
 mod rolling;
+mod summary;
 mod table;
