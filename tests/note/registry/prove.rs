@@ -237,3 +237,82 @@ fn check_proof_holds_only_when_proved_every_misprint_wrong_and_needing_the_law()
         assert!(!p.holds(), "{:?}", (p.proved, p.off_shell_fails));
     }
 }
+
+/// Σ mᵢ of the system, and its last particle's mass.
+fn total_and_last<S: Scalar>(sys: &sliding_ladder::system::System<S>) -> (S, S) {
+    let total = sys.particles.iter().fold(S::int(0), |a, q| a + q.m.clone());
+    let last = sys.particles.last().expect("a particle").m.clone();
+    (total, last)
+}
+
+/// A planted misprint wrong for 1, 2 and 3 particles and right for 4: Σ mᵢ, plus m_n below four
+/// particles.
+fn misprint_right_at_four<S: Scalar>(
+    sys: &sliding_ladder::system::System<S>,
+    _p: &sliding_ladder::system::Point<S>,
+) -> Vec<Chain<S>> {
+    let (total, last) = total_and_last(sys);
+    let off = if sys.particles.len() < 4 {
+        last
+    } else {
+        S::int(0)
+    };
+    vec![vec![
+        printed("Σ m_i", total.clone()),
+        sliding_ladder::registry::side::misprint(
+            "planted: Σ m_i + m_n (n < 4)",
+            total.clone() + off,
+        ),
+        reference("Σ m_i", total),
+    ]]
+}
+
+/// A planted false identity wrong at every particle count, by a different term at each:
+/// Σ mᵢ + m_n against Σ mᵢ (the difference is the last particle's mass, m_1 at one particle).
+fn wrong_by_the_last<S: Scalar>(
+    sys: &sliding_ladder::system::System<S>,
+    _p: &sliding_ladder::system::Point<S>,
+) -> Vec<Chain<S>> {
+    let (total, last) = total_and_last(sys);
+    vec![vec![
+        printed("planted: Σ m_i + m_n", total.clone() + last),
+        reference("Σ m_i", total),
+    ]]
+}
+
+/// A misprint must be wrong in every instance (every particle count): one right only at four
+/// particles, the last count proved, is reported symbolically right, so the erratum fails.
+#[test]
+fn prove_check_keeps_a_misprint_right_in_any_one_instance() {
+    use sliding_ladder::registry::sample::ParticleSample;
+    let check = Check {
+        name: "planted",
+        eval: Eval::Particles(
+            ParticleSample::General,
+            sliding_ladder::particle_fns!(misprint_right_at_four),
+        ),
+    };
+    let p = prove_check(&check);
+    assert!(p.proved, "{:?}", p.failure);
+    assert_eq!(p.misprints.len(), 1);
+    assert!(p.misprints[0].1.is_zero(), "{}", text(&p.misprints[0].1));
+    assert!(!p.holds());
+}
+
+/// The failure reported is the first instance's (one particle): its difference is m_1.
+#[test]
+fn prove_check_reports_the_first_instance_that_fails() {
+    use sliding_ladder::registry::sample::ParticleSample;
+    let check = Check {
+        name: "planted",
+        eval: Eval::Particles(
+            ParticleSample::General,
+            sliding_ladder::particle_fns!(wrong_by_the_last),
+        ),
+    };
+    let p = prove_check(&check);
+    assert!(!p.proved);
+    let (label, diff) = p.failure.expect("a nonzero difference");
+    assert_eq!(label, "Σ m_i");
+    assert_eq!(text(&diff), "-m_1");
+}
