@@ -13,7 +13,7 @@ pub mod units;
 mod judge;
 mod print_judge;
 pub use judge::judge;
-pub use print_judge::{judge_print, judge_with_print};
+pub use print_judge::{judge_print, judge_with_print, LAW_FOUND, PRINT_ALONE};
 pub use table::table;
 
 use crate::registry::check::{run_check, CheckReport, Config};

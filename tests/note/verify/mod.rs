@@ -6,6 +6,7 @@ mod errata_point;
 mod errata_reading;
 mod golfer;
 mod judge;
+mod print_alone;
 mod proof;
 mod rolling;
 mod summary;
