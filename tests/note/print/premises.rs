@@ -220,3 +220,50 @@ fn every_display_prints_each_listed_bar_and_implication_and_lists_each_printed_o
         }
     }
 }
+
+/// A bar is found wherever the print nests it: under a sign, a power, a sum, a derivative (total or partial), a z component, either side of +, −, a product, a fraction or
+/// a cross product, and in a tuple. (88)'s listed bar stays on the left; on the right the
+/// strengthened bar x_P = x_cm = 0, listed nowhere, is nested in each construct in turn, and
+/// must be named each time (the values may differ too: they are not what is asked here). The
+/// parser gives sin and cos a symbol only, so no bar can stand under them.
+#[test]
+fn an_unlisted_bar_is_named_wherever_the_print_nests_it() {
+    let e = display(88);
+    let bar = r"\mathbf{L} \Big|_{\mathbf{x}_P=\mathbf{x}_{\text{cm}}=0}";
+    let nests = [
+        format!("-{bar}"),
+        format!(r"({bar})^{{2}}"),
+        format!(r"\sum_i {bar}"),
+        format!(r"\frac{{d}}{{dt}} ({bar})"),
+        format!(r"\frac{{\partial {bar}}}{{\partial \theta}}"),
+        format!(r"({bar})|_z"),
+        format!(r"\mathbf{{x}}_P + {bar}"),
+        format!(r"{bar} - \mathbf{{x}}_P"),
+        format!(r"m {bar}"),
+        format!(r"\frac{{{bar}}}{{m}}"),
+        format!(r"\mathbf{{x}}_P \times {bar}"),
+        format!(r"({bar}, m)"),
+    ];
+    let left = r"\frac{d\mathbf{L}}{dt} \Big|_{\mathbf{x}_{\text{cm}}=0}";
+    // The left side alone against a plain right side: no premise is named.
+    let plain = check(&e, &format!(r"{left} = \mathbf{{x}}_P"));
+    assert!(
+        !plain
+            .problems
+            .iter()
+            .any(|p| p.contains("not among the display's premises")),
+        "{:?}",
+        plain.problems
+    );
+    for nest in &nests {
+        let r = check(&e, &format!("{left} = {nest}"));
+        assert!(
+            r.problems
+                .iter()
+                .any(|p| p.contains("not among the display's premises")),
+            "'{nest}': {:?} {:?}",
+            r.problems,
+            r.unparsed
+        );
+    }
+}
