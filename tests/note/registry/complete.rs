@@ -57,3 +57,31 @@ fn errata_carry_both_forms() {
         }
     }
 }
+
+/// A check compares: each check of every display (the note's and those beyond it) gives at
+/// least one chain, and every chain has at least two sides that must hold. A chain function
+/// that returned nothing would pass every state it was run at (mutation shard registry 5/40:
+/// the floor phase's `p5` emptied, and the quick tests passed).
+#[test]
+fn every_check_compares_at_least_two_sides_in_each_chain() {
+    use sliding_ladder::registry::units::dimension_chains;
+    use sliding_ladder::registry::{extensions, Role};
+    let mut checks = 0;
+    for e in equations().iter().chain(&extensions()) {
+        for c in &e.checks {
+            let chains = dimension_chains(c);
+            assert!(!chains.is_empty(), "({}) {}: no chain", e.number, c.name);
+            for chain in &chains {
+                let holding = chain.iter().filter(|s| s.role != Role::Misprint).count();
+                assert!(
+                    holding >= 2,
+                    "({}) {}: a chain of {holding} side(s) that must hold",
+                    e.number,
+                    c.name
+                );
+            }
+            checks += 1;
+        }
+    }
+    assert!(checks > 90, "{checks}");
+}
