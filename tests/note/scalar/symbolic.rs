@@ -75,3 +75,19 @@ fn an_exact_factor_of_the_numerator_is_divided_out() {
     assert!(q.den.factors.is_empty(), "{q:?}");
     assert_eq!(q, x + Sym::int(1));
 }
+
+/// A monomial of the denominator that the numerator cancels whole leaves the denominator:
+/// x y / x is y over 1, and y x / x² is y over x (by hand); no variable is kept at the power 0,
+/// which would print as a factor and make a denominator that is 1 look otherwise.
+#[test]
+fn a_monomial_cancelled_whole_leaves_the_denominator() {
+    use sliding_ladder::scalar::text;
+    let (x, y) = (Sym::var("x_m", "x_m"), Sym::var("y_m", "y_m"));
+    let q = x.clone() * y.clone() / x.clone();
+    assert!(q.den.mono.is_empty(), "{q:?}");
+    assert_eq!(text(&q), "y_m");
+    let r = y.clone() * x.clone() / (x.clone() * x.clone());
+    assert_eq!(r.den.mono.len(), 1, "{r:?}");
+    assert_eq!(r.den.mono[0].1, 1, "{r:?}");
+    assert_eq!(text(&r), text(&(y / x)));
+}
