@@ -99,3 +99,35 @@ fn record_float_fails_a_state_beyond_tolerance_or_not_a_number() {
     assert_eq!((rep.float_cases, rep.float_failures), (4, 2));
     assert!(!rep.max_scaled_residual.is_finite());
 }
+
+/// The Schwartz-Zippel bounds of a check (Config of 3 exact points): (d/N)³ over all points,
+/// and over the rational points alone (the first `RATIONAL_POINTS` of them) (d/N)^k, with d the
+/// residual's degree and N the sample set's size.
+#[test]
+fn run_check_bounds_over_all_points_and_over_the_rational_ones() {
+    use sliding_ladder::registry::check::{EXACT_SET_SIZE, RATIONAL_POINTS};
+    let cfg = Config {
+        float_cases: 1,
+        exact_points: 3,
+        seed: 8,
+    };
+    let e = equations()
+        .into_iter()
+        .find(|e| e.number == 12)
+        .expect("(12)");
+    let r = run_check(&e.checks[0], &cfg);
+    let p = f64::from(r.degree.max(1)) / EXACT_SET_SIZE;
+    assert!(p > 0.0 && p < 1e-6, "{p}");
+    let rational = RATIONAL_POINTS.min(3) as i32;
+    // Error model: k·log10(p) against log10(pᵏ), a few roundings of numbers below 100 in
+    // magnitude (16 ulps of the value); the bound itself, a few roundings of its relative size.
+    let close = |a: f64, b: f64| (a - b).abs() <= 16.0 * f64::EPSILON * b.abs().max(1.0);
+    assert!(close(r.sz_bound / p.powi(3), 1.0), "{}", r.sz_bound);
+    assert!(close(r.sz_bound_log10, p.powi(3).log10()));
+    assert!(
+        close(r.sz_bound_rational_log10, p.powi(rational).log10()),
+        "{} against {}",
+        r.sz_bound_rational_log10,
+        p.powi(rational).log10()
+    );
+}
