@@ -182,3 +182,35 @@ fn a_derivative_nested_four_deep_is_reported_not_evaluated() {
         "{fourth:?}"
     );
 }
+
+/// The float states alone can fail a print: with no exact point asked for and its Rust checks
+/// taken away, (25) with a coefficient edited is flagged by its float states, naming how many
+/// of them and the worst residual; as printed it passes.
+#[test]
+fn check_print_fails_an_edited_print_on_its_float_states_alone() {
+    let floats_only = Config {
+        float_cases: 5,
+        exact_points: 0,
+        seed: 9,
+    };
+    let mut e = equation(25);
+    e.checks.clear();
+    let printed = printed_latex(25);
+    let ok = check_print(&e, printed, &floats_only);
+    assert_eq!((ok.float_cases, ok.exact_points), (5, 0));
+    assert!(ok.problems.is_empty(), "{:?}", ok.problems);
+    let edited = printed.replace(
+        r"+ 2ml^2\cos^2\theta\ddot{\theta}",
+        r"+ 3ml^2\cos^2\theta\ddot{\theta}",
+    );
+    assert_ne!(edited, printed, "the edit must apply");
+    let r = check_print(&e, &edited, &floats_only);
+    assert_eq!(r.exact_points, 0);
+    assert!(
+        r.problems
+            .iter()
+            .any(|p| p.starts_with("print: 5 of 5 float states out of tolerance; worst residual")),
+        "{:?}",
+        r.problems
+    );
+}
