@@ -66,3 +66,31 @@ fn indistinguishable_never_pairs_a_per_particle_quantity() {
     // The case this test is about: displays where x_C has a twin to be listed.
     assert!(with_c > 0);
 }
+
+/// Each pair is listed once: no display lists a pair and the same pair the other way round,
+/// or any pair twice. (13)'s moments of inertia give the case: I_A with I_C, and not also I_C
+/// with I_A.
+#[test]
+fn indistinguishable_lists_each_pair_once() {
+    let mut pairs_seen = 0;
+    for e in &sliding_ladder::registry::equations() {
+        let twins = indistinguishable(e);
+        for (i, t) in twins.iter().enumerate() {
+            let again = twins[i + 1..].iter().any(|u| {
+                (u.printed == t.printed && u.other == t.other)
+                    || (u.printed == t.other && u.other == t.printed)
+            });
+            assert!(
+                !again,
+                "({}): {} and {} twice",
+                e.number, t.printed, t.other
+            );
+            pairs_seen += 1;
+        }
+    }
+    assert!(pairs_seen > 0);
+    let of_13 = indistinguishable(&equation(13));
+    assert!(!of_13
+        .iter()
+        .any(|t| t.printed == "I_{C}" && t.other == "I_{A}"));
+}
