@@ -291,3 +291,20 @@ fn every_symbol_of_the_table_has_the_dimension_and_unit_it_states() {
         Dimension::parse(&wrong.dimension).ok()
     );
 }
+
+/// The reason a form is inconsistent names its own clash: a vector with unlike components is
+/// named by its components only when that is the clash; in (m, l)·1/0 the clash is the division
+/// by an exact zero, and that is what is said (registry 5/40's survivor named the components).
+#[test]
+fn print_units_names_the_clash_of_the_form_not_another_defect_in_it() {
+    let e = display(12);
+    let problems = |latex: &str| print_units(&e, latex).expect("parses").problems;
+    assert_eq!(
+        problems(r"L_A = (m, l)"),
+        ["inconsistent: components M and L in the vector (m, l) in form 2"]
+    );
+    assert_eq!(
+        problems(r"L_A = (m, l) \frac{1}{0}"),
+        ["inconsistent: division by an exact zero in form 2"]
+    );
+}
