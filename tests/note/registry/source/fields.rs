@@ -19,6 +19,22 @@ fn fields_split_at_markers_after_a_dot_only() {
     assert!(split_fields("Prose with *Kind:* inside").is_empty());
 }
 
+/// A field's name is a capitalised word of two letters or more: a one-letter emphasis such as
+/// `*P:*` opening a paragraph (a point named in prose) is not a field, and a lower-case or
+/// non-alphabetic name is not either.
+#[test]
+fn split_fields_takes_names_of_two_capitalised_letters_or_more() {
+    assert!(split_fields("*P:* the point about which torques are taken").is_empty());
+    assert!(split_fields("*kind:* general").is_empty());
+    assert!(split_fields("*K2:* general").is_empty());
+    assert_eq!(split_fields("*Ab:* x"), vec![("Ab", "x")]);
+    // Within a paragraph of fields, a one-letter marker after a dot stays in the value.
+    assert_eq!(
+        split_fields("*Kind:* general · *P:* x"),
+        vec![("Kind", "general · *P:* x")]
+    );
+}
+
 #[test]
 fn a_law_line_gives_its_step_and_statement() {
     let l = read_law("the 2nd `=` is the law of motion: dL/dt = τ. Every other `=` is …");
