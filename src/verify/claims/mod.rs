@@ -140,8 +140,10 @@ pub fn la_prose_reading() -> Option<String> {
     crate::scalar::reading(&(la_prose(&l, &s, 1) - la_prose(&l, &s, 2))).map(|r| r.render(true))
 }
 
-/// Three exact ladder states of the given sort (fixed integers: reproducible).
-fn states(sort: LadderSample) -> Vec<(Ladder<Q>, State<Q>)> {
+/// The three exact ladder states every claim on the ladder is checked at, of the given sort
+/// (fixed integers, so reproducible): m, l and g positive, and tan(θ/2), θ̇, θ̈ and θ⃛ each of
+/// both signs among them, so a claim true for one sign of a rate only cannot pass.
+pub fn states(sort: LadderSample) -> Vec<(Ladder<Q>, State<Q>)> {
     [
         [3, 7, 2, 11, -5, 13, 4],
         [-7, 5, 9, 2, 3, -4, 1],

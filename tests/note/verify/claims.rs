@@ -235,3 +235,25 @@ fn claim_verdict_names_an_imprecise_erratum_only_when_marked() {
     let unproven = Claim::erratum("A.5", "a claim", ("printed", "corrected"), true, false);
     assert_eq!(unproven.verdict(), "FAILED");
 }
+
+/// The claims' exact states are general: m, l, g positive in each, and tan(θ/2) (the sign of
+/// sin θ), θ̇, θ̈ and θ⃛ each positive in one state and negative in another, so a claim that
+/// holds for one sign of a rate only is exposed.
+#[test]
+fn states_take_both_signs_of_every_rate() {
+    use sliding_ladder::registry::sample::LadderSample;
+    use sliding_ladder::verify::claims::states;
+    let all = states(LadderSample::Kinematic);
+    assert_eq!(all.len(), 3);
+    for (l, _) in &all {
+        assert!(l.m.to_f64() > 0.0 && l.l.to_f64() > 0.0 && l.g.to_f64() > 0.0);
+    }
+    let signs = |f: fn(&sliding_ladder::ladder::State<Rational>) -> f64| {
+        let v: Vec<f64> = all.iter().map(|(_, s)| f(s)).collect();
+        (v.iter().any(|x| *x > 0.0), v.iter().any(|x| *x < 0.0))
+    };
+    assert_eq!(signs(|s| s.sin.to_f64()), (true, true), "sin θ");
+    assert_eq!(signs(|s| s.rate.to_f64()), (true, true), "θ̇");
+    assert_eq!(signs(|s| s.accel.to_f64()), (true, true), "θ̈");
+    assert_eq!(signs(|s| s.jerk.to_f64()), (true, true), "θ⃛");
+}
