@@ -42,3 +42,34 @@ fn an_unnamed_dimension_is_in_base_units() {
     assert_eq!(unit_name(Dimension::new(0, 1, -3)), "m s^-3");
     assert_eq!(unit_name(Dimension::new(1, 2, -2)), "N·m");
 }
+
+/// A planted erratum whose chain opens with its misprint (an angular momentum printed without
+/// its mass, l²θ̇) before the correction (m l²θ̇).
+fn misprint_first<S: sliding_ladder::scalar::Scalar>(
+    l: &sliding_ladder::ladder::Ladder<S>,
+    s: &sliding_ladder::ladder::State<S>,
+) -> Vec<sliding_ladder::registry::Chain<S>> {
+    use sliding_ladder::registry::{corrected, misprint};
+    let l2 = l.l.clone() * l.l.clone() * s.rate.clone();
+    vec![vec![
+        misprint("printed: l² θ̇", l2.clone()),
+        corrected("corrected: m l² θ̇", l.m.clone() * l2),
+    ]]
+}
+
+/// The residual's unit is the corrected form's, wherever the misprint stands in the chain:
+/// kg·m²/s here, not the misprint's m²/s.
+#[test]
+fn residual_unit_is_the_corrected_forms_even_after_a_misprint() {
+    use sliding_ladder::registry::sample::LadderSample;
+    use sliding_ladder::registry::{Check, Eval};
+    let mut e = eq(49);
+    e.checks = vec![Check {
+        name: "planted",
+        eval: Eval::Ladder(
+            LadderSample::Kinematic,
+            sliding_ladder::ladder_fns!(misprint_first),
+        ),
+    }];
+    assert_eq!(residual_unit(&e), "kg·m²/s");
+}
