@@ -484,3 +484,18 @@ fn ladder_errata_fits_100_columns() {
     let words = |s: &str| s.split_whitespace().map(str::to_string).collect::<Vec<_>>();
     assert_eq!(words(&fill(&raw, DEFAULT_WIDTH)), words(&raw));
 }
+
+/// The proof cell: `proved`, `sampled` where no symbolic proof applies, `NO` otherwise.
+#[test]
+fn proof_cell_says_proved_sampled_or_no() {
+    use sliding_ladder::verify::table::proof;
+    let mut r = checked(12);
+    r.proved = true;
+    r.proof = "proved".into();
+    assert_eq!(proof(&r), "proved");
+    r.proved = false;
+    r.proof = "sampled only: root: a square root".into();
+    assert_eq!(proof(&r), "sampled");
+    r.proof = "not proved".into();
+    assert_eq!(proof(&r), "NO");
+}
