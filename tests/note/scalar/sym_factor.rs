@@ -67,3 +67,38 @@ fn homogenises_a_square_of_one_minus_s_squared_to_c_to_the_fourth() {
     let x = one_minus.clone() * one_minus;
     assert_eq!(factored_text(&x), "c^4");
 }
+
+/// Random products of two to four factors, each a polynomial in its own variable with integer
+/// coefficients other than ±1 (a x² + b x + c, or a x + c): `factor` finds every factor, one per
+/// variable, and the product expands back. A common rational multiple is taken out whole.
+#[test]
+fn factor_finds_every_factor_of_random_products_in_disjoint_variables() {
+    use rand::{Rng, SeedableRng};
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(41);
+    let vars = ["m", "l", "g", "ω"];
+    let nonunit = |rng: &mut rand_chacha::ChaCha8Rng| {
+        let k: i64 = rng.gen_range(2..9);
+        if rng.gen_bool(0.5) {
+            k
+        } else {
+            -k
+        }
+    };
+    for _ in 0..200 {
+        let k = rng.gen_range(2..=4);
+        let mut x = Sym::ratio(nonunit(&mut rng), 3);
+        for name in &vars[..k] {
+            let y = v(name);
+            let linear = Sym::int(nonunit(&mut rng)) * y.clone() + Sym::int(nonunit(&mut rng));
+            let f = if rng.gen_bool(0.5) {
+                linear + Sym::int(nonunit(&mut rng)) * y.clone() * y
+            } else {
+                linear
+            };
+            x = x * f;
+        }
+        let f = factor(&x.num).expect("a product");
+        assert_eq!(f.factors.len(), k, "{}", f.render(false));
+        assert_eq!(f.expand(), x.num, "{}", f.render(false));
+    }
+}
