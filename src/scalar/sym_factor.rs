@@ -248,7 +248,10 @@ fn rank_one(p: &Poly, group: &[Var]) -> Option<(Poly, Poly)> {
     let b = Poly {
         terms: row0.iter().map(|(y, q)| (y.clone(), q / c0)).collect(),
     };
-    (a.terms.len() > 1 && b.terms.len() > 1).then_some((a, b))
+    // Both factors have two terms or more: `p` has no monomial content (`factor` divides it out,
+    // and a factor of a content-free polynomial has none), and each side holds variables of
+    // `p`, so a one-term side would be a monomial dividing `p`.
+    Some((a, b))
 }
 
 /// `p` homogenised in (s, c) with s² + c² = 1, when all its (s, c)-degrees have one parity and
