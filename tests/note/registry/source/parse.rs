@@ -15,6 +15,9 @@ fn labels_and_sections_are_read_from_headings() {
         Some(1003)
     );
     assert!(heading_label("(0) Zero").is_some_and(|x| x.0.is_err()));
+    // (P0) is refused too: the number 1000 itself is neither the note's nor an extension's, and
+    // `equations` and `extensions` both leave it out.
+    assert!(heading_label("(P0) Zero").is_some_and(|x| x.0.is_err()));
     // Numbers run below the extensions' base, 1000, in both series: (999) and (P999) are the
     // last, (1000) and (P1000) are refused (a (P1000) would take the number 2000).
     let number = |h| heading_label(h).map(|x| x.0);
