@@ -186,7 +186,8 @@ impl Div for Dimension {
 /// What made a value dimensionally inconsistent.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Clash {
-    /// `left op right` with unlike dimensions (op is "+", "−" or "=").
+    /// `left op right` with unlike dimensions (op is "+" or "−", or "," between the components of
+    /// a vector).
     Unlike {
         /// The operation.
         op: &'static str,
@@ -290,21 +291,6 @@ impl Dim {
         match self {
             Dim::Of(d) => Dim::Of(d.pow(p)),
             d => d,
-        }
-    }
-    /// Whether two values may stand on the two sides of `=`: the clash if not.
-    pub fn equate(&self, other: &Dim) -> Option<Inconsistency> {
-        match (self, other) {
-            (Dim::Inconsistent(i), _) | (_, Dim::Inconsistent(i)) => Some((**i).clone()),
-            (Dim::Of(a), Dim::Of(b)) if a != b => Some(Inconsistency {
-                clash: Clash::Unlike {
-                    op: "=",
-                    left: *a,
-                    right: *b,
-                },
-                at: None,
-            }),
-            _ => None,
         }
     }
     fn sum(self, o: Dim, op: &'static str) -> Dim {
