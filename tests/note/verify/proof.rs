@@ -2,19 +2,13 @@
 //! Each branch of the verdict is driven by a hand-made check proof, so a verdict that could not
 //! fail (or a branch that names the wrong reason) is seen here.
 
+use crate::common::equation as display;
 use sliding_ladder::registry::print_check::prove::PrintProof;
 use sliding_ladder::registry::prove::CheckProof;
-use sliding_ladder::registry::{equations, Equation, Kind};
+use sliding_ladder::registry::{equations, Kind};
 use sliding_ladder::scalar::Scalar;
 use sliding_ladder::scalar::Sym;
 use sliding_ladder::verify::proof::{verdict, with_print, ProofVerdict};
-
-fn display(n: u32) -> Equation {
-    equations()
-        .into_iter()
-        .find(|e| e.number == n)
-        .expect("a display")
-}
 
 /// A check proof that holds: proved, no misprint, needing the motion.
 fn holding(name: &'static str, seconds: f64) -> CheckProof {
