@@ -499,3 +499,51 @@ fn proof_cell_says_proved_sampled_or_no() {
     r.proof = "not proved".into();
     assert_eq!(proof(&r), "NO");
 }
+
+/// Each cell of a row in its own words, every case written by hand: the status, the residual
+/// beside the threshold (three decimals below 1000, else an exponent), what the display does off
+/// the motion, the exact points and the print.
+#[test]
+fn cells_say_each_case_in_their_own_words() {
+    use sliding_ladder::verify::table::{exact, off_motion, print, status};
+    assert_eq!(
+        [
+            Status::Verified,
+            Status::Erratum,
+            Status::Definition,
+            Status::Failed
+        ]
+        .map(status),
+        ["verified", "erratum", "definition", "FAILED"]
+    );
+    assert_eq!(residual(0.25), format!("0.250 ≤ {TOLERANCE_FACTOR}"));
+    assert_eq!(
+        residual(TOLERANCE_FACTOR),
+        format!("4.000 ≤ {TOLERANCE_FACTOR}")
+    );
+    assert_eq!(residual(4.5), format!("4.500 > {TOLERANCE_FACTOR}"));
+    assert_eq!(residual(72_000.0), format!("7.2e4 > {TOLERANCE_FACTOR}"));
+    let mut r = checked(12);
+    let off = |r: &mut EquationResult, m: OffMotion, step: Option<u32>| {
+        r.off_motion = m;
+        r.law_step = step;
+        off_motion(r)
+    };
+    assert_eq!(off(&mut r, OffMotion::Fails, Some(2)), "fails at =2");
+    assert_eq!(off(&mut r, OffMotion::Fails, None), "fails");
+    assert_eq!(off(&mut r, OffMotion::Holds, Some(2)), "HOLDS");
+    assert_eq!(off(&mut r, OffMotion::AnyMotion, None), "any θ̈");
+    assert_eq!(off(&mut r, OffMotion::NotApplicable, None), "—");
+    (r.exact_points, r.exact_failures) = (0, 0);
+    assert_eq!(exact(&r), "none");
+    (r.exact_points, r.exact_failures) = (3, 0);
+    assert_eq!(exact(&r), "0 at 3 pts");
+    (r.exact_points, r.exact_failures) = (3, 1);
+    assert_eq!(exact(&r), "≠0 at 1 of 3");
+    (r.print_forms, r.print_parsed, r.print_matches_code) = (0, 0, true);
+    assert_eq!(print(&r), "—");
+    (r.print_forms, r.print_parsed) = (4, 3);
+    assert_eq!(print(&r), "3/4");
+    r.print_matches_code = false;
+    assert_eq!(print(&r), "3/4*");
+}
