@@ -280,19 +280,22 @@ fn wrong_by_the_last<S: Scalar>(
     ]]
 }
 
+/// The proof of a planted check about general particle systems.
+fn prove_planted(
+    fns: sliding_ladder::registry::ParticleFns,
+) -> sliding_ladder::registry::prove::CheckProof {
+    use sliding_ladder::registry::sample::ParticleSample;
+    prove_check(&Check {
+        name: "planted",
+        eval: Eval::Particles(ParticleSample::General, fns),
+    })
+}
+
 /// A misprint must be wrong in every instance (every particle count): one right only at four
 /// particles, the last count proved, is reported symbolically right, so the erratum fails.
 #[test]
 fn prove_check_keeps_a_misprint_right_in_any_one_instance() {
-    use sliding_ladder::registry::sample::ParticleSample;
-    let check = Check {
-        name: "planted",
-        eval: Eval::Particles(
-            ParticleSample::General,
-            sliding_ladder::particle_fns!(misprint_right_at_four),
-        ),
-    };
-    let p = prove_check(&check);
+    let p = prove_planted(sliding_ladder::particle_fns!(misprint_right_at_four));
     assert!(p.proved, "{:?}", p.failure);
     assert_eq!(p.misprints.len(), 1);
     assert!(p.misprints[0].1.is_zero(), "{}", text(&p.misprints[0].1));
@@ -302,15 +305,7 @@ fn prove_check_keeps_a_misprint_right_in_any_one_instance() {
 /// The failure reported is the first instance's (one particle): its difference is m_1.
 #[test]
 fn prove_check_reports_the_first_instance_that_fails() {
-    use sliding_ladder::registry::sample::ParticleSample;
-    let check = Check {
-        name: "planted",
-        eval: Eval::Particles(
-            ParticleSample::General,
-            sliding_ladder::particle_fns!(wrong_by_the_last),
-        ),
-    };
-    let p = prove_check(&check);
+    let p = prove_planted(sliding_ladder::particle_fns!(wrong_by_the_last));
     assert!(!p.proved);
     let (label, diff) = p.failure.expect("a nonzero difference");
     assert_eq!(label, "Σ m_i");

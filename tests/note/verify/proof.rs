@@ -131,6 +131,16 @@ fn verdict_of_a_check_only_sampled_is_not_proved_and_says_why() {
     assert_eq!(v.seconds, 1.5);
 }
 
+/// A proof of a print of `forms` forms, proved unless it names a problem, taking no time.
+fn print_proof(forms: usize, problem: Option<&str>) -> PrintProof {
+    PrintProof {
+        forms,
+        proved: problem.is_none(),
+        problem: problem.map(Into::into),
+        seconds: 0.0,
+    }
+}
+
 fn proved_verdict() -> ProofVerdict {
     verdict(&display(12), &[holding("ok", 0.25)])
 }
@@ -157,12 +167,7 @@ fn with_print_fails_a_proved_display_whose_print_is_not_proved() {
     // A print with a problem fails the display and names the problem.
     let bad = with_print(
         proved_verdict(),
-        Some(PrintProof {
-            forms: 2,
-            proved: false,
-            problem: Some("print: form 2 differs".into()),
-            seconds: 0.0,
-        }),
+        Some(print_proof(2, Some("print: form 2 differs"))),
     );
     assert!(!bad.proved);
     assert_eq!(bad.proof, "not proved");
@@ -172,14 +177,6 @@ fn with_print_fails_a_proved_display_whose_print_is_not_proved() {
     let mut failed = proved_verdict();
     failed.proved = false;
     failed.problem = Some("checks: first".into());
-    let kept = with_print(
-        failed,
-        Some(PrintProof {
-            forms: 1,
-            proved: false,
-            problem: Some("print: second".into()),
-            seconds: 0.0,
-        }),
-    );
+    let kept = with_print(failed, Some(print_proof(1, Some("print: second"))));
     assert_eq!(kept.problem.as_deref(), Some("checks: first"));
 }
