@@ -131,3 +131,86 @@ fn run_check_bounds_over_all_points_and_over_the_rational_ones() {
         p.powi(rational).log10()
     );
 }
+
+/// Chains of powers of θ̇, one of the kinematic sample's seven random coordinates (a polynomial
+/// of degree one there), so a side's degree bound is its largest exponent: `Degree` assumes no
+/// cancellation, so θ̇ + (θ̇³ − θ̇³) is θ̇ with a bound of 3.
+mod rate_powers {
+    use sliding_ladder::ladder::{Ladder, State};
+    use sliding_ladder::registry::{printed, reference, Chain, Side};
+    use sliding_ladder::scalar::Scalar;
+
+    fn pow<S: Scalar>(s: &State<S>, k: u32) -> S {
+        (0..k).fold(S::int(1), |p, _| p * s.rate.clone())
+    }
+    /// θ̇ + (θ̇ᵏ − θ̇ᵏ): θ̇ in value, degree k in the bound.
+    fn padded<S: Scalar>(s: &State<S>, k: u32) -> Side<S> {
+        reference("θ̇ padded", pow(s, 1) + (pow(s, k) - pow(s, k)))
+    }
+    /// θ̇² = θ̇² and θ̇⁵ = θ̇⁵: the largest is the second chain's, 5.
+    pub fn two_chains<S: Scalar>(_: &Ladder<S>, s: &State<S>) -> Vec<Chain<S>> {
+        vec![
+            vec![printed("θ̇²", pow(s, 2)), reference("θ̇²", pow(s, 2))],
+            vec![printed("θ̇⁵", pow(s, 5)), reference("θ̇⁵", pow(s, 5))],
+        ]
+    }
+    /// θ̇ = θ̇ = θ̇ + (θ̇³ − θ̇³): a later side carries the degree, 3.
+    pub fn late_side<S: Scalar>(_: &Ladder<S>, s: &State<S>) -> Vec<Chain<S>> {
+        vec![vec![
+            printed("θ̇", pow(s, 1)),
+            reference("θ̇", pow(s, 1)),
+            padded(s, 3),
+        ]]
+    }
+    /// θ̇ + (θ̇⁴ − θ̇⁴) = θ̇ = θ̇: the first side carries it, 4.
+    pub fn first_side<S: Scalar>(_: &Ladder<S>, s: &State<S>) -> Vec<Chain<S>> {
+        vec![vec![
+            padded(s, 4),
+            reference("θ̇", pow(s, 1)),
+            reference("θ̇", pow(s, 1)),
+        ]]
+    }
+}
+
+/// The degree a check reports, which its Schwartz-Zippel bound rests on, is the largest degree
+/// of any side's difference from its chain's first side, over every chain: planted chains of
+/// powers of θ̇ (degree one in the exact draws) give 5, 3 and 4, worked out by hand from the
+/// exponents and the rules of `Degree`. A degree that took the smallest chain, or only the first sides, would understate
+/// the chance that a false identity passes.
+#[test]
+fn run_check_degree_is_the_largest_of_any_sides_difference() {
+    use sliding_ladder::registry::sample::LadderSample;
+    use sliding_ladder::registry::Check;
+    let cfg = Config {
+        float_cases: 1,
+        exact_points: 1,
+        seed: 3,
+    };
+    let cases = [
+        (
+            "two chains",
+            sliding_ladder::ladder_fns!(rate_powers::two_chains),
+            5,
+        ),
+        (
+            "late side",
+            sliding_ladder::ladder_fns!(rate_powers::late_side),
+            3,
+        ),
+        (
+            "first side",
+            sliding_ladder::ladder_fns!(rate_powers::first_side),
+            4,
+        ),
+    ];
+    for (name, f, degree) in cases {
+        let check = Check {
+            name,
+            eval: Eval::Ladder(LadderSample::Kinematic, f),
+        };
+        let r = run_check(&check, &cfg);
+        assert_eq!(r.degree, degree, "{name}");
+        // The planted chains are identities: the degree is all that differs between them.
+        assert_eq!((r.float_failures, r.exact_failures), (0, 0), "{name}");
+    }
+}
