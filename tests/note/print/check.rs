@@ -214,3 +214,36 @@ fn check_print_fails_an_edited_print_on_its_float_states_alone() {
         r.problems
     );
 }
+
+/// The degree the print reports (the Schwartz-Zippel bound of a display checked by its print
+/// rests on it) is the largest degree of any form's difference from its chain's first form, in
+/// the random coordinates of the states. On the kinematic ladder θ̇ is one of them (degree one),
+/// so a planted print of powers of θ̇ has the degree of its largest exponent: 5, 3 where a
+/// later form carries it, 4 where a later statement does (`Degree` assumes no cancellation: θ̇ + θ̇³ − θ̇³ has the bound 3).
+#[test]
+fn check_print_degree_is_the_largest_of_any_forms_difference() {
+    use sliding_ladder::registry::print_check::print_sample;
+    use sliding_ladder::registry::sample::{LadderSample, PrintSample};
+    let mut e = equations()
+        .into_iter()
+        .find(|e| print_sample(e) == Some(PrintSample::Ladder(LadderSample::Kinematic)))
+        .expect("a display on the kinematic ladder");
+    e.checks.clear();
+    for (latex, degree) in [
+        (r"\dot{\theta}^{5} = \dot{\theta}^{5}", 5),
+        (
+            r"\dot{\theta} = \dot{\theta} = \dot{\theta} + \dot{\theta}^{3} - \dot{\theta}^{3}",
+            3,
+        ),
+        (r"\dot{\theta}^{2} = \dot{\theta} \dot{\theta}", 2),
+        // Two statements, two chains: the second's degree is the largest.
+        (
+            r"\dot{\theta}^{2} = \dot{\theta}^{2},\quad \dot{\theta}^{4} = \dot{\theta}^{4}",
+            4,
+        ),
+    ] {
+        let r = check_print(&e, latex, &quick());
+        assert!(r.unparsed.is_empty(), "{latex}: {:?}", r.unparsed);
+        assert_eq!(r.degree, degree, "{latex}");
+    }
+}
