@@ -18,14 +18,16 @@ use crate::vector::Vec3;
 type Q = Rational;
 
 /// Three exact general systems of three particles with a moving point P (fixed integers,
-/// masses positive, every other value free).
+/// masses positive, every other value free): every component of P's position, velocity,
+/// acceleration and jerk nonzero in each system and of both signs among them, every component of
+/// the particles' of both signs among them, no two particles of a system at one place.
 pub fn general_systems() -> Vec<(System<Q>, Point<Q>)> {
     let n = 3;
     (0..3)
         .map(|seed: i64| {
             let values: Vec<Q> = (0..n * PER_PARTICLE + EXTRA)
                 .map(|i| {
-                    let v = (i as i64 * (7 + 2 * seed) + 3 + seed) % 19 - 9;
+                    let v = (i as i64 * (7 + 5 * seed) + 9) % 19 - 9;
                     if i < n * PER_PARTICLE && i % PER_PARTICLE == 0 {
                         Q::from_integer((v.abs() + 1).into())
                     } else {

@@ -257,3 +257,73 @@ fn states_take_both_signs_of_every_rate() {
     assert_eq!(signs(|s| s.accel.to_f64()), (true, true), "θ̈");
     assert_eq!(signs(|s| s.jerk.to_f64()), (true, true), "θ⃛");
 }
+
+/// The appendix claims' exact systems are general, as their doc says: three systems of three
+/// particles, every mass positive; every position, velocity, acceleration and jerk component
+/// positive for some particle and negative for another; every component of P's position,
+/// velocity, acceleration and jerk nonzero in each system and of both signs among them; no two
+/// particles of a system at one place; and the three systems different. A claim that holds only
+/// where one of these vanishes (P at rest, a particle unaccelerated) or keeps one sign is
+/// exposed by them. (This test found a_P's z component zero in all three systems before the
+/// draw was changed: a claim true only for a_P in the plane of x and y passed.)
+#[test]
+fn general_systems_are_general() {
+    use sliding_ladder::vector::Vec3;
+    use sliding_ladder::verify::claims::appendix::general_systems;
+    let systems = general_systems();
+    assert_eq!(systems.len(), 3);
+    let comps = |v: &Vec3<Rational>| [v.x.to_f64(), v.y.to_f64(), v.z.to_f64()];
+    let both_signs =
+        |values: Vec<f64>| values.iter().any(|x| *x > 0.0) && values.iter().any(|x| *x < 0.0);
+    for (s, p) in &systems {
+        assert_eq!(s.particles.len(), 3);
+        assert!(s.particles.iter().all(|q| q.m.to_f64() > 0.0), "a mass ≤ 0");
+        for (name, v) in [("v_P", &p.v), ("a_P", &p.a), ("j_P", &p.j)] {
+            assert!(*v != Vec3::zero(), "{name} = 0: P is not moving generally");
+        }
+        for (i, a) in s.particles.iter().enumerate() {
+            for b in &s.particles[i + 1..] {
+                assert!(a.x != b.x, "two particles at one place");
+            }
+        }
+    }
+    let quantities: [(
+        &str,
+        fn(&sliding_ladder::system::Particle<Rational>) -> &Vec3<Rational>,
+    ); 4] = [
+        ("x", |q| &q.x),
+        ("v", |q| &q.v),
+        ("a", |q| &q.a),
+        ("j", |q| &q.j),
+    ];
+    for (name, f) in quantities {
+        for k in 0..3 {
+            let values = systems
+                .iter()
+                .flat_map(|(s, _)| s.particles.iter().map(|q| comps(f(q))[k]))
+                .collect();
+            assert!(both_signs(values), "{name}, component {k}: one sign only");
+        }
+    }
+    let points: [(
+        &str,
+        fn(&sliding_ladder::system::Point<Rational>) -> &Vec3<Rational>,
+    ); 4] = [
+        ("x_P", |p| &p.x),
+        ("v_P", |p| &p.v),
+        ("a_P", |p| &p.a),
+        ("j_P", |p| &p.j),
+    ];
+    for (name, f) in points {
+        for k in 0..3 {
+            let values: Vec<f64> = systems.iter().map(|(_, p)| comps(f(p))[k]).collect();
+            assert!(
+                values.iter().all(|x| *x != 0.0),
+                "{name}, component {k}: 0 in a system"
+            );
+            assert!(both_signs(values), "{name}, component {k}: one sign only");
+        }
+    }
+    assert!(systems[0].0.particles[0].x != systems[1].0.particles[0].x);
+    assert!(systems[1].0.particles[0].x != systems[2].0.particles[0].x);
+}
