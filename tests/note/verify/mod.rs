@@ -4,6 +4,7 @@ mod claims;
 mod errata_difference;
 mod errata_point;
 mod errata_reading;
+mod fill;
 mod golfer;
 mod judge;
 mod print_alone;
