@@ -249,3 +249,97 @@ fn the_whole_terminal_output_of_ladder_errata_is_unicode() {
         .expect("runs");
     assert!(String::from_utf8_lossy(&json.stdout).contains(r"-\\frac{2}{3}m l^2 \\dot{\\theta}"));
 }
+
+/// The erratum about a system of particles, (68), a vector display: rebuilt from the printed
+/// point alone (masses, positions, velocities, accelerations of the particles and of P), its
+/// printed and corrected forms, evaluated by the print evaluator, differ first in the component
+/// the report names, by exactly the printed residual (the components before it agree), and the
+/// residual is measured against a side that is not the misprint. A report that named another
+/// component, or measured at another point, fails here.
+#[test]
+fn the_particle_erratum_reproduces_its_residual_in_the_component_it_names() {
+    use sliding_ladder::system::{Particle, Point, System};
+    use sliding_ladder::vector::Vec3;
+    let list = errata(&Default::default());
+    let r = list
+        .iter()
+        .find(|r| r.point.iter().any(|(n, _)| n == "m_1"))
+        .expect("an erratum about particles");
+    let v3 = |name: &str| {
+        let t = r
+            .point
+            .iter()
+            .find(|(n, _)| n == name)
+            .expect(name)
+            .1
+            .clone();
+        let c: Vec<Rational> = t.trim_matches(['(', ')']).split(", ").map(q).collect();
+        Vec3::new(c[0].clone(), c[1].clone(), c[2].clone())
+    };
+    let count = r.point.iter().filter(|(n, _)| n.starts_with("m_")).count();
+    let particles = (1..=count)
+        .map(|i| Particle {
+            m: coordinate(r, &format!("m_{i}")),
+            x: v3(&format!("x_{i}")),
+            v: v3(&format!("v_{i}")),
+            a: v3(&format!("a_{i}")),
+            j: Vec3::zero(),
+        })
+        .collect();
+    let sys = System {
+        particles,
+        spin: None,
+    };
+    let p = Point {
+        x: v3("x_P"),
+        v: v3("v_P"),
+        a: v3("a_P"),
+        j: Vec3::zero(),
+    };
+    let e = equations()
+        .into_iter()
+        .find(|e| e.number == r.number)
+        .unwrap();
+    let err = e.erratum.unwrap();
+    let (printed, corrected) = (forms(err.printed), forms(err.corrected));
+    let k = (0..printed.len())
+        .find(|&k| squash(&printed[k]) != squash(&corrected[k]))
+        .unwrap();
+    let ctx = Ctx {
+        model: Rc::new(Model::particles(sys, p)),
+        section: e.section,
+        number: e.number,
+        // The misprint is in Milne's statement of the display, in his symbols.
+        milne: true,
+        index: None,
+        table: sliding_ladder::print::symbols::table(),
+    };
+    let value = |t: &str| match evaluate(&parse_expr(t).unwrap(), &ctx).unwrap() {
+        Value::Vector(v) => [v.x, v.y, v.z],
+        Value::Scalar(_) => panic!("({}) is a vector display", e.number),
+    };
+    let (a, b) = (value(&printed[k]), value(&corrected[k]));
+    let diff: Vec<Rational> = (0..3).map(|i| a[i].clone() - b[i].clone()).collect();
+    let first = diff
+        .iter()
+        .position(|d| !d.is_zero())
+        .expect("a nonzero component");
+    assert_eq!(
+        r.residual_component,
+        Some(['x', 'y', 'z'][first]),
+        "({})",
+        r.number
+    );
+    assert_eq!(diff[first], q(&r.printed_residual_exact), "({})", r.number);
+    assert_eq!(r.corrected_residual, "0");
+    assert!(
+        !r.residual_against.is_empty() && r.residual_against != "none",
+        "({}): measured against '{}'",
+        r.number,
+        r.residual_against
+    );
+    // The scalar errata name no component.
+    for s in list.iter().filter(|s| s.number != r.number) {
+        assert_eq!(s.residual_component, None, "({})", s.number);
+    }
+}
