@@ -7,6 +7,7 @@ mod errata_reading;
 mod fill;
 mod golfer;
 mod judge;
+mod methods;
 mod print_alone;
 mod proof;
 mod rolling;
