@@ -311,3 +311,40 @@ fn prove_check_reports_the_first_instance_that_fails() {
     assert_eq!(label, "Σ m_i");
     assert_eq!(text(&diff), "-m_1");
 }
+
+/// A check whose symbolic evaluation panics (as one that takes a square root of a symbol would):
+/// with a fixed message, and with a formatted one.
+fn panics_with_a_literal<S: Scalar>(_: &Ladder<S>, _: &State<S>) -> Vec<Chain<S>> {
+    panic!("no symbolic square root")
+}
+
+fn panics_with_a_formatted_message<S: Scalar>(_: &Ladder<S>, _: &State<S>) -> Vec<Chain<S>> {
+    panic!("no symbolic value at step {}", 3)
+}
+
+/// A check that cannot be evaluated in symbols is not proved: it is "sampled only", and the
+/// reason quotes the panic's own message, whether the message was a literal or formatted.
+#[test]
+fn prove_check_of_a_check_that_panics_is_sampled_only_with_its_reason() {
+    for (f, why) in [
+        (
+            sliding_ladder::ladder_fns!(panics_with_a_literal),
+            "no symbolic square root",
+        ),
+        (
+            sliding_ladder::ladder_fns!(panics_with_a_formatted_message),
+            "no symbolic value at step 3",
+        ),
+    ] {
+        let check = Check {
+            name: "planted panic",
+            eval: Eval::Ladder(LadderSample::Kinematic, f),
+        };
+        let p = prove_check(&check);
+        assert!(!p.proved && !p.holds(), "{why}");
+        assert_eq!(
+            p.sampled_only.as_deref(),
+            Some(format!("symbolic evaluation failed: {why}").as_str())
+        );
+    }
+}
