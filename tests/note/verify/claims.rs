@@ -287,10 +287,8 @@ fn general_systems_are_general() {
             }
         }
     }
-    let quantities: [(
-        &str,
-        fn(&sliding_ladder::system::Particle<Rational>) -> &Vec3<Rational>,
-    ); 4] = [
+    type Of<T> = fn(&T) -> &Vec3<Rational>;
+    let quantities: [(&str, Of<sliding_ladder::system::Particle<Rational>>); 4] = [
         ("x", |q| &q.x),
         ("v", |q| &q.v),
         ("a", |q| &q.a),
@@ -305,10 +303,7 @@ fn general_systems_are_general() {
             assert!(both_signs(values), "{name}, component {k}: one sign only");
         }
     }
-    let points: [(
-        &str,
-        fn(&sliding_ladder::system::Point<Rational>) -> &Vec3<Rational>,
-    ); 4] = [
+    let points: [(&str, Of<sliding_ladder::system::Point<Rational>>); 4] = [
         ("x_P", |p| &p.x),
         ("v_P", |p| &p.v),
         ("a_P", |p| &p.a),
