@@ -248,10 +248,8 @@ fn run_floor(
     for _ in 0..cfg.float_cases {
         let raw = RawLadder::draw(rng);
         let ((l, s), (lb, sb)) = raw.build(LadderSample::Kinematic);
-        let (lg, g) = (l.l, l.g);
-        let t = (lg / g).sqrt();
-        let units = [lg, lg / t, lg / (t * t), lg / (t * t * t)];
-        let v: [f64; 4] = std::array::from_fn(|i| 3.0 * rng.gen_range(-1.0..1.0) * units[i]);
+        let unit: [f64; 4] = std::array::from_fn(|_| rng.gen_range(-1.0..1.0));
+        let v = super::sample::floor_motion(unit, l.l, l.g);
         let (s, x) = super::sample::floor_state(sort, &l, s, v);
         let (sb, xb) = super::sample::floor_state(sort, &lb, sb, v.map(Bound::exact));
         record_float(rep, (f.float)(&l, &s, &x), (f.bound)(&lb, &sb, &xb));

@@ -135,6 +135,16 @@ impl RawLadder {
     }
 }
 
+/// The floor phase's centre motion (X, Ẋ, Ẍ, X⃛) from four unit-free draws in [−1, 1), each
+/// scaled by the ladder's own length and time, l and √(l/g), as [`RawLadder::build`] scales θ̇,
+/// θ̈, θ⃛ (times 3): X is of the size of the ladder and its rates those of its fall, at any scale
+/// of m, l, g.
+pub fn floor_motion(unit: [f64; 4], l: f64, g: f64) -> [f64; 4] {
+    let t = (l / g).sqrt();
+    let scale = [l, l / t, l / (t * t), l / (t * t * t)];
+    std::array::from_fn(|i| 3.0 * unit[i] * scale[i])
+}
+
 fn float_state<S: Scalar>(
     sort: LadderSample,
     [m, l, g]: [f64; 3],

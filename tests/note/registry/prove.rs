@@ -348,3 +348,37 @@ fn prove_check_of_a_check_that_panics_is_sampled_only_with_its_reason() {
         );
     }
 }
+
+/// A planted from-rest identity that is false by θ̇ itself: θ̇ = 0.
+fn rate_is_zero<S: Scalar>(_: &Ladder<S>, s: &State<S>) -> Vec<Chain<S>> {
+    vec![vec![
+        printed("planted: θ̇", s.rate.clone()),
+        reference("0", S::int(0)),
+    ]]
+}
+
+/// From rest, a difference is reduced modulo the energy's θ̇² = r to A + θ̇ B, and the failure
+/// shows that reduced difference: for the planted θ̇ = 0 it is 0 − θ̇ = −θ̇ (A = 0, B = −1), with
+/// its sign. A reduction to A − θ̇ B would still tell zero from nonzero, and show +θ̇.
+#[test]
+fn prove_check_from_rest_shows_the_reduced_difference_with_its_sign() {
+    use sliding_ladder::registry::prove::symbolic_ladder;
+    let check = Check {
+        name: "planted from rest",
+        eval: Eval::Ladder(
+            LadderSample::OnShellFromRest,
+            sliding_ladder::ladder_fns!(rate_is_zero),
+        ),
+    };
+    let p = prove_check(&check);
+    assert!(!p.proved);
+    let (label, diff) = p.failure.expect("a nonzero difference");
+    assert_eq!(label, "0");
+    let (_, s, relation) = symbolic_ladder(LadderSample::OnShellFromRest);
+    assert!(relation.is_some(), "from rest, θ̇² is reduced");
+    assert!(
+        (diff.clone() + s.rate.clone()).is_zero(),
+        "the difference is {}, not −θ̇",
+        text(&diff)
+    );
+}

@@ -128,3 +128,21 @@ fn raw_ladder_build_scales_the_unit_draws_to_the_ladders_rates() {
     let eq5 = 0.75 * 9.0 / 4.0 * 0.7f64.sin();
     assert!((on.accel - eq5).abs() <= 4.0 * f64::EPSILON * eq5);
 }
+
+/// The floor phase's float draws scale as the ladder's do: X by l, Ẋ by l/t, Ẍ by l/t², X⃛ by
+/// l/t³ with t = √(l/g), times 3. By hand for l = 4, g = 16 (t = 1/2: scales 4, 8, 16, 32) and
+/// u = (1/2, −1/4, 1, −1): X = 6, Ẋ = −6, Ẍ = 48, X⃛ = −96, all exact in binary. A time scale
+/// of √(l·g), or a scale divided otherwise, gives other values.
+#[test]
+fn floor_motion_scales_the_unit_draws_by_the_ladders_length_and_time() {
+    use sliding_ladder::registry::sample::floor_motion;
+    assert_eq!(
+        floor_motion([0.5, -0.25, 1.0, -1.0], 4.0, 16.0),
+        [6.0, -6.0, 48.0, -96.0]
+    );
+    // Another ladder, the same unit draws: l = 1, g = 4 (t = 1/2: scales 1, 2, 4, 8).
+    assert_eq!(
+        floor_motion([0.5, -0.25, 1.0, -1.0], 1.0, 4.0),
+        [1.5, -1.5, 12.0, -24.0]
+    );
+}
