@@ -27,13 +27,19 @@ impl<S: Scalar> Reader<'_, S> {
 
 /// Build a particle system and reference point of the given sort from values in any scalar type
 /// (f64 and `Bound` from a [`RawParticles`](super::RawParticles), rationals and degrees from
-/// random integers). `values` holds `n·PER_PARTICLE + EXTRA` numbers.
+/// random integers). `values` holds `n·PER_PARTICLE + EXTRA` numbers, exactly: a caller whose
+/// layout differs from [`read`]'s (more values, as well as fewer) is a defect, not a sample.
 pub fn particle_system<S: Scalar>(
     sort: ParticleSample,
     n: usize,
     values: &[S],
 ) -> (System<S>, Point<S>) {
     use ParticleSample::*;
+    assert_eq!(
+        values.len(),
+        n * super::PER_PARTICLE + super::EXTRA,
+        "particle_system: {n} particles take n·PER_PARTICLE + EXTRA values"
+    );
     let planar = matches!(sort, RollingAboutP | PlanarRigid);
     let (mut particles, p, omega, omega_dot) = read(values, n, planar);
     let (p, spin) = match sort {

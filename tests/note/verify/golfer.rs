@@ -189,6 +189,26 @@ fn setup_length_is_the_radius_plus_the_sink_and_sag_lengths() {
     assert_eq!(rising.length(), golf.length());
 }
 
+/// The model's state scale (the error norm's, per component of x, v, ω) is the orbit's own
+/// size: lengths ℓ, speeds ℓΩ (a point orbiting at Ω a distance ℓ from the axis), spins ℓΩ/a
+/// (the spin that rolls the ball at that speed). By hand for the golf ball: ℓ = 0.093525 m,
+/// Ω = 20 rad/s, a = 0.021335 m, so ℓΩ = 1.8705 m/s and ℓΩ/a = 1.8705/0.021335 rad/s; each
+/// within a few roundings of the products and quotients that form it.
+#[test]
+fn setup_model_scales_the_state_by_the_orbits_lengths_speeds_and_spins() {
+    use sliding_ladder::sim::integrators::Ode;
+    let golf = Setup::golf();
+    let model = golf.model(ROLLING.0, ROLLING.1);
+    let scale = model.scale(&golf.start());
+    let (l, v, w) = (0.093525, 1.8705, 1.8705 / 0.021335);
+    let close = |a: f64, b: f64| (a - b).abs() <= 8.0 * f64::EPSILON * b;
+    for k in 0..3 {
+        assert!(close(scale[k], l), "x scale {}", scale[k]);
+        assert!(close(scale[3 + k], v), "v scale {}", scale[3 + k]);
+        assert!(close(scale[6 + k], w), "ω scale {}", scale[6 + k]);
+    }
+}
+
 /// Each reading's rounding floor has the reading's dimension (height, returns, lows and radius
 /// a length; the return rate and slip a velocity; periods a time; the orbit rate a rate):
 /// rescale the setup's lengths by k and every length and velocity floor scales by k, the rest
