@@ -247,3 +247,29 @@ fn check_print_degree_is_the_largest_of_any_forms_difference() {
         assert_eq!(r.degree, degree, "{latex}");
     }
 }
+
+/// After `\text{Milne : }`, Milne's k-th statement restates our k-th: each joins our chain of
+/// the same place. A display of two statements of ours (the total mass, the momentum) and
+/// Milne's two gives two chains, 3 and 4 forms, and holds as printed; Milne's momentum held to
+/// our mass instead would fail (a vector against a scalar).
+#[test]
+fn print_chains_holds_milnes_kth_statement_to_our_kth() {
+    use sliding_ladder::registry::print_check::print_chains;
+    let latex = r"m = \sum_i m_i, \quad \mathbf{P} = \sum_i m_i \mathbf{v}_i, \quad \text{Milne : } \sum m, \quad \mathbf{L} = \sum m \dot{\mathbf{r}}";
+    let (count, chains) = print_chains(65, latex).expect("parses");
+    assert_eq!(count, 7);
+    let texts: Vec<Vec<String>> = chains
+        .iter()
+        .map(|c| c.iter().map(|f| f.text.clone()).collect())
+        .collect();
+    assert_eq!(texts.len(), 2, "{texts:?}");
+    assert_eq!(texts[0].len(), 3, "{texts:?}");
+    assert_eq!(texts[1].len(), 4, "{texts:?}");
+    assert!(texts[0][2].contains("\\sum m"), "{texts:?}");
+    assert!(texts[1][2].contains("\\mathbf{L}"), "{texts:?}");
+    let mut e = equation(65);
+    e.checks.clear();
+    let r = check_print(&e, latex, &quick());
+    assert!(r.problems.is_empty() && r.unparsed.is_empty(), "{r:?}");
+    assert_eq!((r.parsed, r.checked), (7, 7));
+}

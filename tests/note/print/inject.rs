@@ -163,3 +163,27 @@ fn injections_makes_every_typo_of_each_sort_in_a_display() {
         "{ten:#?}"
     );
 }
+
+/// A dropped factor is a bare m, l or g beside another factor: never a letter that carries an
+/// index or power of its own (m in m₁) nor one inside an index (m in x_m). In `a = g m_1 + x_m l`,
+/// by hand: g (beside m) and l (beside m) are dropped; the two m's never are.
+#[test]
+fn injections_drop_only_a_bare_factor_outside_any_index() {
+    let drops: Vec<String> = injections(5, "a = g m_1 + x_m l")
+        .into_iter()
+        .filter(|i| i.typo == Typo::DropFactor)
+        .map(|i| i.latex)
+        .collect();
+    assert_eq!(drops.len(), 2, "{drops:?}");
+    for d in &drops {
+        assert_eq!(d.matches('m').count(), 2, "an m was dropped: {d}");
+    }
+    assert!(drops.iter().any(|d| !d.contains('g')), "{drops:?}");
+    assert!(drops.iter().any(|d| !d.contains('l')), "{drops:?}");
+    // Nor is the index 1 of m₁ a coefficient to raise.
+    let raised = injections(5, "a = g m_1 + x_m l")
+        .into_iter()
+        .filter(|i| i.typo == Typo::Coefficient)
+        .count();
+    assert_eq!(raised, 0);
+}
