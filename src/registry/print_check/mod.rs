@@ -49,6 +49,25 @@ const LABELS: [&str; 24] = [
     "form 18", "form 19", "form 20", "form 21", "form 22", "form 23", "form 24",
 ];
 
+/// The label of the form at 0-based place `k` of a display, "form k+1", as `ladder show`
+/// numbers them. A side's label is `&'static str`: the first 24 are constants, and a display
+/// longer than any of the note's gets each further label made once and kept for the run (until
+/// this, every form after the 24th was reported as "form 24").
+pub fn form_label(k: usize) -> &'static str {
+    if let Some(l) = LABELS.get(k) {
+        return l;
+    }
+    static MORE: std::sync::Mutex<Vec<&'static str>> = std::sync::Mutex::new(Vec::new());
+    let mut more = MORE
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    while more.len() <= k - LABELS.len() {
+        let n = LABELS.len() + more.len() + 1;
+        more.push(Box::leak(format!("form {n}").into_boxed_str()));
+    }
+    more[k - LABELS.len()]
+}
+
 /// One printed form in a chain to check.
 #[derive(Clone, Debug)]
 pub struct Form {
@@ -223,7 +242,7 @@ pub(crate) fn evaluate_chains<S: Scalar>(
                     .zip(&comps)
                     .enumerate()
                     .map(|(j, (f, c))| Side {
-                        label: LABELS[(chain_offset(chains, ci) + j).min(LABELS.len() - 1)],
+                        label: form_label(chain_offset(chains, ci) + j),
                         value: c[k].clone(),
                         role: f.role,
                     })

@@ -9,7 +9,7 @@
 //! residual. `ladder verify` (its `units` column) and `ladder show` (each form's SI unit) both
 //! read this module, so the two cannot disagree.
 
-use super::{print_chains, print_sample, Form, PrintSample, LABELS};
+use super::{form_label, print_chains, print_sample, Form, PrintSample};
 use crate::print::clash::{unlike_components, unlike_sum};
 use crate::print::eval::{evaluate, Ctx};
 use crate::print::quantity::Model;
@@ -178,8 +178,7 @@ pub fn judge_forms(chains: &[Vec<FormUnits>]) -> UnitsFindings {
                 _ => None,
             };
             if f.role == Role::Misprint {
-                out.misprints
-                    .push((LABELS[(f.index - 1).min(LABELS.len() - 1)], finding));
+                out.misprints.push((form_label(f.index - 1), finding));
             } else if let Some(p) = finding {
                 out.problems.push(p);
             }

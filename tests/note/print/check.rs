@@ -273,3 +273,30 @@ fn print_chains_holds_milnes_kth_statement_to_our_kth() {
     assert!(r.problems.is_empty() && r.unparsed.is_empty(), "{r:?}");
     assert_eq!((r.parsed, r.checked), (7, 7));
 }
+
+/// Every form is named by its own place, however long the display: "form 1" … "form 24" and on
+/// past them (a label made once is kept, the same `&'static str` each time). A display of 27
+/// forms whose last is wrong names "form 27" (the labels once stopped at "form 24").
+#[test]
+fn form_label_names_every_place_and_a_long_displays_last_form() {
+    use sliding_ladder::registry::print_check::form_label;
+    assert_eq!(form_label(0), "form 1");
+    assert_eq!(form_label(23), "form 24");
+    assert_eq!(form_label(24), "form 25");
+    assert_eq!(form_label(99), "form 100");
+    assert_eq!(form_label(30), "form 31");
+    assert!(std::ptr::eq(form_label(99), form_label(99)));
+    let e = equation(5);
+    let right = r"\frac{3g}{4l} \sin \theta";
+    let mut forms = vec![r"\ddot{\theta}".to_string()];
+    forms.extend((0..25).map(|_| right.to_string()));
+    forms.push(r"\frac{3g}{5l} \sin \theta".into());
+    let latex = forms.join(" = ");
+    let r = check_print(&e, &latex, &quick());
+    assert_eq!(r.parsed, 27, "{r:?}");
+    assert!(
+        r.problems.iter().any(|p| p.contains("form 27 ")),
+        "{:?}",
+        r.problems
+    );
+}
