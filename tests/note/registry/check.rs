@@ -214,3 +214,63 @@ fn run_check_degree_is_the_largest_of_any_sides_difference() {
         assert_eq!((r.float_failures, r.exact_failures), (0, 0), "{name}");
     }
 }
+
+/// Planted floor-phase chains: Ẍ = 0, which holds on the floor's motion ((P2): no horizontal
+/// force) and not off it, and X = X, which holds anywhere.
+mod floor_planted {
+    use sliding_ladder::ladder::floor_phase::Slide;
+    use sliding_ladder::ladder::{Ladder, State};
+    use sliding_ladder::registry::{printed, reference, Chain};
+    use sliding_ladder::scalar::Scalar;
+
+    pub fn needs_the_law<S: Scalar>(_: &Ladder<S>, _: &State<S>, x: &Slide<S>) -> Vec<Chain<S>> {
+        vec![vec![
+            printed("Ẍ", x.accel.clone()),
+            reference("0", S::int(0)),
+        ]]
+    }
+    pub fn any_motion<S: Scalar>(_: &Ladder<S>, _: &State<S>, x: &Slide<S>) -> Vec<Chain<S>> {
+        vec![vec![printed("X", x.x.clone()), reference("X", x.x.clone())]]
+    }
+}
+
+/// An on-shell check of the floor phase is re-run off the motion, where it must fail: Ẍ = 0
+/// holds on the motion and fails off it (off_shell_fails = true); X = X holds off it too, and
+/// the report says so (false), which `ladder verify` flags. A kinematic floor check is not
+/// re-run (None).
+#[test]
+fn run_check_of_the_floor_phase_tells_a_check_that_needs_the_law() {
+    use sliding_ladder::registry::sample::LadderSample;
+    use sliding_ladder::registry::Check;
+    let cfg = Config {
+        float_cases: 3,
+        exact_points: 3,
+        seed: 6,
+    };
+    let run = |sort, f| {
+        run_check(
+            &Check {
+                name: "planted floor check",
+                eval: Eval::Floor(sort, f),
+            },
+            &cfg,
+        )
+    };
+    let law = run(
+        LadderSample::OnShell,
+        sliding_ladder::floor_fns!(floor_planted::needs_the_law),
+    );
+    assert!(law.passed(), "{law:?}");
+    assert_eq!(law.off_shell_fails, Some(true));
+    let any = run(
+        LadderSample::OnShell,
+        sliding_ladder::floor_fns!(floor_planted::any_motion),
+    );
+    assert_eq!((any.float_failures, any.exact_failures), (0, 0));
+    assert_eq!(any.off_shell_fails, Some(false));
+    let kinematic = run(
+        LadderSample::Kinematic,
+        sliding_ladder::floor_fns!(floor_planted::any_motion),
+    );
+    assert_eq!(kinematic.off_shell_fails, None);
+}
