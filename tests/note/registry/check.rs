@@ -162,6 +162,13 @@ mod rate_powers {
             padded(s, 3),
         ]]
     }
+    /// p = 0 with p = 2⁶¹ − 1: false in rationals, true modulo p.
+    pub fn multiple_of_p<S: Scalar>(_: &Ladder<S>, _: &State<S>) -> Vec<Chain<S>> {
+        vec![vec![
+            printed("p", S::int((1 << 61) - 1)),
+            reference("0", S::int(0)),
+        ]]
+    }
     /// θ̇ + (θ̇⁴ − θ̇⁴) = θ̇ = θ̇: the first side carries it, 4.
     pub fn first_side<S: Scalar>(_: &Ladder<S>, s: &State<S>) -> Vec<Chain<S>> {
         vec![vec![
@@ -232,6 +239,12 @@ mod floor_planted {
     pub fn any_motion<S: Scalar>(_: &Ladder<S>, _: &State<S>, x: &Slide<S>) -> Vec<Chain<S>> {
         vec![vec![printed("X", x.x.clone()), reference("X", x.x.clone())]]
     }
+    pub fn off_by_one<S: Scalar>(_: &Ladder<S>, _: &State<S>, x: &Slide<S>) -> Vec<Chain<S>> {
+        vec![vec![
+            printed("X + 1", x.x.clone() + S::int(1)),
+            reference("X", x.x.clone()),
+        ]]
+    }
 }
 
 /// An on-shell check of the floor phase is re-run off the motion, where it must fail: Ẍ = 0
@@ -273,4 +286,85 @@ fn run_check_of_the_floor_phase_tells_a_check_that_needs_the_law() {
         sliding_ladder::floor_fns!(floor_planted::any_motion),
     );
     assert_eq!(kinematic.off_shell_fails, None);
+}
+
+/// `float_residual` maps a side that is not a number to an infinite residual (so a NaN, an
+/// overflow, or a difference with no error bound to scale it fails and prints as ∞), an exact
+/// agreement to 0, and otherwise scales the difference by u·(e_a + e_b).
+#[test]
+fn float_residual_scales_a_difference_and_makes_a_non_number_infinite() {
+    use sliding_ladder::registry::check::float_residual;
+    use sliding_ladder::registry::{printed, reference};
+    use sliding_ladder::scalar::{Bound, UNIT_ROUNDOFF};
+    let run = |a: f64, b: f64, e: f64| {
+        float_residual(
+            &[vec![printed("a", a), reference("b", b)]],
+            &[vec![
+                printed("a", Bound { v: a, e }),
+                reference("b", Bound { v: b, e }),
+            ]],
+        )
+    };
+    assert_eq!(run(f64::NAN, 1.0, 1.0), (f64::INFINITY, "b"));
+    assert_eq!(run(1.0, f64::NAN, 1.0), (f64::INFINITY, "b"));
+    assert_eq!(run(f64::INFINITY, 1.0, 1.0), (f64::INFINITY, "b"));
+    assert_eq!(run(1.0, 1.0 + f64::EPSILON, 0.0), (f64::INFINITY, "b"));
+    assert_eq!(run(3.0, 3.0, 0.0), (0.0, ""));
+    // |1 − (1 + ε)| / (u (1 + 1)) = ε / (2u) = 1: one ulp against two half-ulp bounds.
+    assert_eq!(
+        run(1.0, 1.0 + f64::EPSILON, 1.0).0,
+        f64::EPSILON / (2.0 * UNIT_ROUNDOFF)
+    );
+}
+
+/// A floor-phase check that fails counts every exact point it fails at (and every float state):
+/// X = X + 1 planted, 3 of 3 of each.
+#[test]
+fn run_check_of_the_floor_phase_counts_its_failures() {
+    use sliding_ladder::registry::sample::LadderSample;
+    use sliding_ladder::registry::Check;
+    let cfg = Config {
+        float_cases: 3,
+        exact_points: 3,
+        seed: 6,
+    };
+    let r = run_check(
+        &Check {
+            name: "planted floor misprint",
+            eval: Eval::Floor(
+                LadderSample::Kinematic,
+                sliding_ladder::floor_fns!(floor_planted::off_by_one),
+            ),
+        },
+        &cfg,
+    );
+    assert_eq!((r.float_failures, r.exact_failures), (3, 3), "{r:?}");
+    assert!(!r.passed());
+}
+
+/// A value that is a multiple of p = 2⁶¹ − 1 is zero modulo p: only the rational points see it.
+/// With three exact points, the first in rationals and the rest modulo p ([`RATIONAL_POINTS`]
+/// = 1), the planted p = 0 fails at exactly one point.
+#[test]
+fn run_check_takes_its_first_points_in_rationals_and_the_rest_modulo_p() {
+    use sliding_ladder::registry::check::RATIONAL_POINTS;
+    use sliding_ladder::registry::sample::LadderSample;
+    use sliding_ladder::registry::Check;
+    assert_eq!(RATIONAL_POINTS, 1);
+    let cfg = Config {
+        float_cases: 0,
+        exact_points: 3,
+        seed: 6,
+    };
+    let r = run_check(
+        &Check {
+            name: "planted multiple of p",
+            eval: Eval::Ladder(
+                LadderSample::Kinematic,
+                sliding_ladder::ladder_fns!(rate_powers::multiple_of_p),
+            ),
+        },
+        &cfg,
+    );
+    assert_eq!((r.exact_points, r.exact_failures), (3, 1), "{r:?}");
 }

@@ -69,3 +69,50 @@ proptest! {
         }
     }
 }
+
+/// Planted float cases: a particle identity off by a factor 2 (2 m₁ = m₁) and a ladder one
+/// (2 m = m) are reported far past the threshold, naming the side that differs from the first;
+/// the true halves (m₁ = m₁, m = m) at 0. The proptests above read these helpers, so the
+/// helpers must be able to fail.
+mod planted_float {
+    use sliding_ladder::ladder::{Ladder, State};
+    use sliding_ladder::registry::{printed, reference, Chain};
+    use sliding_ladder::scalar::Scalar;
+    use sliding_ladder::system::{Point, System};
+
+    pub fn doubled_mass<S: Scalar>(sys: &System<S>, _: &Point<S>) -> Vec<Chain<S>> {
+        let m1 = sys.particles[0].m.clone();
+        vec![
+            vec![printed("m₁", m1.clone()), reference("m₁ again", m1.clone())],
+            vec![printed("2m₁", S::int(2) * m1.clone()), reference("m₁", m1)],
+        ]
+    }
+    pub fn doubled_ladder<S: Scalar>(l: &Ladder<S>, _: &State<S>) -> Vec<Chain<S>> {
+        vec![
+            vec![printed("m", l.m.clone()), reference("m again", l.m.clone())],
+            vec![
+                printed("2m", S::int(2) * l.m.clone()),
+                reference("m", l.m.clone()),
+            ],
+        ]
+    }
+}
+
+#[test]
+fn float_cases_report_a_planted_wrong_side_past_the_threshold() {
+    use rand::SeedableRng;
+    use sliding_ladder::registry::sample::{LadderSample, ParticleSample, RawLadder, RawParticles};
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(12);
+    for _ in 0..5 {
+        let raw = RawParticles::draw(&mut rng);
+        let f = sliding_ladder::particle_fns!(planted_float::doubled_mass);
+        let (scaled, side) = particle_float_case(ParticleSample::General, &f, &raw);
+        assert!(scaled > 1e6 * TOLERANCE_FACTOR, "{scaled}");
+        assert_eq!(side, "m₁");
+        let raw = RawLadder::draw(&mut rng);
+        let f = sliding_ladder::ladder_fns!(planted_float::doubled_ladder);
+        let (scaled, side) = ladder_float_case(LadderSample::Kinematic, &f, &raw);
+        assert!(scaled > 1e6 * TOLERANCE_FACTOR, "{scaled}");
+        assert_eq!(side, "m");
+    }
+}
