@@ -116,3 +116,29 @@ fn float_cases_report_a_planted_wrong_side_past_the_threshold() {
         assert_eq!(side, "m");
     }
 }
+
+/// The exact-chain helpers the exact proptests read evaluate a check at the integers given:
+/// the planted 2m = m at m = 3 gives the chains (3, 3) and (6, 3); 2m₁ = m₁ with m₁ = 4 gives
+/// (4, 4) and (8, 4) (by hand; the other integers do not enter).
+#[test]
+fn exact_chain_helpers_evaluate_at_the_integers_given() {
+    use sliding_ladder::registry::sample::{LadderSample, ParticleSample, EXTRA, PER_PARTICLE};
+    use sliding_ladder::scalar::{Rational, Scalar};
+    let values = |chains: &[sliding_ladder::registry::Chain<Rational>]| -> Vec<Vec<Rational>> {
+        chains
+            .iter()
+            .map(|c| c.iter().map(|s| s.value.clone()).collect())
+            .collect()
+    };
+    let q = |n: i64| <Rational as Scalar>::int(n);
+    let f = sliding_ladder::ladder_fns!(planted_float::doubled_ladder);
+    let ladder = ladder_exact_chains(LadderSample::Kinematic, &f, [2, 3, 5, 7, 11, 13, 17]);
+    assert_eq!(values(&ladder), vec![vec![q(3), q(3)], vec![q(6), q(3)]]);
+    assert!(!exact_residual(&ladder).0);
+    let mut ints = vec![1; PER_PARTICLE + EXTRA];
+    ints[0] = 4;
+    let f = sliding_ladder::particle_fns!(planted_float::doubled_mass);
+    let particles = particle_exact_chains(ParticleSample::General, &f, 1, &ints);
+    assert_eq!(values(&particles), vec![vec![q(4), q(4)], vec![q(8), q(4)]]);
+    assert!(!exact_residual(&particles).0);
+}
