@@ -187,3 +187,15 @@ fn injections_drop_only_a_bare_factor_outside_any_index() {
         .count();
     assert_eq!(raised, 0);
 }
+
+/// Each sign of a display is flipped once, + to − and − to +: `a = b + c - d` has two sign
+/// typos, by hand `a = b - c - d` and `a = b + c + d`.
+#[test]
+fn injections_flip_every_plus_and_every_minus() {
+    let signs: Vec<String> = injections(5, "a = b + c - d")
+        .into_iter()
+        .filter(|i| i.typo == Typo::Sign)
+        .map(|i| i.latex.replace(' ', ""))
+        .collect();
+    assert_eq!(signs, ["a=b-c-d", "a=b+c+d"]);
+}

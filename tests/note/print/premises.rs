@@ -267,3 +267,15 @@ fn an_unlisted_bar_is_named_wherever_the_print_nests_it() {
         );
     }
 }
+
+/// A premise's condition is one statement `a = b` (or a longer chain): a single form states no
+/// condition, nor do two statements or an implication.
+#[test]
+fn condition_forms_takes_one_chain_of_two_forms_or_more() {
+    use sliding_ladder::registry::print_check::premises::condition_forms;
+    assert_eq!(condition_forms(r"\mathbf{x}_P = 0").map(|f| f.len()), Ok(2));
+    assert_eq!(condition_forms(r"a = b = 0").map(|f| f.len()), Ok(3));
+    assert!(condition_forms(r"\mathbf{x}_P").is_err());
+    assert!(condition_forms(r"a = b, \quad c = d").is_err());
+    assert!(condition_forms(r"a = b \Rightarrow c = d").is_err());
+}

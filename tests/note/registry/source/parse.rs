@@ -85,3 +85,18 @@ fn lines_line_of_counts_the_breaks_before_the_offset() {
         "the break at 1 ends line 1"
     );
 }
+
+/// A section states its kind once: a second `*Kind:*` line is an error at its own line (11,
+/// counted by hand), and the section is left out, whatever the two kinds are.
+#[test]
+fn parse_file_refuses_a_second_kind_line() {
+    let src = "# Sec. 9.1 — Test\n\n### (1) Twice\n\n$$\na = b\n$$\n\n*Kind:* kinematic\n\n*Kind:* general\n";
+    let parsed = parse_file("t.md", src);
+    let msgs: Vec<String> = parsed.errors.iter().map(ToString::to_string).collect();
+    assert_eq!(msgs.len(), 1, "{msgs:?}");
+    assert!(
+        msgs[0].starts_with("t.md:11:") && msgs[0].contains("a second *Kind:* line"),
+        "{msgs:?}"
+    );
+    assert!(parsed.sections.is_empty());
+}
