@@ -28,7 +28,7 @@ impl<S: Scalar> Reader<'_, S> {
 /// Build a particle system and reference point of the given sort from values in any scalar type
 /// (f64 and `Bound` from a [`RawParticles`](super::RawParticles), rationals and degrees from
 /// random integers). `values` holds `n·PER_PARTICLE + EXTRA` numbers, exactly: a caller whose
-/// layout differs from [`read`]'s (more values, as well as fewer) is a defect, not a sample.
+/// layout differs from `read`'s (more values, as well as fewer) is a defect, not a sample.
 pub fn particle_system<S: Scalar>(
     sort: ParticleSample,
     n: usize,
