@@ -14,6 +14,7 @@ mod premises;
 mod prove;
 mod quantity;
 mod render;
+mod shapes;
 mod symbols;
 mod unicode;
 mod units;
