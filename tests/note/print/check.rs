@@ -300,3 +300,23 @@ fn form_label_names_every_place_and_a_long_displays_last_form() {
         r.problems
     );
 }
+
+/// At the exact point every Rust printed or misprinted form must equal some form of the print.
+/// (49) printed with its misprint silently corrected: the Rust misprint side (wrong in value)
+/// now equals no printed form, and the report says so; as printed, every Rust form matches.
+#[test]
+fn check_print_reports_a_rust_form_that_equals_no_printed_form() {
+    let e = equation(49);
+    let ok = check_print(&e, e.latex(), &quick());
+    assert!(ok.matches_code && ok.code_mismatches.is_empty(), "{ok:?}");
+    let corrected = e.erratum.expect("(49) is an erratum").corrected;
+    let r = check_print(&e, corrected, &quick());
+    assert!(!r.matches_code, "{r:?}");
+    assert!(
+        r.code_mismatches
+            .iter()
+            .any(|m| m.starts_with("Rust form '") && m.ends_with("' equals no printed form")),
+        "{:?}",
+        r.code_mismatches
+    );
+}
