@@ -322,21 +322,12 @@ fn float_residual_scales_a_difference_and_makes_a_non_number_infinite() {
 #[test]
 fn run_check_of_the_floor_phase_counts_its_failures() {
     use sliding_ladder::registry::sample::LadderSample;
-    use sliding_ladder::registry::Check;
-    let cfg = Config {
-        float_cases: 3,
-        exact_points: 3,
-        seed: 6,
-    };
-    let r = run_check(
-        &Check {
-            name: "planted floor misprint",
-            eval: Eval::Floor(
-                LadderSample::Kinematic,
-                sliding_ladder::floor_fns!(floor_planted::off_by_one),
-            ),
-        },
-        &cfg,
+    let r = run_planted(
+        Eval::Floor(
+            LadderSample::Kinematic,
+            sliding_ladder::floor_fns!(floor_planted::off_by_one),
+        ),
+        3,
     );
     assert_eq!((r.float_failures, r.exact_failures), (3, 3), "{r:?}");
     assert!(!r.passed());
@@ -349,22 +340,29 @@ fn run_check_of_the_floor_phase_counts_its_failures() {
 fn run_check_takes_its_first_points_in_rationals_and_the_rest_modulo_p() {
     use sliding_ladder::registry::check::RATIONAL_POINTS;
     use sliding_ladder::registry::sample::LadderSample;
-    use sliding_ladder::registry::Check;
     assert_eq!(RATIONAL_POINTS, 1);
+    let r = run_planted(
+        Eval::Ladder(
+            LadderSample::Kinematic,
+            sliding_ladder::ladder_fns!(rate_powers::multiple_of_p),
+        ),
+        0,
+    );
+    assert_eq!((r.exact_points, r.exact_failures), (3, 1), "{r:?}");
+}
+
+/// A planted check run with `float_cases` float states and three exact points.
+fn run_planted(eval: Eval, float_cases: usize) -> sliding_ladder::registry::check::CheckReport {
     let cfg = Config {
-        float_cases: 0,
+        float_cases,
         exact_points: 3,
         seed: 6,
     };
-    let r = run_check(
-        &Check {
-            name: "planted multiple of p",
-            eval: Eval::Ladder(
-                LadderSample::Kinematic,
-                sliding_ladder::ladder_fns!(rate_powers::multiple_of_p),
-            ),
+    run_check(
+        &sliding_ladder::registry::Check {
+            name: "planted",
+            eval,
         },
         &cfg,
-    );
-    assert_eq!((r.exact_points, r.exact_failures), (3, 1), "{r:?}");
+    )
 }

@@ -287,36 +287,28 @@ fn general_systems_are_general() {
             }
         }
     }
-    type Of<T> = fn(&T) -> &Vec3<Rational>;
-    let quantities: [(&str, Of<sliding_ladder::system::Particle<Rational>>); 4] = [
-        ("x", |q| &q.x),
-        ("v", |q| &q.v),
-        ("a", |q| &q.a),
-        ("j", |q| &q.j),
-    ];
-    for (name, f) in quantities {
+    // x, v, a and j of each particle and of P, in that order.
+    let names = ["x", "v", "a", "j"];
+    for (q, name) in names.iter().enumerate() {
         for k in 0..3 {
-            let values = systems
+            let particles = systems
                 .iter()
-                .flat_map(|(s, _)| s.particles.iter().map(|q| comps(f(q))[k]))
+                .flat_map(|(s, _)| s.particles.iter())
+                .map(|p| comps([&p.x, &p.v, &p.a, &p.j][q])[k])
                 .collect();
-            assert!(both_signs(values), "{name}, component {k}: one sign only");
-        }
-    }
-    let points: [(&str, Of<sliding_ladder::system::Point<Rational>>); 4] = [
-        ("x_P", |p| &p.x),
-        ("v_P", |p| &p.v),
-        ("a_P", |p| &p.a),
-        ("j_P", |p| &p.j),
-    ];
-    for (name, f) in points {
-        for k in 0..3 {
-            let values: Vec<f64> = systems.iter().map(|(_, p)| comps(f(p))[k]).collect();
             assert!(
-                values.iter().all(|x| *x != 0.0),
-                "{name}, component {k}: 0 in a system"
+                both_signs(particles),
+                "{name}, component {k}: one sign only"
             );
-            assert!(both_signs(values), "{name}, component {k}: one sign only");
+            let point: Vec<f64> = systems
+                .iter()
+                .map(|(_, p)| comps([&p.x, &p.v, &p.a, &p.j][q])[k])
+                .collect();
+            assert!(
+                point.iter().all(|x| *x != 0.0),
+                "{name}_P, component {k}: 0 in a system"
+            );
+            assert!(both_signs(point), "{name}_P, component {k}: one sign only");
         }
     }
     assert!(systems[0].0.particles[0].x != systems[1].0.particles[0].x);

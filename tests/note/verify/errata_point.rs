@@ -49,8 +49,8 @@ fn squash(s: &str) -> String {
         .replace("\\\\", "")
 }
 
-/// printed − corrected of the misprinted slot, evaluated by the print evaluator at a ladder point.
-fn slot_difference(number: u32, l: Ladder<Rational>, s: State<Rational>) -> Rational {
+/// An erratum display and its misprinted slot: the printed form there and the corrected one.
+fn misprinted_slot(number: u32) -> (sliding_ladder::registry::Equation, String, String) {
     let e = equations()
         .into_iter()
         .find(|e| e.number == number)
@@ -60,6 +60,12 @@ fn slot_difference(number: u32, l: Ladder<Rational>, s: State<Rational>) -> Rati
     let k = (0..p.len())
         .find(|&k| squash(&p[k]) != squash(&c[k]))
         .unwrap();
+    (e, p[k].clone(), c[k].clone())
+}
+
+/// printed − corrected of the misprinted slot, evaluated by the print evaluator at a ladder point.
+fn slot_difference(number: u32, l: Ladder<Rational>, s: State<Rational>) -> Rational {
+    let (e, p, c) = misprinted_slot(number);
     let ctx = Ctx {
         model: Rc::new(Model::ladder(l, s)),
         section: e.section,
@@ -72,7 +78,7 @@ fn slot_difference(number: u32, l: Ladder<Rational>, s: State<Rational>) -> Rati
         Value::Scalar(x) => x,
         Value::Vector(v) => v.z,
     };
-    value(&p[k]) - value(&c[k])
+    value(&p) - value(&c)
 }
 
 fn ladder_point(r: &ErratumReport) -> (Ladder<Rational>, State<Rational>) {
@@ -296,15 +302,7 @@ fn the_particle_erratum_reproduces_its_residual_in_the_component_it_names() {
         a: v3("a_P"),
         j: Vec3::zero(),
     };
-    let e = equations()
-        .into_iter()
-        .find(|e| e.number == r.number)
-        .unwrap();
-    let err = e.erratum.unwrap();
-    let (printed, corrected) = (forms(err.printed), forms(err.corrected));
-    let k = (0..printed.len())
-        .find(|&k| squash(&printed[k]) != squash(&corrected[k]))
-        .unwrap();
+    let (e, printed, corrected) = misprinted_slot(r.number);
     let ctx = Ctx {
         model: Rc::new(Model::particles(sys, p)),
         section: e.section,
@@ -318,7 +316,7 @@ fn the_particle_erratum_reproduces_its_residual_in_the_component_it_names() {
         Value::Vector(v) => [v.x, v.y, v.z],
         Value::Scalar(_) => panic!("({}) is a vector display", e.number),
     };
-    let (a, b) = (value(&printed[k]), value(&corrected[k]));
+    let (a, b) = (value(&printed), value(&corrected));
     let diff: Vec<Rational> = (0..3).map(|i| a[i].clone() - b[i].clone()).collect();
     let first = diff
         .iter()
