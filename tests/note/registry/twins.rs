@@ -94,3 +94,39 @@ fn indistinguishable_lists_each_pair_once() {
         .iter()
         .any(|t| t.printed == "I_{C}" && t.other == "I_{A}"));
 }
+
+/// One quantity under two printed names is a twin pair: in A.1, where P is C, x_P is C's
+/// position under P's name, and a display printing x_C cannot tell it from x_P. Only the same
+/// quantity printed plain and bold is one notation, not a pair.
+#[test]
+fn indistinguishable_lists_one_quantity_under_two_names() {
+    let mut same_quantity = Vec::new();
+    for e in &sliding_ladder::registry::equations() {
+        for t in indistinguishable(e) {
+            if t.quantities.0 == t.quantities.1 {
+                assert_ne!(unbold(&t.printed), unbold(&t.other), "({}) {t:?}", e.number);
+                same_quantity.push((e.number, t.printed, t.other));
+            }
+        }
+    }
+    assert!(!same_quantity.is_empty());
+}
+/// Twins are an equivalence: (13) prints I_A = I_C = I_D = I_E, four moments of one value, so
+/// every one of the 4·3/2 = 6 pairs is listed, the later symbols' pairs too (a pair-once guard
+/// that dropped every pair of a symbol already listed as someone's twin left only I_A's three).
+#[test]
+fn indistinguishable_lists_every_pair_of_equal_printed_symbols() {
+    let moments = ["I_{A}", "I_{C}", "I_{D}", "I_{E}"];
+    let of_13 = indistinguishable(&equation(13));
+    for (i, a) in moments.iter().enumerate() {
+        for b in &moments[i + 1..] {
+            assert!(
+                of_13
+                    .iter()
+                    .any(|t| (t.printed == *a && t.other == *b)
+                        || (t.printed == *b && t.other == *a)),
+                "{a} and {b} not listed: {of_13:?}"
+            );
+        }
+    }
+}
