@@ -36,6 +36,8 @@ pub struct Fields {
     pub checks: Vec<CheckSpec>,
     pub law: Option<(LawSpec, usize)>,
     pub erratum: Option<ErratumSpec>,
+    /// The line of the erratum's first field.
+    pub erratum_line: usize,
     pub states: Option<(String, usize)>,
     pub premises: Vec<super::PremiseSpec>,
     pub errors: Vec<(usize, String)>,
@@ -112,12 +114,6 @@ pub fn read_paragraph(raw: &str, line: usize, f: &mut Fields, file: &mut FileDec
             }
             // Prose fields (`*Checked:*`, `*Figure:*`, ...) are for the reader.
             _ => {}
-        }
-    }
-    if let Some(e) = &f.erratum {
-        if e.corrected.is_empty() {
-            f.errors
-                .push((line, "a *Misprint:* needs its *Corrected:* form".into()));
         }
     }
     next
@@ -243,6 +239,9 @@ pub fn read_law(value: &str) -> Result<LawSpec, String> {
 }
 
 fn read_erratum(name: &str, value: &str, line: usize, f: &mut Fields) {
+    if f.erratum.is_none() {
+        f.erratum_line = line;
+    }
     let e = f.erratum.get_or_insert_with(|| ErratumSpec {
         printed: String::new(),
         corrected: String::new(),

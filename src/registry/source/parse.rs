@@ -197,9 +197,19 @@ fn close(o: Option<Open>, file: &str, parsed: &mut ParsedFile) {
     };
     let label = crate::registry::label_of(number);
     let before = errors.len();
+    let mut field_errors = o.fields.errors.clone();
+    // Checked once the section is read: its *Corrected:* may come in a later paragraph.
+    if o.fields
+        .erratum
+        .as_ref()
+        .is_some_and(|e| e.corrected.is_empty())
+    {
+        let reason = "a *Misprint:* needs its *Corrected:* form".to_string();
+        field_errors.push((o.fields.erratum_line, reason));
+    }
+    field_errors.sort_by_key(|(l, _)| *l);
     errors.extend(
-        o.fields
-            .errors
+        field_errors
             .iter()
             .map(|(l, r)| err(*l, format!("{label}: {r}"))),
     );

@@ -3,6 +3,7 @@
 //! read here with a plain line scan, independently of the crate's parser.
 
 mod fields;
+mod generated;
 mod note;
 mod parse;
 mod premises;
