@@ -169,6 +169,13 @@ mod rate_powers {
             reference("0", S::int(0)),
         ]]
     }
+    /// 0 with a misprint p (p = 2⁶¹ − 1): the misprint is wrong in rationals and agrees modulo p.
+    pub fn misprint_multiple_of_p<S: Scalar>(_: &Ladder<S>, _: &State<S>) -> Vec<Chain<S>> {
+        vec![vec![
+            reference("0", S::int(0)),
+            sliding_ladder::registry::misprint("p", S::int((1 << 61) - 1)),
+        ]]
+    }
     /// θ̇ + (θ̇⁴ − θ̇⁴) = θ̇ = θ̇: the first side carries it, 4.
     pub fn first_side<S: Scalar>(_: &Ladder<S>, s: &State<S>) -> Vec<Chain<S>> {
         vec![vec![
@@ -349,6 +356,24 @@ fn run_check_takes_its_first_points_in_rationals_and_the_rest_modulo_p() {
         0,
     );
     assert_eq!((r.exact_points, r.exact_failures), (3, 1), "{r:?}");
+}
+
+/// A misprint is shown wrong only if it differs from the true side at every exact point: the
+/// planted misprint p of 0 differs at the rational point and agrees at the two modulo p, so it is
+/// not shown wrong and the check fails.
+#[test]
+fn run_check_shows_a_misprint_wrong_only_where_it_differs_at_every_exact_point() {
+    use sliding_ladder::registry::sample::LadderSample;
+    let r = run_planted(
+        Eval::Ladder(
+            LadderSample::Kinematic,
+            sliding_ladder::ladder_fns!(rate_powers::misprint_multiple_of_p),
+        ),
+        0,
+    );
+    assert_eq!((r.exact_points, r.exact_failures), (3, 0), "{r:?}");
+    assert_eq!(r.misprints, vec![("p", false)], "{r:?}");
+    assert!(!r.passed());
 }
 
 /// A planted check run with `float_cases` float states and three exact points.

@@ -86,6 +86,9 @@ struct Plan {
     order: u64,
     /// Prose paragraphs between fields.
     prose: usize,
+    /// An empty `*Rust:*` then a code block, then a list in the shape of checks that no field
+    /// announces (the code block ends what `*Rust:*` announced).
+    aside: bool,
 }
 
 fn number() -> impl Strategy<Value = Number> {
@@ -137,9 +140,10 @@ prop_compose! {
         joined in any::<bool>(),
         order in any::<u64>(),
         prose in 0usize..3,
+        aside in prop::bool::weighted(0.2),
     ) -> Plan {
         Plan { chapter, number, titled, forms, kinds, code, checks, laws, erratum, premises,
-               states, joined, order, prose }
+               states, joined, order, prose, aside }
     }
 }
 
@@ -233,6 +237,8 @@ enum Para {
     /// Misprint alone.
     Misprint,
     Premises,
+    /// `*Rust:*`, a code block, then a list no field announces.
+    Aside,
 }
 
 const SOURCES: [&str; 5] = ["bar", "implies", "stated", "prose", "assumed"];
@@ -410,6 +416,9 @@ fn paragraphs(plan: &Plan) -> Vec<Para> {
     if !plan.premises.is_empty() {
         paras.push(Para::Premises);
     }
+    if plan.aside {
+        paras.push(Para::Aside);
+    }
     let first = match plan.erratum {
         Erratum::None => None,
         Erratum::Whole | Erratum::SecondMisprint => Some(Para::Erratum),
@@ -513,6 +522,11 @@ fn write_para(plan: &Plan, para: &Para, e: &mut Expected, g: &mut Gathered) {
             e.paragraph(&[parts.join(" · ")]);
         }
         Para::Checks => write_checks(plan, e, g),
+        Para::Aside => {
+            e.paragraph(&["*Rust:*".into()]);
+            e.paragraph(&["```text".into(), "an example".into(), "```".into()]);
+            e.paragraph(&["- `gen_9` (general): a remark in the shape of a check".into()]);
+        }
         Para::Premises => write_premises(plan, e, g),
         Para::Law(step, k) => write_law(*step, *k, e, g),
         Para::Erratum | Para::Corrected | Para::Misprint => write_erratum(para, e, g),
@@ -630,9 +644,11 @@ fn generated_plans_reach_every_shape() {
     let strategy = prop::collection::vec(plan(), 1..5);
     let mut reasons: Vec<String> = Vec::new();
     let mut clean = Vec::new();
+    let mut plans_with_aside = 0;
     for _ in 0..400 {
         let plans = strategy.new_tree(&mut runner).expect("a plan").current();
         let e = expected(&plans);
+        plans_with_aside += plans.iter().filter(|p| p.aside).count();
         reasons.extend(e.errors.into_iter().map(|x| x.1));
         clean.extend(e.sections);
     }
@@ -666,4 +682,5 @@ fn generated_plans_reach_every_shape() {
         && !s.checks.is_empty()));
     assert!(has(&|s| s.premises.len() > 1 && s.states.is_some()));
     assert!(has(&|s| s.premises.iter().any(|p| p.latex.is_none())));
+    assert!(plans_with_aside > 0);
 }
