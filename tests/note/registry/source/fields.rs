@@ -77,7 +77,18 @@ fn an_erratum_needs_math_and_its_correction() {
         f.erratum.as_ref().map(|e| e.printed.as_str()),
         Some("a = b")
     );
-    assert!(f.errors.iter().any(|e| e.1.contains("*Corrected:*")));
+    // A missing *Corrected:* is known only when the section closes (it may come a paragraph
+    // later): the paragraph records where the erratum began, parse_file reports it there.
+    assert!(f.errors.is_empty(), "{:?}", f.errors);
+    assert_eq!(f.erratum_line, 3);
+    let section =
+        "### (4) T\n\n$$\na = b\n$$\n\n*Kind:* kinematic\n\n*Misprint:* $a = b$ · *Why:* because\n";
+    let errors = sliding_ladder::registry::source::parse_file("t.md", section).errors;
+    let shown: Vec<String> = errors.iter().map(ToString::to_string).collect();
+    assert_eq!(
+        shown,
+        ["t.md:9: (4): a *Misprint:* needs its *Corrected:* form"]
+    );
     let mut g = Fields::default();
     read_paragraph(
         "*Misprint:* a = b · *Corrected:* $c$",
