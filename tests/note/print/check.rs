@@ -215,6 +215,40 @@ fn check_print_fails_an_edited_print_on_its_float_states_alone() {
     );
 }
 
+/// The exact points count their failures: (25) with a coefficient edited fails at every one
+/// of three (an edit of a polynomial identity cannot vanish at a random exact point), the print
+/// as printed at none.
+#[test]
+fn check_print_counts_the_exact_points_an_edited_print_fails_at() {
+    let exact_only = Config {
+        float_cases: 0,
+        exact_points: 3,
+        seed: 9,
+    };
+    let mut e = equation(25);
+    e.checks.clear();
+    let printed = printed_latex(25);
+    let ok = check_print(&e, printed, &exact_only);
+    assert_eq!(
+        (ok.exact_points, ok.exact_failures),
+        (3, 0),
+        "{:?}",
+        ok.problems
+    );
+    let edited = printed.replace(
+        r"+ 2ml^2\cos^2\theta\ddot{\theta}",
+        r"+ 3ml^2\cos^2\theta\ddot{\theta}",
+    );
+    assert_ne!(edited, printed, "the edit must apply");
+    let r = check_print(&e, &edited, &exact_only);
+    assert_eq!(
+        (r.exact_points, r.exact_failures),
+        (3, 3),
+        "{:?}",
+        r.problems
+    );
+}
+
 /// The degree the print reports (the Schwartz-Zippel bound of a display checked by its print
 /// rests on it) is the largest degree of any form's difference from its chain's first form, in
 /// the random coordinates of the states. On the kinematic ladder θ̇ is one of them (degree one),

@@ -132,6 +132,24 @@ fn run_injection_calls_an_edit_that_changes_no_value_neutral() {
     ));
 }
 
+/// An edit the check cannot see is missed, not neutral: (P9), F_w = (3mg/4) sin θ (3 cos θ − 2),
+/// has no Rust form to disagree with, so both sides doubled still hold (and still break off the
+/// motion) while every value changed.
+#[test]
+fn run_injection_calls_an_edit_that_changes_values_unseen_missed() {
+    let e = sliding_ladder::registry::extensions()
+        .into_iter()
+        .find(|e| e.number == 1009)
+        .unwrap();
+    assert!(e.checks.is_empty(), "the case this test is about");
+    let doubled = Injection {
+        number: 1009,
+        typo: Typo::Coefficient,
+        latex: r"2 F_w = \frac{3mg}{2}\sin\theta(3\cos\theta - 2)".into(),
+    };
+    assert_eq!(run_injection(&e, &doubled, &quick()), Detection::Missed);
+}
+
 /// The typos of (5), θ̈ = (3g/4l) sin θ, counted by hand: the coefficients 3 and 4 each raised
 /// by one, sin made cos, g and l each dropped from their product; no sign to flip. A display
 /// with cos gets the other direction: (10)'s cos θ made sin θ.

@@ -12,6 +12,8 @@ fn unbold_reads_every_bold_symbol_as_its_argument() {
     assert_eq!(unbold(r"\dot{\mathbf{x}}_P"), r"\dot{x}_P");
     assert_eq!(unbold(r"\mathbf{\tau}_{\mathbf{x}}"), r"\tau_{x}");
     assert_eq!(unbold(r"I_{\text{cm}}"), r"I_{\text{cm}}");
+    // A brace group inside the bold closes where it is written, not as the bold's end.
+    assert_eq!(unbold(r"\mathbf{\dot{x}_P}"), r"\dot{x}_P");
     // Unbalanced braces are read to the end, not a panic.
     assert_eq!(unbold(r"\mathbf{v"), "v");
     assert_eq!(unbold("}}"), "}}");
