@@ -176,6 +176,16 @@ mod rate_powers {
             sliding_ladder::registry::misprint("p", S::int((1 << 61) - 1)),
         ]]
     }
+    /// θ̇ + (θ̇³ − θ̇³) = θ̇ + (1/θ̇ − 1/θ̇): the second side's denominator θ̇² multiplies the
+    /// first's numerator in the difference, degree 3 + 2 = 5 (and θ̇² · θ̇ over θ̇², 3, the
+    /// other way).
+    pub fn side_with_denominator<S: Scalar>(_: &Ladder<S>, s: &State<S>) -> Vec<Chain<S>> {
+        let over = S::int(1) / pow(s, 1);
+        vec![vec![
+            padded(s, 3),
+            reference("θ̇ + (1/θ̇ − 1/θ̇)", pow(s, 1) + (over.clone() - over)),
+        ]]
+    }
     /// θ̇ + (θ̇⁴ − θ̇⁴) = θ̇ = θ̇: the first side carries it, 4.
     pub fn first_side<S: Scalar>(_: &Ladder<S>, s: &State<S>) -> Vec<Chain<S>> {
         vec![vec![
@@ -188,7 +198,7 @@ mod rate_powers {
 
 /// The degree a check reports, which its Schwartz-Zippel bound rests on, is the largest degree
 /// of any side's difference from its chain's first side, over every chain: planted chains of
-/// powers of θ̇ (degree one in the exact draws) give 5, 3 and 4, worked out by hand from the
+/// powers of θ̇ (degree one in the exact draws) give 5, 3, 4 and 5, worked out by hand from the
 /// exponents and the rules of `Degree`. A degree that took the smallest chain, or only the first sides, would understate
 /// the chance that a false identity passes.
 #[test]
@@ -215,6 +225,11 @@ fn run_check_degree_is_the_largest_of_any_sides_difference() {
             "first side",
             sliding_ladder::ladder_fns!(rate_powers::first_side),
             4,
+        ),
+        (
+            "side with a denominator",
+            sliding_ladder::ladder_fns!(rate_powers::side_with_denominator),
+            5,
         ),
     ];
     for (name, f, degree) in cases {
