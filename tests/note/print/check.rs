@@ -87,6 +87,24 @@ fn misprints_are_sides_of_recorded_errata_and_must_fail() {
     }
 }
 
+/// A form listed as a misprint must fail: (5)'s right side, which is right, listed as a misprint
+/// holds at the exact point and is reported as a misprint that did not fail, by its label.
+#[test]
+fn check_print_reports_a_misprint_that_holds() {
+    let e = equation(5);
+    let listed = [(5, r"\frac{3g}{4l}\sin\theta")];
+    let r = check_print_with(&e, e.latex(), &quick(), &listed);
+    assert!(
+        r.problems
+            .iter()
+            .any(|p| p.starts_with("print: the misprint form 2") && p.ends_with("did not fail")),
+        "{:?}",
+        r.problems
+    );
+    let as_printed = check_print_with(&e, e.latex(), &quick(), &[]);
+    assert!(as_printed.problems.is_empty(), "{:?}", as_printed.problems);
+}
+
 #[test]
 fn an_unknown_symbol_or_garbled_latex_is_reported_not_skipped() {
     let e = equation(14);

@@ -206,6 +206,19 @@ fn injections_drop_only_a_bare_factor_outside_any_index() {
     assert_eq!(raised, 0);
 }
 
+/// Letters inside `\text{…}` are a word, not factors: in `a = m l v_{\text{cm}}` only the m and
+/// the l of the product are dropped (two typos, by hand), never the m of "cm".
+#[test]
+fn injections_drop_no_letter_of_a_word_in_text() {
+    let drops: Vec<String> = injections(5, r"a = m l v_{\text{cm}}")
+        .into_iter()
+        .filter(|i| i.typo == Typo::DropFactor)
+        .map(|i| i.latex)
+        .collect();
+    assert_eq!(drops.len(), 2, "{drops:?}");
+    assert!(drops.iter().all(|d| d.contains("cm")), "{drops:?}");
+}
+
 /// Each sign of a display is flipped once, + to − and − to +: `a = b + c - d` has two sign
 /// typos, by hand `a = b - c - d` and `a = b + c + d`.
 #[test]

@@ -103,7 +103,7 @@ fn an_erratum_needs_math_and_its_correction() {
 fn points_and_symbols_are_read_with_their_errors() {
     let mut d = FileDecls::default();
     read_points(
-        "Q = ladder:1/4; R = lab:1/2,3/2; S = ladder:5/4; T = moon",
+        "Q = ladder:1/4; R = lab:1/2,3/2; S = ladder:5/4; T = moon; Q' = ladder:1/2; = ladder:1/3",
         4,
         &mut d,
     );
@@ -113,7 +113,13 @@ fn points_and_symbols_are_read_with_their_errors() {
         .map(|p| (p.name.as_str(), p.point.as_str()))
         .collect();
     assert_eq!(got, vec![("Q", "ladder:1/4"), ("R", "lab:1/2,3/2")]);
-    assert_eq!(d.errors.len(), 2, "{:?}", d.errors);
+    // S and T name no point; Q' and the empty name are not names (letters and digits only).
+    assert_eq!(d.errors.len(), 4, "{:?}", d.errors);
+    assert!(
+        d.errors[2..].iter().all(|e| e.1.contains("is not NAME = ")),
+        "{:?}",
+        d.errors
+    );
     read_symbol(
         "- $L_Q$ = `relative_angular_momentum:Q.z` [M L^2 T^-1]: about Q",
         9,
