@@ -279,3 +279,16 @@ fn condition_forms_takes_one_chain_of_two_forms_or_more() {
     assert!(condition_forms(r"a = b, \quad c = d").is_err());
     assert!(condition_forms(r"a = b \Rightarrow c = d").is_err());
 }
+
+/// A display of one implication with one `implies` premise is consistent: (70) cut to its own
+/// statement, F = 0 ⇒ P = const, with the premise F = 0 alone. (Every display of the note
+/// prints two implications, ours and Milne's; an extender may print one.)
+#[test]
+fn a_single_implication_matches_its_single_premise() {
+    let mut e = display(70);
+    let premises = e.premises;
+    e.premises = &premises[..1];
+    assert_eq!(e.premises[0].source, PremiseSource::Implies);
+    let r = check(&e, r"\mathbf{F} = 0 \Rightarrow \mathbf{P} = \text{const}");
+    assert!(r.problems.is_empty(), "{:?}", r.problems);
+}

@@ -101,3 +101,24 @@ fn every_name_is_unique_and_every_function_is_named_by_the_note() {
     let unnamed: Vec<&&str> = all.iter().filter(|n| !named.contains(n)).collect();
     assert!(unnamed.is_empty(), "named by no section: {unnamed:?}");
 }
+
+/// A note display's print must read as LaTeX even beside Rust checks: (5) with a fraction missing its denominator
+/// is refused at its `$$` line. An extension's print beside Rust checks is checked by those
+/// checks alone (the floor phase's prints), so the same LaTeX as (P1) is not refused here.
+#[test]
+fn an_unreadable_print_of_the_note_is_refused_beside_its_checks() {
+    let section = |label: &str| {
+        "### LABEL Falls\n\n$$\n\\ddot{\\theta} = \\frac{3g}\n$$\n\n*Kind:* on-shell\n\n*Rust:*\n- `eq5_on_shell` (on-shell): w\n"
+            .replace("LABEL", label)
+    };
+    let (note_display, extension) = (section("(5)"), section("(P1)"));
+    let note = Note::parse([("a.md", note_display.as_str())]);
+    let msgs: Vec<String> = note.errors.iter().map(ToString::to_string).collect();
+    assert_eq!(msgs.len(), 1, "{msgs:?}");
+    assert!(
+        msgs[0].starts_with("a.md:3: (5): the display cannot be read as LaTeX of the note"),
+        "{msgs:?}"
+    );
+    let ext = Note::parse([("b.md", extension.as_str())]);
+    assert!(ext.errors.is_empty(), "{:?}", ext.errors);
+}

@@ -100,3 +100,14 @@ fn parse_file_refuses_a_second_kind_line() {
     );
     assert!(parsed.sections.is_empty());
 }
+
+/// Only the items of the list right after `*Rust:*` are checks, not the items of a list nested in
+/// one: a remark under a check is no second check (and no malformed one).
+#[test]
+fn parse_file_reads_no_nested_item_as_a_check() {
+    let src = "### (4) T\n\n$$\na = b\n$$\n\n*Kind:* kinematic\n\n*Rust:*\n- `eq4` (kinematic): w\n  - a remark under the check\n";
+    let parsed = parse_file("t.md", src);
+    assert!(parsed.errors.is_empty(), "{:?}", parsed.errors);
+    assert_eq!(parsed.sections.len(), 1);
+    assert_eq!(parsed.sections[0].checks.len(), 1);
+}
