@@ -182,6 +182,22 @@ pub fn parse_file(file: &str, src: &str) -> ParsedFile {
     out
 }
 
+/// The problems of a section's fields, in line order, with the one known only once the whole
+/// section is read: a *Misprint:* with no *Corrected:* (which may come a paragraph later).
+fn field_errors(fields: &Fields) -> Vec<(usize, String)> {
+    let mut out = fields.errors.clone();
+    if fields
+        .erratum
+        .as_ref()
+        .is_some_and(|e| e.corrected.is_empty())
+    {
+        let reason = "a *Misprint:* needs its *Corrected:* form".to_string();
+        out.push((fields.erratum_line, reason));
+    }
+    out.sort_by_key(|(l, _)| *l);
+    out
+}
+
 /// Finish a section: check that it has what a display needs.
 fn close(o: Option<Open>, file: &str, parsed: &mut ParsedFile) {
     let Some(o) = o else { return };
@@ -197,19 +213,8 @@ fn close(o: Option<Open>, file: &str, parsed: &mut ParsedFile) {
     };
     let label = crate::registry::label_of(number);
     let before = errors.len();
-    let mut field_errors = o.fields.errors.clone();
-    // Checked once the section is read: its *Corrected:* may come in a later paragraph.
-    if o.fields
-        .erratum
-        .as_ref()
-        .is_some_and(|e| e.corrected.is_empty())
-    {
-        let reason = "a *Misprint:* needs its *Corrected:* form".to_string();
-        field_errors.push((o.fields.erratum_line, reason));
-    }
-    field_errors.sort_by_key(|(l, _)| *l);
     errors.extend(
-        field_errors
+        field_errors(&o.fields)
             .iter()
             .map(|(l, r)| err(*l, format!("{label}: {r}"))),
     );
