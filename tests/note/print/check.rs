@@ -49,15 +49,22 @@ fn every_display_parses_evaluates_and_holds_as_printed() {
     assert!(forms > 300, "{forms} forms");
 }
 
-#[test]
-fn an_edited_coefficient_fails_the_display_naming_the_form() {
-    let e = equation(25);
+/// (25) as printed with one coefficient changed: the 2 of 2ml² cos²θ θ̈ in form 5 made 3.
+fn coefficient_edit_of_25() -> String {
     let printed = printed_latex(25);
     let edited = printed.replace(
         r"+ 2ml^2\cos^2\theta\ddot{\theta}",
         r"+ 3ml^2\cos^2\theta\ddot{\theta}",
     );
     assert_ne!(edited, printed, "the edit must apply");
+    edited
+}
+
+#[test]
+fn an_edited_coefficient_fails_the_display_naming_the_form() {
+    let e = equation(25);
+    let printed = printed_latex(25);
+    let edited = coefficient_edit_of_25();
     // Judge on the display's own checks: (25) marks its law step, which needs the off-motion run.
     let reports: Vec<_> = e.checks.iter().map(|c| run_check(c, &quick())).collect();
     let ok = judge_print(judge(&e, &reports), &e, printed, &quick());
@@ -217,11 +224,7 @@ fn check_print_fails_an_edited_print_on_its_float_states_alone() {
     let ok = check_print(&e, printed, &floats_only);
     assert_eq!((ok.float_cases, ok.exact_points), (5, 0));
     assert!(ok.problems.is_empty(), "{:?}", ok.problems);
-    let edited = printed.replace(
-        r"+ 2ml^2\cos^2\theta\ddot{\theta}",
-        r"+ 3ml^2\cos^2\theta\ddot{\theta}",
-    );
-    assert_ne!(edited, printed, "the edit must apply");
+    let edited = coefficient_edit_of_25();
     let r = check_print(&e, &edited, &floats_only);
     assert_eq!(r.exact_points, 0);
     assert!(
@@ -233,9 +236,9 @@ fn check_print_fails_an_edited_print_on_its_float_states_alone() {
     );
 }
 
-/// The exact points count their failures: (25) with a coefficient edited fails at every one
-/// of three (an edit of a polynomial identity cannot vanish at a random exact point), the print
-/// as printed at none.
+/// The exact points count their failures: (25) with a coefficient edited fails at each of three
+/// (its residual, a nonzero polynomial in the draws, vanishes at a random point with probability
+/// at most its degree over the set size), the print as printed at none.
 #[test]
 fn check_print_counts_the_exact_points_an_edited_print_fails_at() {
     let exact_only = Config {
@@ -253,11 +256,7 @@ fn check_print_counts_the_exact_points_an_edited_print_fails_at() {
         "{:?}",
         ok.problems
     );
-    let edited = printed.replace(
-        r"+ 2ml^2\cos^2\theta\ddot{\theta}",
-        r"+ 3ml^2\cos^2\theta\ddot{\theta}",
-    );
-    assert_ne!(edited, printed, "the edit must apply");
+    let edited = coefficient_edit_of_25();
     let r = check_print(&e, &edited, &exact_only);
     assert_eq!(
         (r.exact_points, r.exact_failures),

@@ -165,7 +165,7 @@ mod rate_powers {
     /// p = 0 with p = 2⁶¹ − 1: false in rationals, true modulo p.
     pub fn multiple_of_p<S: Scalar>(_: &Ladder<S>, _: &State<S>) -> Vec<Chain<S>> {
         vec![vec![
-            printed("p", S::int((1 << 61) - 1)),
+            printed("p", S::int(p_as_int())),
             reference("0", S::int(0)),
         ]]
     }
@@ -173,7 +173,7 @@ mod rate_powers {
     pub fn misprint_multiple_of_p<S: Scalar>(_: &Ladder<S>, _: &State<S>) -> Vec<Chain<S>> {
         vec![vec![
             reference("0", S::int(0)),
-            sliding_ladder::registry::misprint("p", S::int((1 << 61) - 1)),
+            sliding_ladder::registry::misprint("p", S::int(p_as_int())),
         ]]
     }
     /// θ̇ + (θ̇³ − θ̇³) = θ̇ + (1/θ̇ − 1/θ̇): the second side's denominator θ̇² multiplies the
@@ -185,6 +185,10 @@ mod rate_powers {
             padded(s, 3),
             reference("θ̇ + (1/θ̇ − 1/θ̇)", pow(s, 1) + (over.clone() - over)),
         ]]
+    }
+    /// The prime of the modular points, p = 2⁶¹ − 1, as an integer of the scalars.
+    fn p_as_int() -> i64 {
+        i64::try_from(sliding_ladder::scalar::MODULUS).expect("p < 2⁶³")
     }
     /// θ̇ + (θ̇⁴ − θ̇⁴) = θ̇ = θ̇: the first side carries it, 4.
     pub fn first_side<S: Scalar>(_: &Ladder<S>, s: &State<S>) -> Vec<Chain<S>> {
